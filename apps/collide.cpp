@@ -1,0 +1,24 @@
+// collide: the command-line program. Each subcommand lives in apps/commands/.
+#include <iostream>
+#include <stdexcept>
+
+#include "commands/commands.h"
+#include "core/provenance.h"
+
+int main(int argc, char** argv) {
+    collide::set_command_line(argc, argv);
+    CLI::App app{"collide: cross-validated 2D hard-disk collision solvers"};
+    app.require_subcommand(1);
+    collide::cli::add_run_command(app);
+    collide::cli::add_backends_command(app);
+    collide::cli::add_scenes_command(app);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    } catch (const std::exception& e) {
+        std::cerr << "collide: error: " << e.what() << "\n";
+        return 1;
+    }
+    return 0;
+}

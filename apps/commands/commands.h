@@ -1,0 +1,12 @@
+// The subcommands of the `collide` program, one file each.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace collide::cli {
+
+void add_run_command(CLI::App& app);       // run one scene on one backend -> HDF5
+void add_backends_command(CLI::App& app);  // list the backends
+void add_scenes_command(CLI::App& app);    // list the scene library
+
+}  // namespace collide::cli

@@ -1,0 +1,31 @@
+// The registry of backends: how the command line, the validation runner, the benchmark and
+// the conformance tests find every backend by name without knowing it in advance.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "solver.h"
+
+namespace collide {
+
+struct BackendInfo {
+    std::string name;         // "event", "step", ...
+    std::string precision;    // "double", "float", "float|double"
+    std::string description;  // one line
+    // Empty if the backend can run the scene, otherwise the reason it cannot
+    // (e.g. box2d has no periodic boundaries). The scene is then left out, not faked.
+    std::function<std::optional<std::string>(const Scene&)> supports;
+    std::function<std::unique_ptr<Solver>(const BackendOptions&)> create;
+};
+
+// Every backend compiled into this build, in a fixed order (event first: the reference).
+const std::vector<BackendInfo>& all_backends();
+
+// The backend called `name`; throws std::invalid_argument listing the valid names.
+const BackendInfo& find_backend(const std::string& name);
+
+}  // namespace collide

@@ -1,0 +1,32 @@
+// Metrics: the physical invariants and error indicators computed from any backend's state,
+// always in double with compensated sums (docs/validation.md defines each one).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "particle_state.h"
+#include "scene.h"
+
+namespace collide {
+
+struct Metrics {
+    double time = 0;
+    double momentum_x = 0, momentum_y = 0;  // sum m v over non-stone disks
+    double kinetic_energy = 0;              // sum m |v|^2 / 2
+    double potential_energy = 0;            // gravitational, - sum m g.x (0 without gravity)
+    std::int64_t overlapping_pairs = 0;     // pairs with |x_i - x_j| < r_i + r_j
+    double max_overlap = 0;                 // max over pairs of (r_i + r_j - d) / (r_i + r_j)
+    double mean_overlap = 0;                // mean of the same over overlapping pairs
+    double max_wall_penetration = 0;        // max over disks of depth beyond a wall / radius
+    std::int64_t nonfinite = 0;             // disks with a NaN or Inf coordinate or velocity
+
+    double total_energy() const { return kinetic_energy + potential_energy; }
+};
+
+Metrics compute_metrics(const Scene& scene, const ParticleState<double>& state, double time);
+
+// Relative overlap depth (r_i + r_j - d)/(r_i + r_j) of every overlapping pair, for histograms.
+std::vector<double> overlap_depths(const Scene& scene, const ParticleState<double>& state);
+
+}  // namespace collide

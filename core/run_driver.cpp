@@ -1,0 +1,54 @@
+#include "run_driver.h"
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace collide {
+
+std::vector<double> output_times(const Scene& scene) {
+    const double interval = scene.run.output_interval, duration = scene.run.duration;
+    const auto count = std::int64_t(std::llround(duration / interval));
+    std::vector<double> times;
+    for (std::int64_t k = 0; k <= count; ++k) times.push_back(std::min(duration, double(k) * interval));
+    if (times.back() < duration) times.push_back(duration);
+    return times;
+}
+
+RunResult run_scene(const Scene& scene, Solver& solver, const ParticleState<double>& initial,
+                    const RunOptions& options) {
+    RunResult result;
+    solver.load(scene, initial);
+    if (options.writer) options.writer->write_particles(initial);
+    ParticleState<double> state;
+    for (double t : output_times(scene)) {
+        const auto start = std::chrono::steady_clock::now();
+        solver.advance_to(t);
+        result.wall_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        solver.read_state(state);
+        const Metrics m = compute_metrics(scene, state, t);
+        result.series.push_back(m);
+        if (options.writer) options.writer->append(m, state);
+        if (options.on_output) options.on_output(t, scene.run.duration);
+        if (options.stop_on_nonfinite && m.nonfinite > 0) {
+            std::ostringstream msg;
+            msg << solver.name() << ": " << m.nonfinite << " disk(s) with NaN/Inf state at t = " << t;
+            for (std::size_t i = 0; i < state.size(); ++i)
+                if (!std::isfinite(state.x[i] + state.y[i] + state.vx[i] + state.vy[i])) {
+                    msg << " (first: disk " << i << ", x = (" << state.x[i] << ", " << state.y[i]
+                        << "), v = (" << state.vx[i] << ", " << state.vy[i] << "))";
+                    break;
+                }
+            result.stats = solver.stats();
+            result.final_state = state;
+            throw std::runtime_error(msg.str());
+        }
+    }
+    result.final_state = std::move(state);
+    result.stats = solver.stats();
+    if (options.writer) options.writer->write_stats(result.stats);
+    return result;
+}
+
+}  // namespace collide

@@ -1,0 +1,158 @@
+#include "step_solver.h"
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+
+#include "core/stepping_laws.hpp"
+
+namespace collide {
+namespace {
+
+// Adds the wall time of one phase to the solver's statistics when it goes out of scope.
+class PhaseTimer {
+public:
+    PhaseTimer(SolverStats& stats, const char* phase)
+        : stats_(stats), phase_(phase), start_(std::chrono::steady_clock::now()) {}
+    ~PhaseTimer() {
+        const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start_;
+        stats_.phase_seconds[phase_] += elapsed.count();
+    }
+
+private:
+    SolverStats& stats_;
+    const char* phase_;
+    std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace
+
+void StepSolver::load(const Scene& scene, const ParticleState<double>& initial) {
+    scene_ = scene;
+    state_ = initial;
+    step_count_ = 0;
+    stats_ = SolverStats{};
+    const double r_max = *std::max_element(state_.radius.begin(), state_.radius.end());
+    grid_.configure(scene_.world, 2 * r_max);
+    for (auto* a : {&dx_, &dy_, &dvx_, &dvy_}) a->assign(state_.size(), 0.0);
+}
+
+void StepSolver::advance_to(double t) {
+    const std::int64_t target = scene_.steps_for(t);
+    if (target < step_count_)
+        throw std::invalid_argument("step: advance_to(" + std::to_string(t) + ") is in the past");
+    while (step_count_ < target) step();
+}
+
+void StepSolver::step() {
+    const double dt = scene_.run.dt;
+    if (scene_.run.order == StepOrder::collide_first) {
+        step_collide_first(dt);
+    } else {
+        const double h = dt / scene_.run.substeps;
+        for (int k = 0; k < scene_.run.substeps; ++k) substep_integrate_first(h);
+    }
+    ++step_count_;
+    ++stats_.steps;
+}
+
+void StepSolver::step_collide_first(double dt) {
+    build_grid();
+    compute_contact_deltas();
+    apply_contact_deltas();
+    // Explicit Euler: x_{n+1} = x_n + v_n dt uses the velocity after the contacts but before
+    // the forces of this step, which are applied after.
+    integrate_positions(dt);
+    integrate_velocities(dt);
+    apply_walls();
+}
+
+void StepSolver::substep_integrate_first(double h) {
+    // Semi-implicit (symplectic) Euler: velocity first, then position with the new velocity.
+    integrate_velocities(h);
+    integrate_positions(h);
+    build_grid();
+    compute_contact_deltas();
+    apply_contact_deltas();
+    apply_walls();
+}
+
+void StepSolver::build_grid() {
+    PhaseTimer timer(stats_, "grid");
+    grid_.build(state_.x.data(), state_.y.data(), state_.size());
+}
+
+void StepSolver::compute_contact_deltas() {
+    PhaseTimer timer(stats_, "collide");
+    const auto& s = state_;
+    const bool periodic = scene_.periodic();
+    const double lx = scene_.world.width(), ly = scene_.world.height();
+    const double e = scene_.physics.restitution, mu = scene_.physics.friction;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        dx_[i] = dy_[i] = dvx_[i] = dvy_[i] = 0;
+        if (s.is_stone(i)) continue;  // a stone's share is always zero
+        grid_.for_each_candidate(s.x[i], s.y[i], [&](std::uint32_t j) {
+            if (j == i) return;
+            double sep_x = s.x[i] - s.x[j], sep_y = s.y[i] - s.y[j];
+            if (periodic) {
+                sep_x = WallLaw<double>::minimum_image(sep_x, lx);
+                sep_y = WallLaw<double>::minimum_image(sep_y, ly);
+            }
+            const double contact = s.radius[i] + s.radius[j];
+            if (sep_x * sep_x + sep_y * sep_y >= contact * contact) return;
+            const auto d = ContactLaw<double>::delta(sep_x, sep_y, s.vx[i] - s.vx[j], s.vy[i] - s.vy[j],
+                                                     contact, s.inv_mass[i], s.inv_mass[j], e, mu);
+            dx_[i] += d.dx;
+            dy_[i] += d.dy;
+            dvx_[i] += d.dvx;
+            dvy_[i] += d.dvy;
+            if (i < j) ++stats_.contacts;
+        });
+    }
+}
+
+void StepSolver::apply_contact_deltas() {
+    for (std::size_t i = 0; i < state_.size(); ++i) {
+        state_.x[i] += dx_[i];
+        state_.y[i] += dy_[i];
+        state_.vx[i] += dvx_[i];
+        state_.vy[i] += dvy_[i];
+    }
+}
+
+void StepSolver::integrate_velocities(double h) {
+    const double gx = scene_.physics.gravity_x, gy = scene_.physics.gravity_y;
+    const double gamma = scene_.physics.damping;
+    for (std::size_t i = 0; i < state_.size(); ++i) {
+        if (state_.is_stone(i)) continue;  // kinematic: never integrated
+        state_.vx[i] += (gx - gamma * state_.vx[i]) * h;
+        state_.vy[i] += (gy - gamma * state_.vy[i]) * h;
+    }
+}
+
+void StepSolver::integrate_positions(double h) {
+    PhaseTimer timer(stats_, "integrate");
+    for (std::size_t i = 0; i < state_.size(); ++i) {
+        if (state_.is_stone(i)) continue;
+        state_.x[i] += state_.vx[i] * h;
+        state_.y[i] += state_.vy[i] * h;
+    }
+}
+
+void StepSolver::apply_walls() {
+    const World& w = scene_.world;
+    const double e_wall = scene_.physics.wall_restitution;
+    for (std::size_t i = 0; i < state_.size(); ++i) {
+        if (state_.is_stone(i)) continue;
+        if (scene_.periodic()) {
+            state_.x[i] = WallLaw<double>::wrap(state_.x[i], w.xmin, w.width());
+            state_.y[i] = WallLaw<double>::wrap(state_.y[i], w.ymin, w.height());
+        } else {
+            const double r = state_.radius[i];
+            WallLaw<double>::reflect_axis(&state_.x[i], &state_.vx[i], r, w.xmin, w.xmax, e_wall);
+            WallLaw<double>::reflect_axis(&state_.y[i], &state_.vy[i], r, w.ymin, w.ymax, e_wall);
+        }
+    }
+}
+
+}  // namespace collide

@@ -1,0 +1,34 @@
+// Conformance tests: one test body, run on every backend in the registry (OpenMM's pattern of
+// tests/TestXxx.h instantiated per platform). A backend that does not support a case's scene
+// is skipped with its own stated reason; a new backend joins by being registered.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core/backend_registry.h"
+#include "core/run_driver.h"
+
+namespace collide::test {
+
+// Relative accuracy expected of a backend on quantities that the exact dynamics conserves
+// over a short run. Derived from the backend's arithmetic, not tuned:
+//   double backends: ~1e3 roundings of 2.2e-16 -> 1e-12;
+//   float backends:  ~1e2 roundings of 6e-8    -> 1e-5;
+//   box2d:           its sequential-impulse solver resolves velocity to the iteration count and
+//                    skips restitution below the threshold; docs/box2d-baseline.md -> 2e-2.
+double conformance_tolerance(const std::string& backend);
+
+class Conformance : public ::testing::TestWithParam<std::string> {
+protected:
+    const BackendInfo& backend() const { return find_backend(GetParam()); }
+    // Skips the test (with the backend's reason) if the backend cannot run the scene.
+    bool skip_unless_supported(const Scene& scene) const;
+    RunResult run(const Scene& scene, const ParticleState<double>& initial) const;
+    double tolerance() const { return conformance_tolerance(GetParam()); }
+};
+
+std::vector<std::string> backend_names();
+
+}  // namespace collide::test

@@ -1,0 +1,54 @@
+#include "test_scenes.h"
+
+#include <cmath>
+#include <random>
+#include <stdexcept>
+
+namespace collide::test {
+
+Scene box_scene(double width, double height, Boundary boundary) {
+    Scene s;
+    s.name = "test_box";
+    s.world = World{0, 0, width, height, boundary};
+    return s;
+}
+
+ParticleState<double> make_state(const std::vector<DiskSpec>& disks) {
+    ParticleState<double> s;
+    for (const auto& d : disks) {
+        s.x.push_back(d.x);
+        s.y.push_back(d.y);
+        s.vx.push_back(d.vx);
+        s.vy.push_back(d.vy);
+        s.radius.push_back(d.radius);
+        s.mass.push_back(d.mass);
+        s.inv_mass.push_back(d.stone ? 0.0 : 1.0 / d.mass);
+    }
+    return s;
+}
+
+ParticleState<double> random_gas(const Scene& scene, std::size_t n, double radius, std::uint64_t seed,
+                                 bool allow_overlap) {
+    std::mt19937_64 rng(seed);
+    const World& w = scene.world;
+    std::uniform_real_distribution<double> ux(w.xmin + radius, w.xmax - radius);
+    std::uniform_real_distribution<double> uy(w.ymin + radius, w.ymax - radius);
+    std::uniform_real_distribution<double> uv(-1.0, 1.0);
+    std::vector<DiskSpec> disks;
+    std::size_t attempts = 0;
+    while (disks.size() < n) {
+        if (++attempts > 1000 * n + 1000) throw std::runtime_error("random_gas: packing too dense");
+        const double x = ux(rng), y = uy(rng);
+        bool free = true;
+        for (const auto& d : disks)
+            if (!allow_overlap && std::hypot(d.x - x, d.y - y) < 2 * radius) { free = false; break; }
+        if (free) disks.push_back({x, y, uv(rng), uv(rng), radius, 1.0});
+    }
+    return make_state(disks);
+}
+
+std::string scene_file(const std::string& relative) {
+    return std::string(COLLIDE_SOURCE_DIR) + "/data/scenes/" + relative;
+}
+
+}  // namespace collide::test
