@@ -8,5 +8,6 @@ namespace collide::cli {
 void add_run_command(CLI::App& app);       // run one scene on one backend -> HDF5
 void add_backends_command(CLI::App& app);  // list the backends
 void add_scenes_command(CLI::App& app);    // list the scene library
+void add_bench_command(CLI::App& app);     // benchmark suites
 
 }  // namespace collide::cli

@@ -1,0 +1,47 @@
+// `collide bench [SUITE...] [--sizes ...] [--threads ...] [--out PREFIX]`
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+
+#include "bench/bench_suite.h"
+#include "commands.h"
+
+namespace collide::cli {
+
+void add_bench_command(CLI::App& app) {
+    struct Args {
+        std::vector<std::string> suites;
+        std::string out = "bench";
+        bench::BenchArgs bench;
+    };
+    auto args = std::make_shared<Args>();
+    std::string suite_list;
+    for (const auto& s : bench::all_bench_suites()) suite_list += "\n  " + s.name + ": " + s.description;
+    auto* cmd = app.add_subcommand("bench", "Run benchmark suites headless; write CSV + JSON with provenance."
+                                            "\nSuites:" + suite_list);
+    cmd->add_option("suites", args->suites, "Suites to run (default: all)");
+    cmd->add_option("--backend", args->bench.backends, "Only these backends");
+    cmd->add_option("--sizes", args->bench.sizes, "Particle counts (default: each suite's ladder)");
+    cmd->add_option("--threads", args->bench.threads, "Thread counts to try");
+    cmd->add_option("--frames", args->bench.frames, "Fixed-timestep frames per scenario")->capture_default_str();
+    cmd->add_flag("--quick", args->bench.quick, "Small sizes only (smoke test)");
+    cmd->add_option("--max-seconds", args->bench.max_seconds_per_case, "Stop a backend at the size where one case exceeds this")
+        ->capture_default_str();
+    cmd->add_option("-o,--out", args->out, "Output prefix: PREFIX-SUITE.csv and .json")->capture_default_str();
+    cmd->callback([args] {
+        bool ran = false;
+        for (const auto& suite : bench::all_bench_suites()) {
+            if (!args->suites.empty() &&
+                std::find(args->suites.begin(), args->suites.end(), suite.name) == args->suites.end())
+                continue;
+            bench::BenchReport report(suite.name);
+            suite.run(args->bench, report);
+            report.write(args->out + "-" + suite.name);
+            std::printf("wrote %s-%s.csv and .json\n", args->out.c_str(), suite.name.c_str());
+            ran = true;
+        }
+        if (!ran) throw std::runtime_error("no benchmark suite matched; see `collide bench --help`");
+    });
+}
+
+}  // namespace collide::cli

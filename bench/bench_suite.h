@@ -1,0 +1,58 @@
+// Benchmark suites behind `collide bench`. A suite runs fixed, seeded scenarios headless and
+// records one row per measurement; BenchReport prints the rows as a table and writes them as
+// CSV plus a JSON file with the provenance of the build and machine.
+//
+// Performance claims in docs/ come from these suites, never from timed unit tests.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace collide::bench {
+
+struct BenchArgs {
+    std::vector<std::string> backends;  // empty: every backend the suite applies to
+    std::vector<std::int64_t> sizes;    // particle counts; empty: the suite's default ladder
+    std::vector<int> threads;           // thread counts to try; empty: the suite's default
+    int frames = 240;                   // fixed-timestep frames per scenario (seed 001's suite)
+    bool quick = false;                 // smaller ladder, for smoke tests
+    double max_seconds_per_case = 60;   // a case whose first frame exceeds this is stopped
+};
+
+using Value = std::variant<std::int64_t, double, std::string>;
+using Row = std::map<std::string, Value>;
+
+class BenchReport {
+public:
+    explicit BenchReport(std::string suite) : suite_(std::move(suite)) {}
+    // Adds a row and prints it at once (progress on long suites).
+    void add(const Row& row);
+    // Free-form notes ("box2d stopped at N = 1e5: one step took 1.3 s").
+    void note(const std::string& text);
+    const std::vector<Row>& rows() const { return rows_; }
+    // Writes <prefix>.csv and <prefix>.json (rows + notes + provenance).
+    void write(const std::string& prefix) const;
+
+private:
+    std::string suite_;
+    std::vector<Row> rows_;
+    std::vector<std::string> notes_;
+};
+
+struct BenchSuite {
+    std::string name;
+    std::string description;
+    std::function<void(const BenchArgs&, BenchReport&)> run;
+};
+
+// Every suite compiled into this build (bench/all_suites.cpp).
+const std::vector<BenchSuite>& all_bench_suites();
+
+// Seconds of steady-clock time spent in f().
+double time_seconds(const std::function<void()>& f);
+
+}  // namespace collide::bench
