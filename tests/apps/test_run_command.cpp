@@ -122,8 +122,8 @@ TEST(RunCommand, DISABLED_HeadOnEqualMassesEndToEnd) {
 
     Hdf5File file(out);
     // Provenance: every number traceable to a commit, a build, a scene and a seed.
-    for (const char* key : {"commit", "dirty", "compiler", "hdf5_version", "seed", "command_line", "backend",
-                            "scene_text", "scene_path", "run_date_utc"})
+    for (const char* key : {"git_commit", "git_dirty", "compiler", "compiler_flags", "hdf5_version", "seed",
+                            "command_line", "backend", "scene_text", "scene_path", "run_date_utc"})
         EXPECT_TRUE(file.has_attribute("/", key)) << "missing provenance attribute " << key;
     EXPECT_EQ(file.string_attribute("/", "backend"), "step");
     EXPECT_EQ(file.string_attribute("/", "scene_text"), test::read_text_file(head_on_scene));
@@ -166,7 +166,7 @@ TEST(RunCommand, DISABLED_H5dumpShowsMetricsAndProvenance) {
     const auto dump = run_program(H5DUMP_EXECUTABLE, {"-H", out}, dir);
     ASSERT_EQ(dump.exit_code, 0) << dump.err;
     for (const char* name : {"GROUP \"metrics\"", "DATASET \"kinetic_energy\"", "DATASET \"momentum_x\"",
-                             "ATTRIBUTE \"commit\"", "ATTRIBUTE \"scene_text\"", "ATTRIBUTE \"seed\""})
+                             "ATTRIBUTE \"git_commit\"", "ATTRIBUTE \"scene_text\"", "ATTRIBUTE \"seed\""})
         EXPECT_TRUE(contains(dump.out, name)) << "h5dump -H output lacks " << name;
 }
 
