@@ -26,8 +26,9 @@ std::string describe_nonfinite(const std::string& solver_name, const ParticleSta
     std::ostringstream msg;
     msg << solver_name << ": " << count << " disk(s) with NaN/Inf state at t = " << t;
     for (std::size_t i = 0; i < state.size(); ++i) {
-        // A sum is non-finite exactly when one of its terms is NaN or Inf (or it overflows).
-        if (std::isfinite(state.x[i] + state.y[i] + state.vx[i] + state.vy[i])) continue;
+        if (std::isfinite(state.x[i]) && std::isfinite(state.y[i]) && std::isfinite(state.vx[i]) &&
+            std::isfinite(state.vy[i]))
+            continue;
         msg << " (first: disk " << i << ", x = (" << state.x[i] << ", " << state.y[i] << "), v = ("
             << state.vx[i] << ", " << state.vy[i] << "))";
         break;
