@@ -1,6 +1,7 @@
 #include "toml_fields.h"
 
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 #include "scene_loader.h"
@@ -11,9 +12,28 @@ std::string location(const std::string& file, int line) {
     return line > 0 ? file + ":" + std::to_string(line) + ": " : file + ": ";
 }
 
+// Floats with 15 significant digits: a decimal literal from the file (-0.1) reads back as
+// written instead of as its binary neighbour (-0.10000000000000001).
+static void write_value(std::ostream& out, const toml::node& n) {
+    if (auto f = n.as_floating_point()) {
+        char buffer[32];
+        std::snprintf(buffer, sizeof buffer, "%.15g", f->get());
+        out << buffer;
+    } else if (auto a = n.as_array()) {
+        out << "[";
+        for (std::size_t i = 0; i < a->size(); ++i) {
+            out << (i ? ", " : "");
+            write_value(out, *a->get(i));
+        }
+        out << "]";
+    } else {
+        n.visit([&out](const auto& v) { out << v; });
+    }
+}
+
 std::string toml_value_text(const toml::node& n) {
     std::ostringstream out;
-    n.visit([&out](const auto& v) { out << v; });
+    write_value(out, n);
     std::string text = out.str();
     for (char& c : text)
         if (c == '\n') c = ' ';
@@ -134,8 +154,14 @@ std::vector<double> TomlFields::numbers(std::string_view key, std::size_t count)
 
 TomlFields TomlFields::table(std::string_view key) const {
     const toml::node* n = table_.get(key);
-    if (!n || !n->is_table()) fail(key, "a table");
-    return TomlFields(*n->as_table(), key_name(key), file_);
+    // Named as written in the file: [physics], [backend.box2d], [[particles]][1].radius.
+    std::string name;
+    if (path_.empty()) name.append("[").append(key).append("]");
+    else if (path_.front() == '[' && path_.back() == ']' && path_.rfind("[[", 0) != 0)
+        name.append(path_, 0, path_.size() - 1).append(".").append(key).append("]");
+    else name = key_name(key);
+    if (!n || !n->is_table()) fail(key, path_.empty() ? "a table " + name : std::string("a table"));
+    return TomlFields(*n->as_table(), name, file_);
 }
 
 }  // namespace collide
