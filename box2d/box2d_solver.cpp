@@ -51,6 +51,9 @@ void Box2dSolver::load(const Scene& scene, const ParticleState<double>& initial)
     options_ = parse_box2d_options(scene);
     units_ = Box2dUnits(options_.length_scale.value_or(default_box2d_scale(mean_radius(initial))), scene.world);
     substeps_ = options_.substeps.value_or(scene.run.substeps);
+    if (!(scene.run.dt > 0) || substeps_ < 1)
+        throw std::runtime_error("box2d: scene '" + scene.name + "': needs dt > 0 and substeps >= 1 (dt = " +
+                                 std::to_string(scene.run.dt) + ", substeps = " + std::to_string(substeps_) + ")");
     step_count_ = 0;
     stats_ = SolverStats{};
     cap_steps_ = cap_body_steps_ = 0;

@@ -138,6 +138,19 @@ TEST(Box2dSolver, TranslationCapIsDetectedAndCounted) {
     EXPECT_EQ(counters.at("translation_cap_body_steps"), 10.0);
 }
 
+TEST(Box2dSolver, SubstepsLiftTheTranslationCap) {
+    // The same 3000 units/s with 2 Box2D steps per dt: 1.5 m per Box2D step, below the cap.
+    Scene scene = test::box_scene(1000, 100);
+    scene.run.dt = 1e-3;
+    scene.backend_options["box2d"] = {{"substeps", "2"}};
+    Box2dSolver solver;
+    const auto s = run_to(scene, test::make_state({{100, 50, 3000, 0, 0.5, 1}}), 0.01, &solver);
+    EXPECT_NEAR(s.x[0], 100 + 30.0, 1e-3);
+    EXPECT_EQ(solver.stats().counters.at("translation_cap_steps"), 0.0);
+    EXPECT_EQ(solver.stats().counters.at("box2d_substeps"), 2.0);
+    EXPECT_EQ(solver.stats().steps, 10);
+}
+
 TEST(Box2dSolver, NoTranslationCapAtOrdinarySpeeds) {
     Scene scene = test::box_scene(10, 4);
     Box2dSolver solver;
