@@ -124,7 +124,7 @@ void read_velocity(const TomlFields& block, ParticleGenerator& g) {
     const char* expected = "\"zero\", { maxwell = kT } or { speed = v }";
     if (!n) return;
     if (n->is_string()) {
-        block.choice("velocity", {"zero"}, "zero");
+        if (n->as_string()->get() != "zero") block.fail("velocity", expected);
         return;
     }
     if (!n->is_table()) block.fail("velocity", expected);
@@ -269,7 +269,8 @@ Scene read_scene(const toml::table& root_table, const std::string& file) {
     root.require(!scene.description.empty() && scene.description.find('\n') == std::string::npos, "description",
                  "a non-empty one-line string");
     const std::int64_t seed = root.integer("seed", 1);
-    root.require(seed >= 0, "seed", "an integer >= 0");
+    // gsl_rng_mt19937 uses the low 32 bits of its seed: larger seeds would silently collide.
+    root.require(seed >= 0 && seed <= 4294967295, "seed", "an integer in [0, 2^32 - 1]");
     scene.seed = std::uint64_t(seed);
     scene.world = read_world(root.table("world"));
     if (root.has("physics")) scene.physics = read_physics(root.table("physics"));
