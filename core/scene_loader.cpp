@@ -20,7 +20,8 @@ constexpr double pi = 3.14159265358979323846;
 World read_world(const TomlFields& world) {
     world.allow_only({"box", "boundary"});
     const std::vector<double> box = world.numbers("box", 4);
-    world.require(box[2] > box[0] && box[3] > box[1], "box", "[xmin, ymin, xmax, ymax] with xmax > xmin and ymax > ymin");
+    world.require(box[2] > box[0] && box[3] > box[1] && std::isfinite(box[2] - box[0]) && std::isfinite(box[3] - box[1]),
+                  "box", "[xmin, ymin, xmax, ymax] with xmax > xmin and ymax > ymin (and a finite size)");
     World w{box[0], box[1], box[2], box[3]};
     w.boundary = world.choice("boundary", {"reflect", "periodic"}, "reflect") == "periodic" ? Boundary::periodic
                                                                                           : Boundary::reflect;
@@ -46,11 +47,11 @@ Physics read_physics(const TomlFields& physics) {
     return p;
 }
 
-// True when t is a whole number (>= 1) of steps dt, to a relative tolerance of 1e-9:
-// decimal values such as 0.1 / 1e-3 are not exact in binary floating point.
+// True when t is a whole number (>= 1, at most 10^15) of steps dt, to a relative tolerance
+// of 1e-9: decimal values such as 0.1 / 1e-3 are not exact in binary floating point.
 bool whole_steps(double t, double dt) {
     const double n = t / dt;
-    return std::round(n) >= 1 && std::fabs(n - std::round(n)) <= 1e-9 * std::round(n);
+    return std::round(n) >= 1 && std::round(n) <= 1e15 && std::fabs(n - std::round(n)) <= 1e-9 * std::round(n);
 }
 
 RunSettings read_run(const TomlFields& run) {

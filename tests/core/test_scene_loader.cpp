@@ -124,6 +124,9 @@ TEST(Loader, TopLevelErrorsNameTheKeyAndLine) {
         {"description = \"t\"\n" + one_disk, "bad.toml:1: world is missing: expected a table [world]"},
         {"description = \"t\"\n[world]\nbox = [0, 0, -10, 10]\n" + one_disk,
          "bad.toml:3: [world].box = [0, 0, -10, 10]: expected [xmin, ymin, xmax, ymax] with xmax > xmin"},
+        {"description = \"t\"\n[world]\nbox = [-1e308, 0, 1e308, 10]\n" + one_disk,
+         "bad.toml:3: [world].box = [-1e+308, 0, 1e+308, 10]: expected [xmin, ymin, xmax, ymax] with xmax > xmin and "
+         "ymax > ymin (and a finite size)"},
     };
     for (const auto& [text, expected] : cases) {
         try {
