@@ -1,0 +1,2 @@
+// Statistical physics checks of the `event` backend (placeholder, filled below).
+#include <gtest/gtest.h>
