@@ -21,42 +21,41 @@ namespace collide {
 class EventQueue {
 public:
     void reset(std::size_t n) {
-        time_.assign(n, 0.0);
         heap_.resize(n);
         position_.resize(n);
-        for (std::size_t k = 0; k < n; ++k) heap_[k] = std::uint32_t(k), position_[k] = std::uint32_t(k);
+        for (std::size_t k = 0; k < n; ++k) heap_[k] = Entry{0.0, std::uint32_t(k)}, position_[k] = std::uint32_t(k);
     }
 
     bool empty() const { return heap_.empty(); }
-    std::uint32_t top() const { return heap_[0]; }  // the particle with the earliest event
-    double top_time() const { return time_[heap_[0]]; }
-    double time_of(std::uint32_t particle) const { return time_[particle]; }
+    std::uint32_t top() const { return heap_[0].particle; }  // the particle with the earliest event
+    double top_time() const { return heap_[0].time; }
+    double time_of(std::uint32_t particle) const { return heap_[position_[particle]].time; }
 
     // Sets a particle's event time and restores the heap order (up or down as needed).
     void update(std::uint32_t particle, double t) {
-        const double old = time_[particle];
-        time_[particle] = t;
         const std::size_t k = position_[particle];
+        const double old = heap_[k].time;
+        heap_[k].time = t;
         if (t < old) sift_up(k);
         else sift_down(k);
     }
 
-    // Builds the heap from the times set with set_initial (O(N), Floyd's method).
-  
-    void heapify() {
-        for (std::size_t k = heap_.size() / 2; k-- > 0;) sift_down(k);
-    }
-
 private:
-    bool earlier(std::uint32_t a, std::uint32_t b) const {
-        return time_[a] < time_[b] || (time_[a] == time_[b] && a < b);
+    // The time is stored in the heap next to the particle, so that comparing two children
+    // reads one cache line instead of two random places (this dominates at N = 1e6).
+    struct Entry {
+        double time;
+        std::uint32_t particle;
+    };
+    static bool earlier(const Entry& a, const Entry& b) {
+        return a.time < b.time || (a.time == b.time && a.particle < b.particle);
     }
-    void place(std::size_t k, std::uint32_t particle) {
-        heap_[k] = particle;
-        position_[particle] = std::uint32_t(k);
+    void place(std::size_t k, const Entry& e) {
+        heap_[k] = e;
+        position_[e.particle] = std::uint32_t(k);
     }
     void sift_up(std::size_t k) {
-        const std::uint32_t moving = heap_[k];
+        const Entry moving = heap_[k];
         while (k > 0) {
             const std::size_t parent = (k - 1) / 2;
             if (!earlier(moving, heap_[parent])) break;
@@ -66,7 +65,7 @@ private:
         place(k, moving);
     }
     void sift_down(std::size_t k) {
-        const std::uint32_t moving = heap_[k];
+        const Entry moving = heap_[k];
         const std::size_t n = heap_.size();
         for (;;) {
             std::size_t child = 2 * k + 1;
@@ -79,8 +78,7 @@ private:
         place(k, moving);
     }
 
-    std::vector<double> time_;            // event time per particle
-    std::vector<std::uint32_t> heap_;     // particles in heap order
+    std::vector<Entry> heap_;             // (time, particle) in heap order
     std::vector<std::uint32_t> position_; // heap position of each particle
 };
 

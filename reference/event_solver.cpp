@@ -74,7 +74,9 @@ void EventSolver::load(const Scene& scene, const ParticleState<double>& initial)
             state_.y[i] = WallLaw<double>::wrap(state_.y[i], w.ymin, w.height());
         }
     }
-    clock_.assign(n, 0.0);
+    flight_.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+        flight_[i] = Flight{state_.x[i], state_.y[i], state_.vx[i], state_.vy[i], 0.0, state_.radius[i]};
     count_.assign(n, 0);
     last_collision_.assign(n, -std::numeric_limits<double>::infinity());
     prediction_.assign(n, Prediction{});
@@ -86,16 +88,16 @@ void EventSolver::load(const Scene& scene, const ParticleState<double>& initial)
 
     double r_max = 0, r_sum = 0, v2_sum = 0;
     for (std::size_t i = 0; i < n; ++i) {
-        r_max = std::max(r_max, state_.radius[i]);
-        r_sum += state_.radius[i];
-        v2_sum += state_.vx[i] * state_.vx[i] + state_.vy[i] * state_.vy[i];
+        r_max = std::max(r_max, flight_[i].radius);
+        r_sum += flight_[i].radius;
+        v2_sum += flight_[i].vx * flight_[i].vx + flight_[i].vy * flight_[i].vy;
     }
     cells_.configure(w, n > 0 ? 2 * r_max : 1.0, n);
     if (scene.periodic() && (cells_.cells_x() < 3 || cells_.cells_y() < 3))
         throw std::runtime_error("event: periodic box " + describe(w.width()) + " x " + describe(w.height()) +
                                  " is narrower than 3 contact distances (2 r_max = " + describe(2 * r_max) +
                                  "); the minimum-image convention needs at least 3 cells per axis");
-    for (std::uint32_t i = 0; i < n; ++i) cells_.insert(i, cells_.column_of(state_.x[i]), cells_.row_of(state_.y[i]));
+    for (std::uint32_t i = 0; i < n; ++i) cells_.insert(i, cells_.column_of(flight_[i].x), cells_.row_of(flight_[i].y));
     reject_overlaps();
 
     // Time scale: the time a typical disk needs to travel one diameter (from the rms speed or,
@@ -170,12 +172,12 @@ void EventSolver::reject_overlaps() const {
     for (std::uint32_t i = 0; i < state_.size(); ++i) {
         cells_.for_each_neighbour(i, [&](std::uint32_t j) {
             if (j <= i) return;
-            double dx = state_.x[i] - state_.x[j], dy = state_.y[i] - state_.y[j];
+            double dx = flight_[i].x - flight_[j].x, dy = flight_[i].y - flight_[j].y;
             if (periodic) {
                 dx = WallLaw<double>::minimum_image(dx, w.width());
                 dy = WallLaw<double>::minimum_image(dy, w.height());
             }
-            const double sigma = state_.radius[i] + state_.radius[j];
+            const double sigma = flight_[i].radius + flight_[j].radius;
             const double distance = std::hypot(dx, dy);
             if (sigma - distance > overlap_tolerance * sigma)
                 throw std::runtime_error("event: initial state overlaps: particles " + std::to_string(i) + " and " +
@@ -257,22 +259,14 @@ void EventSolver::check_progress(std::uint32_t i) {
 // ---------------------------------------------------------------------------------------
 
 void EventSolver::bring_to_now(std::uint32_t i) {
-    const double dt = now_ - clock_[i];
-    clock_[i] = now_;
+    const double dt = now_ - flight_[i].t;
+    flight_[i].t = now_;
     if (dt == 0 || state_.is_stone(i)) return;
     // Free flight under uniform gravity: x(t) = x + v dt + g dt^2 / 2, v(t) = v + g dt.
-    state_.x[i] += (state_.vx[i] + 0.5 * gx_ * dt) * dt;
-    state_.y[i] += (state_.vy[i] + 0.5 * gy_ * dt) * dt;
-    state_.vx[i] += gx_ * dt;
-    state_.vy[i] += gy_ * dt;
-}
-
-void EventSolver::position_now(std::uint32_t j, double& x, double& y, double& vx, double& vy) const {
-    const double dt = state_.is_stone(j) ? 0.0 : now_ - clock_[j];
-    x = state_.x[j] + (state_.vx[j] + 0.5 * gx_ * dt) * dt;
-    y = state_.y[j] + (state_.vy[j] + 0.5 * gy_ * dt) * dt;
-    vx = state_.vx[j] + gx_ * dt;
-    vy = state_.vy[j] + gy_ * dt;
+    flight_[i].x += (flight_[i].vx + 0.5 * gx_ * dt) * dt;
+    flight_[i].y += (flight_[i].vy + 0.5 * gy_ * dt) * dt;
+    flight_[i].vx += gx_ * dt;
+    flight_[i].vy += gy_ * dt;
 }
 
 void EventSolver::predict(std::uint32_t i) {
@@ -284,7 +278,7 @@ void EventSolver::predict(std::uint32_t i) {
     bring_to_now(i);
     Prediction best;
     double best_dt = earliest_border_or_wall(i, best);
-    const double xi = state_.x[i], yi = state_.y[i], vxi = state_.vx[i], vyi = state_.vy[i], ri = state_.radius[i];
+    const double xi = flight_[i].x, yi = flight_[i].y, vxi = flight_[i].vx, vyi = flight_[i].vy, ri = flight_[i].radius;
     const bool periodic = scene_.periodic();
     const double width = scene_.world.width(), height = scene_.world.height();
     cells_.for_each_neighbour(i, [&](std::uint32_t j) {
@@ -293,11 +287,15 @@ void EventSolver::predict(std::uint32_t i) {
         position_now(j, xj, yj, vxj, vyj);
         double dx = xi - xj, dy = yi - yj;
         if (periodic) {
-            dx = WallLaw<double>::minimum_image(dx, width);
-            dy = WallLaw<double>::minimum_image(dy, height);
+            // Minimum image; both centres lie in [lo, lo + L), so one shift is enough
+            // (cheaper than WallLaw::minimum_image's division in this innermost loop).
+            if (dx > 0.5 * width) dx -= width;
+            else if (dx < -0.5 * width) dx += width;
+            if (dy > 0.5 * height) dy -= height;
+            else if (dy < -0.5 * height) dy += height;
         }
         // Both disks feel the same gravity, so their relative motion is a straight line.
-        const double dt = event_time::pair_collision_time(dx, dy, vxi - vxj, vyi - vyj, ri + state_.radius[j]);
+        const double dt = event_time::pair_collision_time(dx, dy, vxi - vxj, vyi - vyj, ri + flight_[j].radius);
         if (dt < best_dt) {
             best_dt = dt;
             best = Prediction{EventKind::pair, j, count_[j]};
@@ -311,7 +309,7 @@ void EventSolver::predict(std::uint32_t i) {
 double EventSolver::earliest_border_or_wall(std::uint32_t i, Prediction& p) const {
     const World& w = scene_.world;
     const bool periodic = scene_.periodic();
-    const double r = state_.radius[i];
+    const double r = flight_[i].radius;
     const std::int64_t cx = cells_.column(i), cy = cells_.row(i);
     double best = never;
     auto consider = [&](double t, EventKind kind, std::uint32_t which) {
@@ -326,9 +324,9 @@ double EventSolver::earliest_border_or_wall(std::uint32_t i, Prediction& p) cons
         consider(event_time::downward_crossing_time(wall_lo + r - q, v, a), EventKind::wall, lo_id);
         consider(event_time::upward_crossing_time(wall_hi - r - q, v, a), EventKind::wall, lo_id + 1);
     };
-    axis(state_.x[i], state_.vx[i], gx_, cx, cells_.cells_x(), cells_.border_x(cx), cells_.border_x(cx + 1), w.xmin,
+    axis(flight_[i].x, flight_[i].vx, gx_, cx, cells_.cells_x(), cells_.border_x(cx), cells_.border_x(cx + 1), w.xmin,
          w.xmax, 0);
-    axis(state_.y[i], state_.vy[i], gy_, cy, cells_.cells_y(), cells_.border_y(cy), cells_.border_y(cy + 1), w.ymin,
+    axis(flight_[i].y, flight_[i].vy, gy_, cy, cells_.cells_y(), cells_.border_y(cy), cells_.border_y(cy + 1), w.ymin,
          w.ymax, 2);
     return best;
 }
@@ -349,12 +347,12 @@ double EventSolver::restitution_now(double e, std::uint32_t i, std::uint32_t j) 
 void EventSolver::collide_pair(std::uint32_t i, std::uint32_t j) {
     bring_to_now(i);
     bring_to_now(j);
-    double dx = state_.x[i] - state_.x[j], dy = state_.y[i] - state_.y[j];
+    double dx = flight_[i].x - flight_[j].x, dy = flight_[i].y - flight_[j].y;
     if (scene_.periodic()) {
         dx = WallLaw<double>::minimum_image(dx, scene_.world.width());
         dy = WallLaw<double>::minimum_image(dy, scene_.world.height());
     }
-    const double ux = state_.vx[i] - state_.vx[j], uy = state_.vy[i] - state_.vy[j];
+    const double ux = flight_[i].vx - flight_[j].vx, uy = flight_[i].vy - flight_[j].vy;
     const double b = dx * ux + dy * uy;  // d.u < 0: approaching
     if (!(b < 0)) return;                // a grazing contact that round-off turned into a miss
     const double d2 = dx * dx + dy * dy;
@@ -364,10 +362,10 @@ void EventSolver::collide_pair(std::uint32_t i, std::uint32_t j) {
     // overlap correction and friction): J = -(1 + e) (u.n) / (w_i + w_j), n = d / |d|.
     // Written as J n = g d with g = -(1 + e) (d.u) / (|d|^2 (w_i + w_j)).
     const double g = -(1 + e) * b / (d2 * (wi + wj));
-    state_.vx[i] += wi * g * dx;
-    state_.vy[i] += wi * g * dy;
-    state_.vx[j] -= wj * g * dx;
-    state_.vy[j] -= wj * g * dy;
+    flight_[i].vx += wi * g * dx;
+    flight_[i].vy += wi * g * dy;
+    flight_[j].vx -= wj * g * dx;
+    flight_[j].vy -= wj * g * dy;
     // Collision virial d.(J n) = g |d|^2 (the pressure, see stats()).
     virial_.add(g * d2);
     // Energy lost: (1 - e^2)/2 * mu (u.n)^2 with the reduced mass mu = 1/(w_i + w_j).
@@ -385,10 +383,10 @@ void EventSolver::collide_pair(std::uint32_t i, std::uint32_t j) {
 void EventSolver::collide_wall(std::uint32_t i, std::uint32_t wall) {
     bring_to_now(i);
     const World& w = scene_.world;
-    const double r = state_.radius[i];
+    const double r = flight_[i].radius;
     const bool x_axis = wall < 2, low = wall % 2 == 0;
-    double& q = x_axis ? state_.x[i] : state_.y[i];
-    double& v = x_axis ? state_.vx[i] : state_.vy[i];
+    double& q = x_axis ? flight_[i].x : flight_[i].y;
+    double& v = x_axis ? flight_[i].vx : flight_[i].vy;
     // Round-off rule: the centre is put back exactly on the contact line, never beyond it.
     const double contact = x_axis ? (low ? w.xmin + r : w.xmax - r) : (low ? w.ymin + r : w.ymax - r);
     q = low ? std::max(q, contact) : std::min(q, contact);
@@ -418,10 +416,10 @@ void EventSolver::cross_cell(std::uint32_t i, std::uint32_t border) {
     }
     // Periodic box: leaving through one side is entering through the other.
     const World& w = scene_.world;
-    if (cx < 0) cx += cells_.cells_x(), state_.x[i] += w.width();
-    if (cx >= cells_.cells_x()) cx -= cells_.cells_x(), state_.x[i] -= w.width();
-    if (cy < 0) cy += cells_.cells_y(), state_.y[i] += w.height();
-    if (cy >= cells_.cells_y()) cy -= cells_.cells_y(), state_.y[i] -= w.height();
+    if (cx < 0) cx += cells_.cells_x(), flight_[i].x += w.width();
+    if (cx >= cells_.cells_x()) cx -= cells_.cells_x(), flight_[i].x -= w.width();
+    if (cy < 0) cy += cells_.cells_y(), flight_[i].y += w.height();
+    if (cy >= cells_.cells_y()) cy -= cells_.cells_y(), flight_[i].y -= w.height();
     cells_.remove(i);
     cells_.insert(i, cx, cy);
     ++cell_events_;
@@ -446,7 +444,7 @@ void EventSolver::read_state(ParticleState<double>& out) const {
 double EventSolver::kinetic_energy_now() const {
     CompensatedSum k;
     for (std::size_t i = 0; i < state_.size(); ++i)
-        if (!state_.is_stone(i)) k.add(0.5 * state_.mass[i] * (state_.vx[i] * state_.vx[i] + state_.vy[i] * state_.vy[i]));
+        if (!state_.is_stone(i)) k.add(0.5 * state_.mass[i] * (flight_[i].vx * flight_[i].vx + flight_[i].vy * flight_[i].vy));
     return k.value();
 }
 

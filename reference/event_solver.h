@@ -55,7 +55,15 @@ private:
     // Free flight of disk i from its own clock to `now_` (written back: the clock moves).
     void bring_to_now(std::uint32_t i);
     // Position/velocity disk j would have at `now_`, without touching its state.
-    void position_now(std::uint32_t j, double& x, double& y, double& vx, double& vy) const;
+    void position_now(std::uint32_t j, double& x, double& y, double& vx, double& vy) const {
+        // Stones have zero velocity and scenes with stones have no gravity: no special case.
+        const Flight& f = flight_[j];
+        const double dt = now_ - f.t;
+        x = f.x + (f.vx + 0.5 * gx_ * dt) * dt;
+        y = f.y + (f.vy + 0.5 * gy_ * dt) * dt;
+        vx = f.vx + gx_ * dt;
+        vy = f.vy + gy_ * dt;
+    }
     // Re-predicts disk i's earliest event from `now_` and files it in the queue.
     void predict(std::uint32_t i);
     double earliest_border_or_wall(std::uint32_t i, Prediction& p) const;
@@ -68,9 +76,17 @@ private:
     double tc_duration() const;
     double kinetic_energy_now() const;
 
+    // One disk's free flight: position and velocity valid at the disk's own clock t. Kept
+    // together (one cache line) because predicting reads all of them for every neighbour.
+    struct Flight {
+        double x, y, vx, vy;
+        double t;       // the disk's clock
+        double radius;
+    };
+
     Scene scene_;
-    ParticleState<double> state_;      // positions/velocities at each disk's own clock
-    std::vector<double> clock_;        // time at which disk i's position/velocity are valid
+    ParticleState<double> state_;      // masses and stone flags; positions only on load
+    std::vector<Flight> flight_;
     std::vector<std::uint32_t> count_; // event counter: bumped whenever disk i changes course
     std::vector<double> last_collision_;
     std::vector<Prediction> prediction_;
