@@ -272,6 +272,7 @@ TEST(EventSolverCollapse, ThreeDiskInelasticClusterReachesCommonVelocity) {
     // with momentum conserved to rounding throughout.
     Scene scene = box_scene(40, 4);
     scene.physics.restitution = 0.05;
+    scene.backend_options["event"]["tc"] = "1e-9";  // small t_c: let the cluster nearly collapse
     SolverStats stats;
     const auto s = run_to(scene, make_state({{5, 2, 1.5, 0, 0.5, 1}, {6.5, 2, 0, 0, 0.5, 1}, {8, 2, -1, 0, 0.5, 1}}), 5,
                           &stats);
