@@ -2,12 +2,15 @@
 // command line, validation runner, benchmark and conformance tests pick it up from this list.
 #include "box2d/box2d_solver.h"
 #include "core/backend_registry.h"
+#include "reference/event_solver.h"
 #include "reference/step_solver.h"
 
 namespace collide {
 
 const std::vector<BackendInfo>& all_backends() {
     static const std::vector<BackendInfo> backends = {
+        {"event", "double", "exact event-driven hard disks (EDMD), serial: the reference", &EventSolver::supports,
+         [](const BackendOptions&) -> std::unique_ptr<Solver> { return std::make_unique<EventSolver>(); }},
         {"step", "double", "time-stepped rules of seeds 000/001, serial reference",
          [](const Scene&) -> std::optional<std::string> { return std::nullopt; },
          [](const BackendOptions&) -> std::unique_ptr<Solver> { return std::make_unique<StepSolver>(); }},

@@ -3,8 +3,11 @@
 
 namespace collide::bench {
 
+BenchSuite event_bench_suite();  // event_bench.cpp
+
 const std::vector<BenchSuite>& all_bench_suites() {
     static const std::vector<BenchSuite> suites = {
+        event_bench_suite(),
     };
     return suites;
 }
