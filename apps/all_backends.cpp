@@ -1,6 +1,7 @@
 // The list of backends compiled into collide. Adding a backend = one entry here; the
 // command line, validation runner, benchmark and conformance tests pick it up from this list.
 #include "core/backend_registry.h"
+#include "cpu/cpu_solver.h"
 #include "reference/step_solver.h"
 
 namespace collide {
@@ -10,6 +11,9 @@ const std::vector<BackendInfo>& all_backends() {
         {"step", "double", "time-stepped rules of seeds 000/001, serial reference",
          [](const Scene&) -> std::optional<std::string> { return std::nullopt; },
          [](const BackendOptions&) -> std::unique_ptr<Solver> { return std::make_unique<StepSolver>(); }},
+        {"cpu", "float", "the same rules in float, multi-threaded (OpenMP), seed 001's engine",
+         [](const Scene&) -> std::optional<std::string> { return std::nullopt; },
+         [](const BackendOptions& o) -> std::unique_ptr<Solver> { return std::make_unique<cpu::CpuSolver>(o); }},
     };
     return backends;
 }
