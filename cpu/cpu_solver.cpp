@@ -69,10 +69,12 @@ void CpuSolver::apply_settings(const std::map<std::string, std::string>& setting
 
 void CpuSolver::load(const Scene& scene, const ParticleState<double>& initial) {
     scene_ = scene;
-    if (auto it = scene.backend_options.find("cpu"); it != scene.backend_options.end()) {
+    // Settings: defaults, then the scene's [backend.cpu] table, then the options (which win).
+    specialise_ = true;
+    sort_interval_ = kDefaultSortInterval;
+    if (auto it = scene.backend_options.find("cpu"); it != scene.backend_options.end())
         apply_settings(it->second, "scene [backend.cpu]");
-        apply_settings(options_.extra, "backend options");  // the command line wins
-    }
+    apply_settings(options_.extra, "backend options");
     const std::size_t n = initial.size();
     if (n >= std::size_t(UINT32_MAX)) throw std::invalid_argument("cpu: at most 2^32 - 1 disks (32-bit indices)");
     state_ = initial.as<float>();  // the one conversion to float; back to double only in read_state

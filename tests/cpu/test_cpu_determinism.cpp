@@ -105,6 +105,16 @@ TEST(CpuSolver, RejectsUnknownSettingsWithTheirName) {
         EXPECT_NE(std::string(e.what()).find("sort_intervall"), std::string::npos) << e.what();
     }
     EXPECT_THROW(cpu::CpuSolver({0, "", "", {{"sort_interval", "-1"}}}), std::invalid_argument);
+    // The scene's [backend.cpu] table is checked when the scene is loaded.
+    Scene scene = test::box_scene(10, 10);
+    scene.backend_options["cpu"]["sort_interval"] = "often";
+    cpu::CpuSolver solver({});
+    try {
+        solver.load(scene, test::make_state({{5, 5, 0, 0, 0.5, 1}}));
+        FAIL() << "expected an error";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("[backend.cpu]"), std::string::npos) << e.what();
+    }
     EXPECT_THROW(cpu::CpuSolver({0, "", "", {{"specialise", "yes"}}}), std::invalid_argument);
 }
 
