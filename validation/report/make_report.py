@@ -68,7 +68,7 @@ def check_table(summary):
         rows.setdefault(c["subject"], {})[c["check"]] = c
     present = [name for name in CHECK_ORDER if any(name in r for r in rows.values())]
     out = ['<table class="checks"><tr><th>case (scene__backend__sweep__seed)</th>']
-    out += [f"<th>{html.escape(n)}</th>" for n in present] + ["</tr>"]
+    out += [f"<th>{html.escape(n.replace('_', ' '))}</th>" for n in present] + ["</tr>"]
     for subject, checks in rows.items():
         out.append(f"<tr><td class='subject'>{html.escape(subject)}</td>")
         for name in present:
@@ -168,7 +168,8 @@ th, td { border: 1px solid #ccc; padding: 2px 5px; text-align: left; vertical-al
 td.pass, tr.pass td:nth-child(2) { background: #dff0d8; }
 td.fail, tr.fail td { background: #f2dede; }
 td.left_out { background: #eee; color: #777; }
-td.subject { font-family: monospace; }
+td.subject { font-family: monospace; word-break: break-all; max-width: 260px; }
+table.checks { font-size: 10.5px; } table.checks td { white-space: nowrap; }
 figure { margin: 1em 0 2em 0; } figure img { max-width: 100%; border: 1px solid #ddd; }
 figcaption { font-size: 13px; color: #444; max-width: 900px; }
 p.verdict { font-size: 20px; font-weight: bold; } .pass { color: #2a7a2a; } .failed { color: #b02020; }
@@ -241,7 +242,7 @@ of every tolerance: docs/validation.md.</p>
 <h2>4. Scenes</h2>{scene_sections(summary, directory)}
 <h2>5. Timings</h2>
 <p>Wall time is spent in the solver's advance_to() only (metrics and output excluded), measured after an untimed
-warm-up run. Cases run one per process{', several at a time' if False else ''}; timings on a shared machine are noisy.</p>
+warm-up run. Each case runs in its own process; timings on a shared machine are noisy.</p>
 {timing_table(summary)}
 <h2>6. Provenance</h2>{provenance_table(summary)}
 </body></html>"""
