@@ -13,6 +13,8 @@ int main(int argc, char** argv) {
     collide::cli::add_backends_command(app);
     collide::cli::add_scenes_command(app);
     collide::cli::add_bench_command(app);
+    collide::cli::add_validate_command(app);
+    collide::cli::add_report_command(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

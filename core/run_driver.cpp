@@ -52,6 +52,7 @@ RunResult run_scene(const Scene& scene, Solver& solver, const ParticleState<doub
         const Metrics m = compute_metrics(scene, state, t);
         result.series.push_back(m);
         if (options.writer) options.writer->append(m, state);
+        if (options.on_state) options.on_state(state, m);
         if (options.on_output) options.on_output(t, scene.run.duration);
         if (options.stop_on_nonfinite && m.nonfinite > 0)
             throw std::runtime_error(describe_nonfinite(solver.name(), state, m.nonfinite, t));

@@ -23,6 +23,9 @@ struct RunOptions {
     RunWriter* writer = nullptr;          // write metrics (and frames) here if set
     // Called after each output time with (time, duration); for progress lines.
     std::function<void(double, double)> on_output;
+    // Called after each output time with the state and its metrics (validation: observables
+    // from snapshots, trajectories). The state is only valid during the call.
+    std::function<void(const ParticleState<double>&, const Metrics&)> on_state;
     // Stop with an error when a metric shows NaN/Inf (the default: a run that has produced
     // NaN cannot recover, and its later output would be meaningless).
     bool stop_on_nonfinite = true;

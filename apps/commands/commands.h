@@ -9,5 +9,7 @@ void add_run_command(CLI::App& app);       // run one scene on one backend -> HD
 void add_backends_command(CLI::App& app);  // list the backends
 void add_scenes_command(CLI::App& app);    // list the scene library
 void add_bench_command(CLI::App& app);     // benchmark suites
+void add_validate_command(CLI::App& app);  // validation suites -> summary.json, junit.xml
+void add_report_command(CLI::App& app);    // validation results -> HTML and Markdown report
 
 }  // namespace collide::cli

@@ -1,0 +1,44 @@
+// `collide report DIR`: renders DIR/report/index.html (self-contained, figures embedded) and
+// DIR/report/summary.md from the results of `collide validate`, with the Python renderer in
+// validation/report/ run by the interpreter CMake found (Debian's matplotlib, numpy, h5py).
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <stdexcept>
+
+#include "commands.h"
+
+namespace collide::cli {
+namespace {
+
+void execute(const std::string& dir) {
+    if (!std::filesystem::exists(dir + "/summary.json"))
+        throw std::runtime_error(dir + "/summary.json: not found; expected the output directory of `collide validate`");
+    const std::string script = std::string(COLLIDE_REPORT_DIR) + "/make_report.py";
+    // fork + exec (not system()): no shell, so directory names need no quoting.
+    const pid_t pid = ::fork();
+    if (pid < 0) throw std::runtime_error("fork failed");
+    if (pid == 0) {
+        ::execl(COLLIDE_PYTHON, COLLIDE_PYTHON, script.c_str(), dir.c_str(), static_cast<char*>(nullptr));
+        std::perror(COLLIDE_PYTHON);
+        ::_exit(127);
+    }
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+        throw std::runtime_error(std::string("the report renderer failed (") + COLLIDE_PYTHON + " " + script + ")");
+}
+
+}  // namespace
+
+void add_report_command(CLI::App& app) {
+    auto dir = std::make_shared<std::string>();
+    auto* cmd = app.add_subcommand("report", "Render DIR/report/index.html and summary.md from `collide validate` results");
+    cmd->add_option("dir", *dir, "Output directory of `collide validate`")->required()->check(CLI::ExistingDirectory);
+    cmd->callback([dir] { execute(*dir); });
+}
+
+}  // namespace collide::cli

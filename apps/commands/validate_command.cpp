@@ -1,0 +1,56 @@
+// `collide validate SUITE [--out DIR] [--jobs N] [--resume]`: runs a validation suite
+// (validation/suites/*.toml) on every backend it names and writes DIR/summary.json,
+// DIR/junit.xml and one HDF5 file per case. Exit status 1 when any check fails.
+#include <unistd.h>
+
+#include <cstdio>
+#include <memory>
+
+#include "commands.h"
+#include "core/backend_registry.h"
+#include "validation/suite_runner.h"
+
+namespace collide::cli {
+namespace {
+
+struct ValidateArgs {
+    std::string suite_path;
+    std::string out = "results";
+    int jobs = 1;
+    bool resume = false;
+};
+
+void execute(const ValidateArgs& args) {
+    const validation::Suite suite = validation::load_suite(args.suite_path);
+    validation::RunnerOptions options;
+    options.output_dir = args.out;
+    options.jobs = args.jobs;
+    options.resume = args.resume;
+    options.progress = stderr;
+    options.progress_is_terminal = ::isatty(STDERR_FILENO) != 0;
+    const auto outcome = validation::run_suite(suite, all_backends(), options);
+    std::printf("suite     %s: %zu cases (%zu run, %zu resumed) in %.1f s\n", suite.name.c_str(),
+                outcome.cases.size(), outcome.cases_run, outcome.cases_resumed, outcome.wall_seconds);
+    std::printf("checks    %zu passed, %zu failed, %zu left out\n", outcome.count(validation::CheckStatus::pass),
+                outcome.count(validation::CheckStatus::fail), outcome.count(validation::CheckStatus::left_out));
+    for (const auto& c : outcome.checks)
+        if (c.status == validation::CheckStatus::fail)
+            std::printf("FAIL      %s: %s: %s\n", c.subject.c_str(), c.check.c_str(), c.detail.c_str());
+    std::printf("output    %s/summary.json, %s/junit.xml\n", args.out.c_str(), args.out.c_str());
+    if (!outcome.passed()) throw CLI::RuntimeError(1);  // exit status 1, the summary above says why
+}
+
+}  // namespace
+
+void add_validate_command(CLI::App& app) {
+    auto args = std::make_shared<ValidateArgs>();
+    auto* cmd = app.add_subcommand("validate", "Run a validation suite; write summary.json, junit.xml and HDF5 per case");
+    cmd->add_option("suite", args->suite_path, "Suite file (validation/suites/*.toml)")->required()->check(CLI::ExistingFile);
+    cmd->add_option("-o,--out", args->out, "Output directory")->capture_default_str();
+    cmd->add_option("-j,--jobs", args->jobs, "Cases run at the same time (each in its own process)")
+        ->check(CLI::PositiveNumber)->capture_default_str();
+    cmd->add_flag("--resume", args->resume, "Keep the cases that already have a result in the output directory");
+    cmd->callback([args] { execute(*args); });
+}
+
+}  // namespace collide::cli

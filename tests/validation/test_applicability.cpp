@@ -1,0 +1,97 @@
+// Which checks apply to which scene: one test per rule of "Leave out what a scene does not need".
+#include <gtest/gtest.h>
+
+#include "validation/applicability.h"
+
+namespace collide::validation {
+namespace {
+
+SceneFeatures periodic_elastic() {
+    SceneFeatures f;
+    f.reflecting_walls = false;
+    return f;
+}
+
+TEST(Applicability, PeriodicElasticGasChecksEverything) {
+    const auto f = periodic_elastic();
+    EXPECT_FALSE(momentum_left_out(f));
+    EXPECT_EQ(energy_check(f).kind, EnergyKind::kinetic);
+    EXPECT_TRUE(wall_penetration_left_out(f));
+    EXPECT_FALSE(pressure_left_out(f));
+}
+
+TEST(Applicability, MomentumNeedsNoWallsGravityDampingOrStones) {
+    auto f = periodic_elastic();
+    f.reflecting_walls = true;
+    EXPECT_NE(momentum_left_out(f)->find("walls"), std::string::npos);
+    f = periodic_elastic();
+    f.gravity = true;
+    EXPECT_NE(momentum_left_out(f)->find("gravity"), std::string::npos);
+    f = periodic_elastic();
+    f.damping = true;
+    EXPECT_NE(momentum_left_out(f)->find("damping"), std::string::npos);
+    f = periodic_elastic();
+    f.stones = true;
+    EXPECT_NE(momentum_left_out(f)->find("stones"), std::string::npos);
+    f = periodic_elastic();
+    f.restitution = 0.5;  // inelastic pair collisions still conserve momentum
+    EXPECT_FALSE(momentum_left_out(f));
+}
+
+TEST(Applicability, KineticEnergyNeedsElasticFrictionlessUndampedScenes) {
+    auto f = periodic_elastic();
+    f.restitution = 0.9;
+    EXPECT_EQ(energy_check(f).kind, EnergyKind::none);
+    EXPECT_NE(energy_check(f).reason.find("restitution"), std::string::npos);
+    f = periodic_elastic();
+    f.reflecting_walls = true;
+    f.wall_restitution = 0.8;
+    EXPECT_EQ(energy_check(f).kind, EnergyKind::none);
+    EXPECT_NE(energy_check(f).reason.find("wall restitution"), std::string::npos);
+    f = periodic_elastic();
+    f.wall_restitution = 0.8;  // no walls in a periodic box: wall restitution does not matter
+    EXPECT_EQ(energy_check(f).kind, EnergyKind::kinetic);
+    f = periodic_elastic();
+    f.friction = true;
+    EXPECT_NE(energy_check(f).reason.find("friction"), std::string::npos);
+    f = periodic_elastic();
+    f.damping = true;
+    EXPECT_NE(energy_check(f).reason.find("damping"), std::string::npos);
+    f = periodic_elastic();
+    f.stones = true;  // resting stones reflect elastically
+    EXPECT_EQ(energy_check(f).kind, EnergyKind::kinetic);
+    f.moving_stones = true;
+    EXPECT_EQ(energy_check(f).kind, EnergyKind::none);
+}
+
+TEST(Applicability, GravityChecksTotalEnergyInstead) {
+    auto f = periodic_elastic();
+    f.gravity = true;
+    EXPECT_EQ(energy_check(f).kind, EnergyKind::total);
+    f.restitution = 0.5;
+    EXPECT_EQ(energy_check(f).kind, EnergyKind::none);
+}
+
+TEST(Applicability, PressureNeedsOneDiameter) {
+    auto f = periodic_elastic();
+    f.monodisperse = false;
+    EXPECT_TRUE(pressure_left_out(f));
+}
+
+TEST(Applicability, FeaturesAreReadFromSceneAndState) {
+    Scene scene;
+    scene.world.boundary = Boundary::periodic;
+    scene.physics.gravity_y = -1;
+    ParticleState<double> s;
+    s.x = {1, 2}; s.y = {1, 2}; s.vx = {0, 1}; s.vy = {0, 0};
+    s.radius = {0.1, 0.2}; s.mass = {1, 1}; s.inv_mass = {1, 0};
+    const auto f = scene_features(scene, s);
+    EXPECT_FALSE(f.reflecting_walls);
+    EXPECT_TRUE(f.gravity);
+    EXPECT_TRUE(f.stones);
+    EXPECT_TRUE(f.moving_stones);
+    EXPECT_FALSE(f.monodisperse);
+}
+
+}  // namespace
+}  // namespace collide::validation

@@ -1,0 +1,63 @@
+// The statistics behind pass/fail: convergence-order fits, z-scores, the KS test.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "validation/statistics.h"
+
+namespace collide::validation {
+namespace {
+
+TEST(Statistics, LogLogFitRecoversTheOrderOfSyntheticData) {
+    std::vector<double> h, e;
+    for (double dt : {1e-2, 5e-3, 2.5e-3, 1.25e-3}) {
+        h.push_back(dt);
+        e.push_back(3.0 * dt * dt);  // second order
+    }
+    const auto fit = log_log_fit(h, e);
+    ASSERT_TRUE(fit);
+    EXPECT_NEAR(fit->slope, 2.0, 1e-12);
+    EXPECT_NEAR(std::exp(fit->intercept), 3.0, 1e-9);
+}
+
+TEST(Statistics, LogLogFitWithNoiseIsCloseAndSkipsZeroErrors) {
+    std::vector<double> h = {0.1, 0.05, 0.025, 0.0125, 0.01};
+    std::vector<double> e = {0.1 * 1.05, 0.05 * 0.97, 0.025 * 1.02, 0.0125 * 0.99, 0.0};
+    const auto fit = log_log_fit(h, e);
+    ASSERT_TRUE(fit);
+    EXPECT_NEAR(fit->slope, 1.0, 0.05);
+}
+
+TEST(Statistics, LogLogFitIsUndefinedWithTooFewDistinctPoints) {
+    EXPECT_FALSE(log_log_fit({0.1, 0.05}, {1, 2}));
+    EXPECT_FALSE(log_log_fit({0.1, 0.1, 0.1}, {1, 2, 3}));
+    EXPECT_FALSE(log_log_fit({0.1, 0.05, 0.02}, {0, 0, 0}));
+}
+
+TEST(Statistics, MeanAndStandardError) {
+    const auto m = mean_and_error({1, 2, 3, 4});
+    EXPECT_DOUBLE_EQ(m.mean, 2.5);
+    EXPECT_NEAR(m.standard_error, std::sqrt(5.0 / 3.0 / 4.0), 1e-15);
+    EXPECT_EQ(m.count, 4u);
+}
+
+TEST(Statistics, ZScoreCombinesErrorBars) {
+    EXPECT_DOUBLE_EQ(z_score({1.0, 0.3, 3}, {2.0, 0.4, 3}), 2.0);
+    EXPECT_EQ(z_score({1.0, 0, 3}, {1.0, 0, 3}), 0.0);
+    EXPECT_TRUE(std::isinf(z_score({1.0, 0, 3}, {2.0, 0, 3})));
+}
+
+TEST(Statistics, KolmogorovSmirnovTellsSameFromDifferentDistributions) {
+    std::mt19937_64 rng(7);
+    std::normal_distribution<double> a(0, 1), shifted(0.5, 1);
+    std::vector<double> x, y, z;
+    for (int i = 0; i < 2000; ++i) x.push_back(a(rng)), y.push_back(a(rng)), z.push_back(shifted(rng));
+    EXPECT_GT(ks_two_sample(x, y).p_value, 1e-3);
+    EXPECT_LT(ks_two_sample(x, z).p_value, 1e-6);
+    EXPECT_NEAR(ks_two_sample({1, 2, 3}, {1, 2, 3}).statistic, 0.0, 0);
+    EXPECT_NEAR(ks_two_sample({1, 2}, {3, 4}).statistic, 1.0, 0);
+}
+
+}  // namespace
+}  // namespace collide::validation

@@ -1,0 +1,138 @@
+// The runner end to end with test-double backends: faults are caught, recorded and reported,
+// and the suite goes on.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <fstream>
+#include <sstream>
+
+#include "test_backends.h"
+#include "validation/suite_runner.h"
+
+namespace collide::test {
+namespace {
+
+using validation::CheckResult;
+using validation::CheckStatus;
+using validation::RunStatus;
+
+const CheckResult* find_check(const validation::SuiteOutcome& o, const std::string& backend, const std::string& check) {
+    for (const auto& c : o.checks)
+        if (c.backend == backend && c.check == check) return &c;
+    return nullptr;
+}
+
+validation::SuiteOutcome run(const validation::Suite& suite, const std::vector<BackendInfo>& backends,
+                             const std::string& dir, bool resume = false) {
+    validation::RunnerOptions options;
+    options.output_dir = dir;
+    options.jobs = 2;
+    options.resume = resume;
+    return validation::run_suite(suite, backends, options);
+}
+
+TEST(ValidationRunner, CorrectBackendPassesEveryApplicableCheck) {
+    const auto suite = test_suite(two_disk_scene(), {"good"});
+    const auto outcome = run(suite, {test_backend("good", Fault::none)}, fresh_output_dir("good"));
+    EXPECT_TRUE(outcome.passed());
+    ASSERT_NE(find_check(outcome, "good", "energy_drift"), nullptr);
+    EXPECT_EQ(find_check(outcome, "good", "energy_drift")->status, CheckStatus::pass);
+}
+
+TEST(ValidationRunner, BackendThatAddsEnergyFailsTheEnergyCheckWithItsMessage) {
+    const auto suite = test_suite(two_disk_scene(), {"good", "pump"});
+    const auto outcome =
+        run(suite, {test_backend("good", Fault::none), test_backend("pump", Fault::adds_energy)}, fresh_output_dir("pump"));
+    EXPECT_FALSE(outcome.passed());
+    const CheckResult* energy = find_check(outcome, "pump", "energy_drift");
+    ASSERT_NE(energy, nullptr);
+    EXPECT_EQ(energy->status, CheckStatus::fail);
+    EXPECT_NE(energy->detail.find("relative kinetic-energy drift"), std::string::npos) << energy->detail;
+    EXPECT_NE(energy->detail.find("exceeds the tolerance"), std::string::npos) << energy->detail;
+    // Output times 0, 0.05, ..., 0.2: K(0) is measured after the first advance (to t = 0), then
+    // four more advances each scale the speed by 1.01, so K grows by the factor 1.01^8 and the
+    // drift, relative to the largest K, is (1.01^8 - 1) / 1.01^8.
+    EXPECT_NEAR(energy->value, (std::pow(1.01, 8) - 1) / std::pow(1.01, 8), 1e-9);
+    EXPECT_EQ(find_check(outcome, "good", "energy_drift")->status, CheckStatus::pass);
+}
+
+TEST(ValidationRunner, ThrowingCrashingHangingAndNanCasesFailButTheSuiteGoesOn) {
+    const auto suite = test_suite(two_disk_scene(), {"throws", "crashes", "hangs", "nan", "good"});
+    const auto outcome = run(suite,
+                             {test_backend("throws", Fault::throws), test_backend("crashes", Fault::crashes),
+                              test_backend("hangs", Fault::hangs), test_backend("nan", Fault::produces_nan),
+                              test_backend("good", Fault::none)},
+                             fresh_output_dir("faults"));
+    ASSERT_EQ(outcome.cases.size(), 10u);
+    std::map<std::string, RunStatus> status;
+    for (const auto& c : outcome.cases) status[c.spec.backend] = c.status;
+    EXPECT_EQ(status["throws"], RunStatus::error);
+    EXPECT_EQ(status["crashes"], RunStatus::crashed);
+    EXPECT_EQ(status["hangs"], RunStatus::timed_out);
+    EXPECT_EQ(status["nan"], RunStatus::error);
+    EXPECT_EQ(status["good"], RunStatus::completed);
+    EXPECT_NE(find_check(outcome, "throws", "run")->detail.find("deliberate failure"), std::string::npos);
+    EXPECT_NE(find_check(outcome, "crashes", "run")->detail.find("signal"), std::string::npos);
+    EXPECT_NE(find_check(outcome, "nan", "run")->detail.find("NaN"), std::string::npos);
+    EXPECT_EQ(find_check(outcome, "good", "run")->status, CheckStatus::pass);
+    EXPECT_FALSE(outcome.passed());
+}
+
+TEST(ValidationRunner, ResumeSkipsFinishedCasesAndRunsMissingOnes) {
+    const auto suite = test_suite(two_disk_scene(), {"good"});
+    const std::string dir = fresh_output_dir("resume");
+    const auto first = run(suite, {test_backend("good", Fault::none)}, dir);
+    ASSERT_EQ(first.cases_run, 2u);
+    std::filesystem::remove(dir + "/cases/" + first.cases[1].spec.id + ".toml");
+    const auto second = run(suite, {test_backend("good", Fault::none)}, dir, true);
+    EXPECT_EQ(second.cases_resumed, 1u);
+    EXPECT_EQ(second.cases_run, 1u);
+    EXPECT_TRUE(second.passed());
+    // A resumed run judges the old measurements the same way as the fresh ones.
+    EXPECT_EQ(first.checks.size(), second.checks.size());
+}
+
+TEST(ValidationRunner, RefusedSceneAndInapplicableChecksAreListedWithReasons) {
+    Scene scene = two_disk_scene();
+    scene.world.boundary = Boundary::reflect;  // reflecting walls: momentum is not conserved
+    const auto suite = test_suite(scene, {"good", "picky"});
+    const auto outcome = run(suite, {test_backend("good", Fault::none), test_backend("picky", Fault::none, "no walls here")},
+                             fresh_output_dir("leftout"));
+    const CheckResult* momentum = find_check(outcome, "good", "momentum_drift");
+    ASSERT_NE(momentum, nullptr);
+    EXPECT_EQ(momentum->status, CheckStatus::left_out);
+    EXPECT_NE(momentum->detail.find("reflecting walls"), std::string::npos);
+    const CheckResult* refused = find_check(outcome, "picky", "run");
+    ASSERT_NE(refused, nullptr);
+    EXPECT_EQ(refused->status, CheckStatus::left_out);
+    EXPECT_NE(refused->detail.find("no walls here"), std::string::npos);
+    EXPECT_TRUE(outcome.passed());  // left out is not failed
+}
+
+TEST(ValidationRunner, WritesSummaryAndJUnitFiles) {
+    const auto suite = test_suite(two_disk_scene(), {"good", "pump"});
+    const std::string dir = fresh_output_dir("files");
+    run(suite, {test_backend("good", Fault::none), test_backend("pump", Fault::adds_energy)}, dir);
+    std::ifstream junit(dir + "/junit.xml");
+    std::stringstream text;
+    text << junit.rdbuf();
+    EXPECT_NE(text.str().find("<failure message=\"relative kinetic-energy drift"), std::string::npos);
+    EXPECT_NE(text.str().find("<skipped"), std::string::npos);
+    EXPECT_TRUE(std::filesystem::exists(dir + "/summary.json"));
+}
+
+TEST(ValidationRunner, UnknownBackendIsAnErrorNamingTheSuite) {
+    const auto suite = test_suite(two_disk_scene(), {"nonexistent"});
+    try {
+        run(suite, {test_backend("good", Fault::none)}, fresh_output_dir("unknown"));
+        FAIL() << "expected a SuiteError";
+    } catch (const validation::SuiteError& e) {
+        EXPECT_NE(std::string(e.what()).find("test-suite"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("nonexistent"), std::string::npos);
+    }
+}
+
+}  // namespace
+}  // namespace collide::test

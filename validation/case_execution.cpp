@@ -1,0 +1,150 @@
+#include "case_execution.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+
+#include "core/provenance.h"
+#include "core/run_driver.h"
+#include "core/scene_loader.h"
+#include "core/metrics.h"
+#include "observables.h"
+
+namespace collide::validation {
+namespace {
+
+Snapshot snapshot_of(const ParticleState<double>& s) { return {s.x, s.y, s.vx, s.vy, s.radius}; }
+
+void append(MetricSeries& m, const Metrics& x) {
+    m.time.push_back(x.time);
+    m.kinetic_energy.push_back(x.kinetic_energy);
+    m.total_energy.push_back(x.total_energy());
+    m.momentum_x.push_back(x.momentum_x);
+    m.momentum_y.push_back(x.momentum_y);
+    m.max_overlap.push_back(x.max_overlap);
+    m.mean_overlap.push_back(x.mean_overlap);
+    m.overlapping_pairs.push_back(double(x.overlapping_pairs));
+    m.wall_penetration.push_back(x.max_wall_penetration);
+    m.nonfinite.push_back(double(x.nonfinite));
+}
+
+BackendOptions options_for(const CaseSpec& spec) {
+    BackendOptions options;
+    if (spec.iterations) options.extra["iterations"] = std::to_string(*spec.iterations);
+    return options;
+}
+
+// A short run on a separate solver before the timed one, so that the timed run does not pay
+// for first-touch page faults, lazy initialisation (OpenCL program builds) or cold caches.
+double warm_up(const Scene& scene, const BackendInfo& backend, const CaseSpec& spec,
+               const ParticleState<double>& initial, double fraction) {
+    if (fraction <= 0) return 0;
+    const auto start = std::chrono::steady_clock::now();
+    auto solver = backend.create(options_for(spec));
+    solver->load(scene, initial);
+    const double dt = scene.run.dt;
+    const double t = std::max(dt, std::round(fraction * scene.run.duration / dt) * dt);
+    solver->advance_to(std::min(t, scene.run.duration));
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::map<std::string, std::string> file_attributes(const Scene& scene, const CaseSpec& spec,
+                                                   const Solver& solver) {
+    auto attributes = build_provenance();
+    for (const auto& [k, v] : solver.provenance()) attributes["backend_" + k] = v;
+    attributes["backend"] = spec.backend;
+    attributes["case_id"] = spec.id;
+    attributes["scene_name"] = scene.name;
+    attributes["scene_path"] = scene.source_path;
+    attributes["scene_text"] = scene.source_text;
+    attributes["seed"] = std::to_string(scene.seed);
+    attributes["dt"] = std::to_string(scene.run.dt);
+    attributes["substeps"] = std::to_string(scene.run.substeps);
+    attributes["command_line"] = command_line();
+    return attributes;
+}
+
+void measure(const CaseSpec& spec, const CaseContext& ctx, CaseResult& result) {
+    const Suite& suite = *ctx.suite;
+    const SuiteScene& entry = suite.scenes[spec.scene_index];
+    const Scene scene = case_scene(*ctx.scene, entry, spec);
+    result.duration = scene.run.duration;
+    result.dt = scene.run.dt;
+    result.substeps = scene.run.substeps;
+    const ParticleState<double> initial = generate_initial_state(scene);
+    result.disks = initial.size();
+    for (std::size_t i = 0; i < initial.size(); ++i)
+        if (!initial.is_stone(i)) result.total_mass += initial.mass[i];
+    result.initial = snapshot_of(initial);
+
+    result.warmup_seconds = warm_up(scene, *ctx.backend, spec, initial, suite.warmup_fraction);
+
+    std::unique_ptr<RunWriter> writer;
+    if (suite.output.hdf5) {
+        std::filesystem::create_directories(ctx.output_dir + "/runs");
+        result.hdf5_file = "runs/" + spec.id + ".h5";
+        writer = std::make_unique<RunWriter>(ctx.output_dir + "/" + result.hdf5_file, suite.output.frames);
+    }
+    const bool record_trajectory = initial.size() <= suite.output.max_trajectory_disks;
+    RunOptions options;
+    options.writer = writer.get();
+    options.on_state = [&](const ParticleState<double>& state, const Metrics& m) {
+        append(result.series, m);
+        if (record_trajectory) {
+            result.trajectory_time.push_back(m.time);
+            result.trajectory.push_back(snapshot_of(state));
+        }
+        // Equilibrium observables from the second half only: the first half is the approach
+        // to equilibrium from the generated initial state.
+        if (entry.comparison == Comparison::statistics && m.time >= 0.5 * scene.run.duration && m.nonfinite == 0)
+            result.compressibility.push_back(compressibility_factor(scene, state));
+    };
+    auto solver = ctx.backend->create(options_for(spec));
+    try {
+        const RunResult run = run_scene(scene, *solver, initial, options);
+        result.wall_seconds = run.wall_seconds;
+        result.steps = run.stats.steps;
+        result.contacts = run.stats.contacts;
+        result.phase_seconds = run.stats.phase_seconds;
+        result.counters = run.stats.counters;
+        result.final_state = snapshot_of(run.final_state);
+        auto depths = overlap_depths(scene, run.final_state);
+        if (depths.size() > suite.output.max_overlap_samples) depths.resize(suite.output.max_overlap_samples);
+        result.overlap_depths = std::move(depths);
+    } catch (const std::exception& e) {
+        // The metrics up to the failure are kept (they show how it went wrong).
+        result.status = RunStatus::error;
+        result.diagnostic = e.what();
+        const SolverStats stats = solver->stats();
+        result.steps = stats.steps;
+        result.contacts = stats.contacts;
+    }
+    result.provenance = solver->provenance();
+    if (writer) {
+        writer->write_attributes(file_attributes(scene, spec, *solver));
+        writer->commit();
+    }
+}
+
+}  // namespace
+
+CaseResult execute_case(const CaseSpec& spec, const CaseContext& ctx) {
+    CaseResult result;
+    result.spec = spec;
+    if (!spec.left_out.empty()) {
+        result.status = RunStatus::left_out;
+        result.diagnostic = spec.left_out;
+        return result;
+    }
+    try {
+        measure(spec, ctx, result);
+    } catch (const std::exception& e) {
+        result.status = RunStatus::error;
+        result.diagnostic = e.what();
+    }
+    return result;
+}
+
+}  // namespace collide::validation

@@ -1,0 +1,139 @@
+#include "case_isolation.h"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <thread>
+
+namespace collide::validation {
+
+std::string result_path(const std::string& result_dir, const std::string& id) {
+    return result_dir + "/" + id + ".toml";
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Child {
+    CaseSpec spec;
+    Clock::time_point start;
+    bool killed_for_time = false;
+};
+
+// The last lines a child printed: usually the sanitizer report or the abort message.
+std::string log_tail(const std::string& path, std::size_t max_chars = 1500) {
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string s = text.str();
+    if (s.size() > max_chars) s = "..." + s.substr(s.size() - max_chars);
+    return s;
+}
+
+[[noreturn]] void child_main(const CaseSpec& spec, const IsolationOptions& options,
+                             const std::function<CaseResult(const CaseSpec&)>& run_case) {
+    // The child's output goes to its own log so that parallel cases do not interleave.
+    const std::string log = options.result_dir + "/" + spec.id + ".log";
+    const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd >= 0) {
+        ::dup2(fd, STDOUT_FILENO);
+        ::dup2(fd, STDERR_FILENO);
+        ::close(fd);
+    }
+    int code = 0;
+    try {
+        CaseResult result = run_case(spec);
+        write_case_result(result, result_path(options.result_dir, spec.id));
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "case %s: %s\n", spec.id.c_str(), e.what());
+        code = 3;
+    }
+    std::fflush(nullptr);
+    // _exit: the child must not run the parent's atexit handlers or flush its stdio buffers twice.
+    ::_exit(code);
+}
+
+CaseResult death_result(const Child& child, int wait_status, const IsolationOptions& options) {
+    const std::string path = result_path(options.result_dir, child.spec.id);
+    const std::string log = options.result_dir + "/" + child.spec.id + ".log";
+    if (!child.killed_for_time && WIFEXITED(wait_status) && WEXITSTATUS(wait_status) == 0 &&
+        std::filesystem::exists(path)) {
+        try {
+            return read_case_result(path);
+        } catch (const std::exception& e) {
+            CaseResult r;
+            r.spec = child.spec;
+            r.status = RunStatus::crashed;
+            r.diagnostic = e.what();
+            return r;
+        }
+    }
+    CaseResult r;
+    r.spec = child.spec;
+    std::ostringstream why;
+    if (child.killed_for_time) {
+        r.status = RunStatus::timed_out;
+        why << "killed after the time limit of " << options.time_limit_seconds << " s";
+    } else if (WIFSIGNALED(wait_status)) {
+        r.status = RunStatus::crashed;
+        why << "killed by signal " << WTERMSIG(wait_status) << " (" << strsignal(WTERMSIG(wait_status)) << ")";
+    } else {
+        r.status = RunStatus::crashed;
+        why << "exited with status " << (WIFEXITED(wait_status) ? WEXITSTATUS(wait_status) : -1)
+            << " without a result";
+    }
+    const std::string tail = log_tail(log);
+    if (!tail.empty()) why << "; last output:\n" << tail;
+    r.diagnostic = why.str();
+    // The parent records the death, so --resume will not mistake the case for finished work
+    // of a previous run that was never judged.
+    write_case_result(r, path);
+    return r;
+}
+
+}  // namespace
+
+void run_isolated(const std::vector<CaseSpec>& specs, const IsolationOptions& options,
+                  const std::function<CaseResult(const CaseSpec&)>& run_case,
+                  const std::function<void(const CaseResult&)>& on_done) {
+    std::filesystem::create_directories(options.result_dir);
+    std::map<pid_t, Child> running;
+    std::size_t next = 0;
+    const auto limit = std::chrono::duration<double>(options.time_limit_seconds);
+    while (next < specs.size() || !running.empty()) {
+        while (next < specs.size() && running.size() < std::size_t(std::max(1, options.jobs))) {
+            const CaseSpec& spec = specs[next++];
+            std::filesystem::remove(result_path(options.result_dir, spec.id));
+            std::fflush(nullptr);  // or the child would print the parent's buffered output again
+            const pid_t pid = ::fork();
+            if (pid < 0) throw std::runtime_error(std::string("fork failed: ") + std::strerror(errno));
+            if (pid == 0) child_main(spec, options, run_case);
+            running[pid] = Child{spec, Clock::now()};
+        }
+        int status = 0;
+        const pid_t done = ::waitpid(-1, &status, WNOHANG);
+        if (done > 0 && running.count(done)) {
+            const Child child = running[done];
+            running.erase(done);
+            on_done(death_result(child, status, options));
+            continue;
+        }
+        for (auto& [pid, child] : running)
+            if (!child.killed_for_time && Clock::now() - child.start > limit) {
+                child.killed_for_time = true;
+                ::kill(pid, SIGKILL);
+            }
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+}
+
+}  // namespace collide::validation

@@ -1,0 +1,29 @@
+// Runs each case in its own child process (fork), up to `jobs` at a time, so that a case that
+// crashes (segfault, abort), hangs past the time limit or throws is recorded as failed with
+// its diagnostic while the others go on. The child writes its CaseResult to a file and exits;
+// the parent reads the file back, or writes a result describing how the child died.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "case_result.h"
+
+namespace collide::validation {
+
+struct IsolationOptions {
+    int jobs = 1;
+    double time_limit_seconds = 120;
+    std::string result_dir;  // <id>.toml (result) and <id>.log (the child's stdout and stderr)
+};
+
+// Runs `run_case` for every spec in a child process; calls `on_done` in the parent (in
+// completion order) with each result. `run_case` runs only in children.
+void run_isolated(const std::vector<CaseSpec>& specs, const IsolationOptions& options,
+                  const std::function<CaseResult(const CaseSpec&)>& run_case,
+                  const std::function<void(const CaseResult&)>& on_done);
+
+std::string result_path(const std::string& result_dir, const std::string& id);
+
+}  // namespace collide::validation

@@ -1,0 +1,40 @@
+// The cases of a suite: every scene x backend x sweep point x replicate seed, each with a
+// stable id (used for file names, --resume and the report). The reference backend (event)
+// has no time step, so it runs once per scene and seed whatever the sweep.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/backend_registry.h"
+#include "suite.h"
+
+namespace collide::validation {
+
+struct CaseSpec {
+    std::string id;                 // e.g. "gas_small__step__dt0.001__sub1__seed2"
+    std::size_t scene_index = 0;    // into Suite::scenes
+    std::string scene;              // scene name
+    std::string backend;
+    bool reference = false;         // this is the suite's reference backend
+    std::optional<double> dt;       // overrides of the scene for this sweep point
+    std::optional<int> substeps;
+    std::optional<int> iterations;
+    std::uint64_t seed = 1;
+    std::string left_out;           // non-empty: the backend refused the scene, with its reason
+};
+
+// The backends a suite asks for, found in `available` (`"all"` = every one of them, in order).
+// Throws SuiteError naming the suite file and the unknown backend.
+std::vector<const BackendInfo*> select_backends(const Suite& suite, const std::vector<BackendInfo>& available);
+
+// Expands a suite; `scenes` are the loaded scenes, parallel to suite.scenes.
+std::vector<CaseSpec> plan_cases(const Suite& suite, const std::vector<Scene>& scenes,
+                                 const std::vector<const BackendInfo*>& backends);
+
+// The scene as this case runs it: the case's seed, dt, substeps and the suite's overrides.
+Scene case_scene(const Scene& scene, const SuiteScene& entry, const CaseSpec& spec);
+
+}  // namespace collide::validation

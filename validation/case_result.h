@@ -1,0 +1,65 @@
+// CaseResult: what one case measured, written by the process that ran it and read back by
+// the runner (cases/<id>.toml). It holds measurements only; the judgement (checks against
+// tolerances) is made afterwards by checks.h, so every case is judged the same way, crashed
+// ones included.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "case_plan.h"
+
+namespace collide::validation {
+
+enum class RunStatus {
+    completed,  // ran to the end
+    left_out,   // the backend refused the scene (reason in `diagnostic`)
+    error,      // threw an exception (including NaN/Inf detected by run_scene)
+    crashed,    // the process died (signal or exit without a result)
+    timed_out,  // killed after the suite's time limit
+};
+const char* to_string(RunStatus s);
+RunStatus run_status_from_string(const std::string& s);
+
+// Metrics at every output time, as columns.
+struct MetricSeries {
+    std::vector<double> time, kinetic_energy, total_energy, momentum_x, momentum_y;
+    std::vector<double> max_overlap, mean_overlap, overlapping_pairs, wall_penetration, nonfinite;
+    std::size_t size() const { return time.size(); }
+};
+
+struct Snapshot {  // positions and radii, for pictures and trajectory comparison
+    std::vector<double> x, y, vx, vy, radius;
+};
+
+struct CaseResult {
+    CaseSpec spec;
+    RunStatus status = RunStatus::completed;
+    std::string diagnostic;        // the error message, signal or left-out reason
+    std::size_t disks = 0;
+    double total_mass = 0;         // of the mobile disks (scales the momentum drift)
+    double duration = 0;           // simulated time
+    double dt = 0;                 // the time step the case ran with (scene's or the sweep's)
+    int substeps = 1;
+    double wall_seconds = 0;       // in advance_to() only, after the warm-up
+    double warmup_seconds = 0;
+    std::int64_t steps = 0, contacts = 0;
+    std::map<std::string, double> phase_seconds, counters;
+    std::map<std::string, std::string> provenance;  // the solver's own (device, build options)
+    MetricSeries series;
+    Snapshot initial, final_state;
+    std::vector<double> trajectory_time;       // output times of the recorded trajectory
+    std::vector<Snapshot> trajectory;          // positions at those times (few-body scenes only)
+    std::vector<double> overlap_depths;        // relative depths of overlapping pairs, final state
+    std::vector<double> compressibility;       // Z = P/(rho kT) per snapshot in the second half
+    std::string hdf5_file;                     // relative to the output directory, "" if none
+
+    bool finished() const { return status == RunStatus::completed; }
+};
+
+void write_case_result(const CaseResult& result, const std::string& path);  // atomic (rename)
+CaseResult read_case_result(const std::string& path);                       // throws on bad files
+
+}  // namespace collide::validation

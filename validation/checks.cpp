@@ -1,0 +1,130 @@
+#include "checks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace collide::validation {
+
+const char* to_string(CheckStatus s) {
+    switch (s) {
+        case CheckStatus::pass: return "pass";
+        case CheckStatus::fail: return "fail";
+        default: return "left_out";
+    }
+}
+
+std::string group_id(const CaseSpec& spec) {
+    const auto at = spec.id.rfind("__seed");
+    return at == std::string::npos ? spec.id : spec.id.substr(0, at);
+}
+
+namespace {
+
+double max_of(const std::vector<double>& v) {
+    double m = 0;
+    for (double x : v) m = std::max(m, x);  // NaN never wins; the run check catches NaN
+    return m;
+}
+
+class CaseChecker {
+public:
+    CaseChecker(const CaseResult& r, std::vector<CheckResult>& out) : r_(r), out_(out) {}
+
+    void left_out(const std::string& check, const std::string& reason) {
+        out_.push_back(base(check, CheckStatus::left_out, 0, 0, reason));
+    }
+
+    void at_most(const std::string& check, double value, double tolerance, const std::string& what) {
+        const bool ok = value <= tolerance;  // NaN fails
+        std::ostringstream detail;
+        if (!ok) detail << what << " = " << value << " exceeds the tolerance " << tolerance;
+        out_.push_back(base(check, ok ? CheckStatus::pass : CheckStatus::fail, value, tolerance, detail.str()));
+    }
+
+private:
+    CheckResult base(const std::string& check, CheckStatus status, double value, double tolerance,
+                     const std::string& detail) const {
+        CheckResult c;
+        c.subject = r_.spec.id;
+        c.scene = r_.spec.scene;
+        c.backend = r_.spec.backend;
+        c.check = check;
+        c.status = status;
+        c.value = value;
+        c.tolerance = tolerance;
+        c.detail = detail;
+        return c;
+    }
+    const CaseResult& r_;
+    std::vector<CheckResult>& out_;
+};
+
+// max_t |P(t) - P(0)| scaled by sqrt(2 M K(0)), the momentum the whole mobile mass would have
+// at the rms speed (the total momentum itself is often zero, so it cannot be the scale).
+double momentum_drift(const CaseResult& r) {
+    const MetricSeries& m = r.series;
+    const double scale = std::sqrt(2 * r.total_mass * m.kinetic_energy.front());
+    double drift = 0;
+    for (std::size_t k = 0; k < m.size(); ++k)
+        drift = std::max(drift, std::hypot(m.momentum_x[k] - m.momentum_x[0], m.momentum_y[k] - m.momentum_y[0]));
+    return scale > 0 ? drift / scale : drift;
+}
+
+// max_t |E(t) - E(0)| scaled by the largest kinetic energy seen (under gravity the potential
+// energy has an arbitrary zero, so E(0) itself is no scale).
+double energy_drift(const CaseResult& r, EnergyKind kind) {
+    const MetricSeries& m = r.series;
+    const auto& e = kind == EnergyKind::total ? m.total_energy : m.kinetic_energy;
+    const double scale = max_of(m.kinetic_energy);
+    double drift = 0;
+    for (double x : e) drift = std::max(drift, std::fabs(x - e.front()));
+    return scale > 0 ? drift / scale : drift;
+}
+
+}  // namespace
+
+std::vector<CheckResult> case_checks(const CaseResult& r, const SceneFeatures& f, const Tolerances& tol) {
+    std::vector<CheckResult> out;
+    CaseChecker c(r, out);
+    const std::vector<std::string> per_case = {"momentum_drift", "energy_drift", "max_overlap", "mean_overlap",
+                                               "overlapping_pairs", "wall_penetration"};
+    if (r.status == RunStatus::left_out) {
+        c.left_out("run", "backend cannot run this scene: " + r.diagnostic);
+        for (const auto& name : per_case) c.left_out(name, "case left out: backend cannot run this scene");
+        return out;
+    }
+    if (!r.finished() || r.series.size() == 0) {
+        CheckResult fail;
+        fail.subject = r.spec.id;
+        fail.scene = r.spec.scene;
+        fail.backend = r.spec.backend;
+        fail.check = "run";
+        fail.status = CheckStatus::fail;
+        fail.detail = std::string(to_string(r.status)) + ": " + r.diagnostic;
+        out.push_back(fail);
+        for (const auto& name : per_case) c.left_out(name, "not evaluated: the run did not finish");
+        return out;
+    }
+    c.at_most("run", 0, 0, "run");
+
+    if (auto why = momentum_left_out(f)) c.left_out("momentum_drift", *why);
+    else c.at_most("momentum_drift", momentum_drift(r), tol.momentum_drift, "relative momentum drift");
+
+    const EnergyCheck energy = energy_check(f);
+    if (energy.kind == EnergyKind::none) c.left_out("energy_drift", energy.reason);
+    else c.at_most("energy_drift", energy_drift(r, energy.kind), tol.energy_drift,
+                   energy.kind == EnergyKind::total ? "relative total-energy drift" : "relative kinetic-energy drift");
+
+    c.at_most("max_overlap", max_of(r.series.max_overlap), tol.max_overlap, "maximum relative overlap depth");
+    c.at_most("mean_overlap", max_of(r.series.mean_overlap), tol.mean_overlap, "mean relative overlap depth");
+    const double disks = double(std::max<std::size_t>(1, r.disks));
+    c.at_most("overlapping_pairs", max_of(r.series.overlapping_pairs) / disks, tol.overlapping_pairs_per_disk,
+              "overlapping pairs per disk");
+    if (auto why = wall_penetration_left_out(f)) c.left_out("wall_penetration", *why);
+    else c.at_most("wall_penetration", max_of(r.series.wall_penetration), tol.wall_penetration,
+                   "maximum wall penetration / radius");
+    return out;
+}
+
+}  // namespace collide::validation

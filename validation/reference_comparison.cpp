@@ -1,0 +1,231 @@
+#include "reference_comparison.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "statistics.h"
+
+namespace collide::validation {
+
+double trajectory_error(const CaseResult& a, const CaseResult& ref, const Scene*) {
+    if (a.trajectory.empty() || a.trajectory.size() != ref.trajectory.size()) return std::nan("");
+    double r_min = std::numeric_limits<double>::infinity();
+    for (double r : ref.initial.radius) r_min = std::min(r_min, r);
+    double worst = 0;
+    for (std::size_t k = 0; k < a.trajectory.size(); ++k) {
+        const Snapshot& s = a.trajectory[k];
+        const Snapshot& t = ref.trajectory[k];
+        if (s.x.size() != t.x.size() || std::fabs(a.trajectory_time[k] - ref.trajectory_time[k]) > 1e-9)
+            return std::nan("");
+        for (std::size_t i = 0; i < s.x.size(); ++i) {
+            const double d = std::hypot(s.x[i] - t.x[i], s.y[i] - t.y[i]);
+            if (!(d <= worst)) worst = d;  // also carries a NaN through
+        }
+    }
+    return worst / r_min;
+}
+
+namespace {
+
+// The replicates of one sweep group and of the matching reference group.
+struct Group {
+    std::string id;
+    std::vector<const CaseResult*> cases;
+};
+
+CheckResult make_check(const Group& g, const std::string& check) {
+    CheckResult c;
+    c.subject = g.id;
+    c.scene = g.cases.front()->spec.scene;
+    c.backend = g.cases.front()->spec.backend;
+    c.check = check;
+    return c;
+}
+
+void judge_at_most(CheckResult& c, double value, double tolerance, const std::string& what) {
+    c.value = value;
+    c.tolerance = tolerance;
+    c.status = value <= tolerance ? CheckStatus::pass : CheckStatus::fail;
+    if (c.status == CheckStatus::fail) {
+        std::ostringstream s;
+        s << what << " = " << value << " exceeds the tolerance " << tolerance;
+        c.detail = s.str();
+    }
+}
+
+std::vector<double> replicate_values(const Group& g, double (*value)(const CaseResult&)) {
+    std::vector<double> out;
+    for (const CaseResult* r : g.cases)
+        if (r->finished()) out.push_back(value(*r));
+    return out;
+}
+
+double mean_compressibility(const CaseResult& r) { return mean_and_error(r.compressibility).mean; }
+double collision_rate(const CaseResult& r) {
+    // Each pair collision involves two disks: collisions per disk per time unit.
+    return r.disks && r.duration > 0 ? 2.0 * double(r.contacts) / (double(r.disks) * r.duration) : std::nan("");
+}
+
+std::vector<double> pooled_speeds(const Group& g) {
+    std::vector<double> out;
+    for (const CaseResult* r : g.cases)
+        if (r->finished())
+            for (std::size_t i = 0; i < r->final_state.vx.size(); ++i)
+                out.push_back(std::hypot(r->final_state.vx[i], r->final_state.vy[i]));
+    return out;
+}
+
+void z_check(CheckResult& c, const Group& g, const Group& ref, double (*value)(const CaseResult&),
+             double z_max, const std::string& what) {
+    const auto a = mean_and_error(replicate_values(g, value));
+    const auto b = mean_and_error(replicate_values(ref, value));
+    if (a.count < 2 || b.count < 2) {
+        c.status = CheckStatus::left_out;
+        c.detail = "needs at least 2 finished replicates on both sides for an error bar";
+        return;
+    }
+    std::ostringstream s;
+    s << what << " " << a.mean << " +- " << a.standard_error << " vs reference " << b.mean << " +- "
+      << b.standard_error;
+    judge_at_most(c, z_score(a, b), z_max, "z-score");
+    c.detail = c.status == CheckStatus::fail ? c.detail + " (" + s.str() + ")" : s.str();
+}
+
+}  // namespace
+
+Comparisons compare_with_reference(const Suite& suite, const std::vector<CaseResult>& results,
+                                   const std::vector<SceneFeatures>& features,
+                                   const std::map<std::string, Tolerances>& tolerances) {
+    Comparisons out;
+    // Groups in first-seen order, so the report follows the suite's order.
+    std::vector<Group> groups;
+    for (const CaseResult& r : results) {
+        const std::string id = group_id(r.spec);
+        auto it = std::find_if(groups.begin(), groups.end(), [&](const Group& g) { return g.id == id; });
+        if (it == groups.end()) groups.push_back({id, {&r}});
+        else it->cases.push_back(&r);
+    }
+    auto reference_group = [&](const std::string& scene) -> const Group* {
+        for (const Group& g : groups)
+            if (g.cases.front()->spec.scene == scene && g.cases.front()->spec.reference) return &g;
+        return nullptr;
+    };
+    std::map<std::pair<std::string, std::string>, WorkPrecisionLine> lines;
+    std::vector<std::pair<std::string, std::string>> line_order;
+
+    for (const Group& g : groups) {
+        const CaseSpec& spec = g.cases.front()->spec;
+        const SuiteScene& entry = suite.scenes[spec.scene_index];
+        if (entry.comparison == Comparison::none || spec.reference) continue;
+        const Tolerances& tol = tolerances.at(spec.backend);
+        const Group* ref = reference_group(spec.scene);
+        const bool left_out_case = g.cases.front()->status == RunStatus::left_out;
+        const std::vector<std::string> names = entry.comparison == Comparison::trajectory
+            ? std::vector<std::string>{"trajectory_error"}
+            : std::vector<std::string>{"pressure", "collision_rate", "speed_distribution"};
+        std::string skip;
+        if (left_out_case) skip = "case left out: backend cannot run this scene";
+        else if (!ref) skip = "the reference backend '" + suite.reference + "' is not part of this run";
+        else if (ref->cases.front()->status == RunStatus::left_out)
+            skip = "the reference backend cannot run this scene: " + ref->cases.front()->diagnostic;
+        if (!skip.empty()) {
+            for (const auto& n : names) {
+                CheckResult c = make_check(g, n);
+                c.detail = skip;
+                out.checks.push_back(c);
+            }
+            continue;
+        }
+
+        // Work-precision point of this group: its mean run time and mean error.
+        WorkPrecisionPoint point;
+        point.group = g.id;
+        point.dt = g.cases.front()->dt;
+        point.substeps = g.cases.front()->substeps;
+        point.iterations = spec.iterations.value_or(0);
+        std::vector<double> seconds, errors;
+
+        if (entry.comparison == Comparison::trajectory) {
+            double worst = 0;
+            for (const CaseResult* r : g.cases) {
+                const CaseResult* partner = nullptr;
+                for (const CaseResult* q : ref->cases)
+                    if (q->spec.seed == r->spec.seed) partner = q;
+                double e = std::nan("");
+                if (r->finished() && partner && partner->finished()) e = trajectory_error(*r, *partner);
+                if (!(e <= worst)) worst = e;
+                if (r->finished() && std::isfinite(e)) {
+                    seconds.push_back(r->wall_seconds / r->duration);
+                    errors.push_back(e);
+                }
+            }
+            CheckResult c = make_check(g, "trajectory_error");
+            if (std::isnan(worst)) {
+                c.status = CheckStatus::fail;
+                c.value = worst;
+                c.tolerance = tol.trajectory_error;
+                c.detail = "no comparable trajectory (the case or its reference did not finish, or too many disks to record)";
+            } else {
+                judge_at_most(c, worst, tol.trajectory_error, "maximum position error / r_min");
+            }
+            out.checks.push_back(c);
+        } else {
+            CheckResult pressure = make_check(g, "pressure");
+            if (auto why = pressure_left_out(features[spec.scene_index])) pressure.detail = *why;
+            else z_check(pressure, g, *ref, mean_compressibility, tol.statistics_z, "Z = P/(rho kT)");
+            out.checks.push_back(pressure);
+            CheckResult rate = make_check(g, "collision_rate");
+            z_check(rate, g, *ref, collision_rate, tol.statistics_z, "collisions per disk per time");
+            out.checks.push_back(rate);
+            CheckResult speed = make_check(g, "speed_distribution");
+            const auto ks = ks_two_sample(pooled_speeds(g), pooled_speeds(*ref));
+            speed.value = ks.p_value;
+            speed.tolerance = tol.speed_ks_p_value;
+            speed.comparison = ">=";
+            speed.status = ks.p_value >= tol.speed_ks_p_value ? CheckStatus::pass : CheckStatus::fail;
+            std::ostringstream s;
+            s << "KS statistic D = " << ks.statistic << ", p = " << ks.p_value;
+            speed.detail = speed.status == CheckStatus::pass ? s.str() : s.str() + " below " + std::to_string(tol.speed_ks_p_value);
+            out.checks.push_back(speed);
+            const double z_ref = mean_and_error(replicate_values(*ref, mean_compressibility)).mean;
+            for (const CaseResult* r : g.cases)
+                if (r->finished() && std::isfinite(z_ref) && z_ref != 0) {
+                    seconds.push_back(r->wall_seconds / r->duration);
+                    errors.push_back(std::fabs(mean_compressibility(*r) - z_ref) / z_ref);
+                }
+        }
+        if (!errors.empty()) {
+            const auto e = mean_and_error(errors);
+            point.error = e.mean;
+            point.error_standard_error = e.standard_error;
+            point.seconds_per_time_unit = mean_and_error(seconds).mean;
+            point.replicates = errors.size();
+            const auto key = std::make_pair(spec.scene, spec.backend);
+            if (!lines.count(key)) {
+                line_order.push_back(key);
+                lines[key] = {spec.scene, spec.backend,
+                              entry.comparison == Comparison::trajectory ? "trajectory error / r_min"
+                                                                         : "|Z - Z_ref| / Z_ref",
+                              {}, std::nullopt, ""};
+            }
+            lines[key].points.push_back(point);
+        }
+    }
+    for (const auto& key : line_order) {
+        WorkPrecisionLine line = lines[key];
+        std::vector<double> h, e;
+        for (const auto& p : line.points) {
+            // The rule's effective step is dt / substeps (the integrate-first rule sub-steps).
+            h.push_back(p.dt / std::max(1, p.substeps));
+            e.push_back(p.error);
+        }
+        if (auto fit = log_log_fit(h, e, 3)) line.order = fit->slope;
+        else line.order_note = "needs at least 3 sweep points with distinct steps and non-zero error";
+        out.work_precision.push_back(line);
+    }
+    return out;
+}
+
+}  // namespace collide::validation

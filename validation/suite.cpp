@@ -1,0 +1,219 @@
+#include "suite.h"
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <toml++/toml.h>
+
+namespace collide::validation {
+
+const char* to_string(Comparison c) {
+    switch (c) {
+        case Comparison::trajectory: return "trajectory";
+        case Comparison::statistics: return "statistics";
+        default: return "none";
+    }
+}
+
+namespace {
+
+// Reads keys of one TOML table and reports every problem as "file:line: key: expected ...".
+class TableReader {
+public:
+    TableReader(const toml::table& table, std::string file, std::string where)
+        : table_(table), file_(std::move(file)), where_(std::move(where)) {}
+
+    [[noreturn]] void fail(const std::string& key, const std::string& expected) const {
+        std::ostringstream msg;
+        msg << file_;
+        const toml::node* node = table_.get(key);
+        const auto& source = node ? node->source() : table_.source();
+        if (source.begin.line) msg << ":" << source.begin.line;
+        msg << ": " << where_ << (where_.empty() ? "" : ".") << key << ": expected " << expected;
+        throw SuiteError(msg.str());
+    }
+
+    std::optional<std::string> string(const std::string& key) const {
+        const toml::node* node = table_.get(key);
+        if (!node) return std::nullopt;
+        if (!node->is_string()) fail(key, "a string");
+        return node->value<std::string>();
+    }
+
+    std::optional<double> positive(const std::string& key) const {
+        const toml::node* node = table_.get(key);
+        if (!node) return std::nullopt;
+        const auto v = node->value<double>();
+        if (!v || !(*v > 0)) fail(key, "a positive number");
+        return v;
+    }
+
+    std::optional<bool> boolean(const std::string& key) const {
+        const toml::node* node = table_.get(key);
+        if (!node) return std::nullopt;
+        if (!node->is_boolean()) fail(key, "true or false");
+        return node->value<bool>();
+    }
+
+    template <typename T>
+    std::vector<T> positive_array(const std::string& key, const std::string& what) const {
+        std::vector<T> out;
+        const toml::node* node = table_.get(key);
+        if (!node) return out;
+        const toml::array* array = node->as_array();
+        if (!array || array->empty()) fail(key, "a non-empty array of " + what);
+        for (const auto& element : *array) {
+            const auto v = element.value<T>();
+            if (!v || !(*v > 0)) fail(key, "an array of " + what);
+            if constexpr (std::is_floating_point_v<T>) {
+                if (!element.is_number()) fail(key, "an array of " + what);
+            } else if (!element.is_integer()) {
+                fail(key, "an array of " + what);
+            }
+            out.push_back(*v);
+        }
+        return out;
+    }
+
+    void only(const std::set<std::string>& allowed) const {
+        for (const auto& [key, node] : table_) {
+            if (allowed.count(std::string(key.str()))) continue;
+            std::string list;
+            for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
+            fail(std::string(key.str()), "no such key here (allowed: " + list + ")");
+        }
+    }
+
+private:
+    const toml::table& table_;
+    std::string file_;
+    std::string where_;
+};
+
+void read_tolerances(const toml::table& root, const std::string& file, ToleranceTable& out) {
+    const toml::node* node = root.get("tolerances");
+    if (!node) return;
+    const toml::table* table = node->as_table();
+    if (!table) TableReader(root, file, "").fail("tolerances", "a table of [tolerances.<backend>] tables");
+    for (const auto& [backend, sub] : *table) {
+        const std::string name(backend.str());
+        const toml::table* limits = sub.as_table();
+        if (!limits) TableReader(*table, file, "tolerances").fail(name, "a table of check = limit");
+        auto& target = name == "default" ? out.all_backends : out.per_backend[name];
+        for (const auto& [key, value] : *limits) {
+            const std::string k(key.str());
+            TableReader reader(*limits, file, "tolerances." + name);
+            Tolerances probe;
+            try {
+                tolerance_field(probe, k);
+            } catch (const std::invalid_argument& e) {
+                reader.fail(k, std::string("a known check name (") + e.what() + ")");
+            }
+            const auto v = value.value<double>();
+            if (!v || !(*v >= 0)) reader.fail(k, "a non-negative number");
+            target[k] = *v;
+        }
+    }
+}
+
+SuiteScene read_scene(const toml::table& t, const std::string& file, int index, const std::string& dir,
+                      const std::string& scene_dir) {
+    TableReader r(t, file, "[[scene]] #" + std::to_string(index));
+    r.only({"name", "path", "compare", "dt", "substeps", "iterations", "seeds", "duration", "output_interval"});
+    SuiteScene s;
+    const auto name = r.string("name");
+    const auto path = r.string("path");
+    if (!name && !path) r.fail("name", "the scene's name (a file in the scene directory) or a path");
+    namespace fs = std::filesystem;
+    fs::path file_path = path ? fs::path(*path) : fs::path(scene_dir) / (*name + ".toml");
+    if (file_path.is_relative()) file_path = fs::path(dir) / file_path;
+    file_path = file_path.lexically_normal();
+    if (!fs::exists(file_path))
+        r.fail(path ? "path" : "name", "an existing scene file (" + file_path.string() + " does not exist)");
+    s.path = file_path.string();
+    s.name = name ? *name : file_path.stem().string();
+    const std::string compare = r.string("compare").value_or("none");
+    if (compare == "trajectory") s.comparison = Comparison::trajectory;
+    else if (compare == "statistics") s.comparison = Comparison::statistics;
+    else if (compare != "none") r.fail("compare", "\"trajectory\", \"statistics\" or \"none\"");
+    s.dt = r.positive_array<double>("dt", "positive time steps");
+    s.substeps = r.positive_array<int>("substeps", "positive integers");
+    s.iterations = r.positive_array<int>("iterations", "positive integers");
+    s.seeds = r.positive_array<std::uint64_t>("seeds", "positive integer seeds");
+    s.duration = r.positive("duration");
+    s.output_interval = r.positive("output_interval");
+    return s;
+}
+
+}  // namespace
+
+Suite parse_suite(const std::string& text, const std::string& file, const std::string& dir) {
+    toml::table root;
+    try {
+        root = toml::parse(text, file);
+    } catch (const toml::parse_error& e) {
+        std::ostringstream msg;
+        msg << file << ":" << e.source().begin.line << ": not valid TOML: " << e.description();
+        throw SuiteError(msg.str());
+    }
+    TableReader r(root, file, "");
+    r.only({"name", "description", "scene_dir", "backends", "reference", "seeds", "time_limit",
+            "warmup_fraction", "output", "tolerances", "scene"});
+    Suite suite;
+    suite.source_path = file;
+    suite.name = r.string("name").value_or(std::filesystem::path(file).stem().string());
+    suite.description = r.string("description").value_or("");
+    suite.reference = r.string("reference").value_or("event");
+    if (const toml::node* b = root.get("backends")) {
+        if (b->is_string() && b->value<std::string>() == "all") {
+            suite.backends = {"all"};
+        } else if (const toml::array* list = b->as_array(); list && !list->empty()) {
+            for (const auto& e : *list) {
+                if (!e.is_string()) r.fail("backends", "\"all\" or an array of backend names");
+                suite.backends.push_back(*e.value<std::string>());
+            }
+        } else {
+            r.fail("backends", "\"all\" or an array of backend names");
+        }
+    } else {
+        suite.backends = {"all"};
+    }
+    if (auto seeds = r.positive_array<std::uint64_t>("seeds", "positive integer seeds"); !seeds.empty())
+        suite.seeds = seeds;
+    suite.time_limit_seconds = r.positive("time_limit").value_or(suite.time_limit_seconds);
+    if (const toml::node* w = root.get("warmup_fraction")) {
+        const auto v = w->value<double>();
+        if (!v || *v < 0 || *v > 1) r.fail("warmup_fraction", "a number in [0, 1]");
+        suite.warmup_fraction = *v;
+    }
+    if (const toml::node* o = root.get("output")) {
+        if (!o->is_table()) r.fail("output", "a table");
+        TableReader out(*o->as_table(), file, "output");
+        out.only({"hdf5", "frames", "max_overlap_samples", "max_trajectory_disks"});
+        suite.output.hdf5 = out.boolean("hdf5").value_or(true);
+        suite.output.frames = out.boolean("frames").value_or(false);
+        if (auto v = out.positive("max_overlap_samples")) suite.output.max_overlap_samples = std::size_t(*v);
+        if (auto v = out.positive("max_trajectory_disks")) suite.output.max_trajectory_disks = std::size_t(*v);
+    }
+    read_tolerances(root, file, suite.tolerances);
+    const std::string scene_dir = r.string("scene_dir").value_or("../../data/scenes");
+    const toml::node* scenes = root.get("scene");
+    if (!scenes || !scenes->is_array_of_tables() || scenes->as_array()->empty())
+        r.fail("scene", "one or more [[scene]] tables");
+    int index = 0;
+    for (const auto& node : *scenes->as_array())
+        suite.scenes.push_back(read_scene(*node.as_table(), file, ++index, dir, scene_dir));
+    return suite;
+}
+
+Suite load_suite(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw SuiteError(path + ": cannot open the suite file");
+    std::stringstream text;
+    text << in.rdbuf();
+    const auto dir = std::filesystem::absolute(path).parent_path().string();
+    return parse_suite(text.str(), path, dir);
+}
+
+}  // namespace collide::validation

@@ -1,0 +1,71 @@
+// Suite: what a validation run does, as read from validation/suites/*.toml (format in
+// docs/validation.md). A suite names scenes, backends, parameter sweeps, replicate seeds,
+// tolerances and output options; case_plan.h expands it into the list of cases to run.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/scene.h"
+#include "tolerances.h"
+
+namespace collide::validation {
+
+// Thrown for any problem with a suite file; the message names the file, the key and what
+// was expected, e.g. "suites/x.toml: [[scene]] #2 .dt: expected an array of positive numbers".
+class SuiteError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// How the cases of one scene are compared with the reference backend.
+enum class Comparison {
+    none,        // only the per-case checks (conservation, overlaps)
+    trajectory,  // few bodies, short horizon: positions at every output time vs the reference
+    statistics,  // many bodies: observables averaged over replicates vs the reference
+};
+const char* to_string(Comparison c);
+
+struct SuiteScene {
+    std::string name;                 // scene file stem; also the name used in case ids
+    std::string path;                 // resolved scene file path ("" when `scene` is given)
+    std::optional<Scene> scene;       // a scene built in code (tests); overrides `path`
+    Comparison comparison = Comparison::none;
+    std::vector<double> dt;           // sweep; empty = the scene's own dt
+    std::vector<int> substeps;        // sweep; empty = the scene's own substeps
+    std::vector<int> iterations;      // sweep of a backend's solver iterations (box2d); empty = default
+    std::vector<std::uint64_t> seeds; // replicates; empty = the suite's seeds
+    std::optional<double> duration;   // overrides [run].duration of the scene
+    std::optional<double> output_interval;
+};
+
+struct OutputOptions {
+    bool hdf5 = true;                 // one HDF5 file per case (RunWriter)
+    bool frames = false;              // positions and velocities at every output time
+    std::size_t max_overlap_samples = 20000;  // overlap depths kept per case for histograms
+    std::size_t max_trajectory_disks = 64;    // record trajectories only up to this many disks
+};
+
+struct Suite {
+    std::string name;
+    std::string description;
+    std::string source_path;          // the suite file ("" when built in code)
+    std::vector<std::string> backends;  // names; {"all"} = every backend given to the runner
+    std::string reference = "event";  // the backend the comparisons are made against
+    std::vector<std::uint64_t> seeds = {1};
+    double time_limit_seconds = 120;  // per case; a case running longer is killed and fails
+    double warmup_fraction = 0.1;     // of the duration, run once before the timed run
+    OutputOptions output;
+    ToleranceTable tolerances;
+    std::vector<SuiteScene> scenes;
+};
+
+Suite load_suite(const std::string& path);
+// `source_dir` resolves relative scene paths (the suite file's directory).
+Suite parse_suite(const std::string& text, const std::string& source_name, const std::string& source_dir);
+
+}  // namespace collide::validation

@@ -1,0 +1,106 @@
+#include "suite_runner.h"
+
+#include <chrono>
+#include <filesystem>
+#include <map>
+
+#include "case_execution.h"
+#include "case_isolation.h"
+#include "core/scene_loader.h"
+#include "progress.h"
+#include "summary_writer.h"
+
+namespace collide::validation {
+
+std::size_t SuiteOutcome::count(CheckStatus s) const {
+    std::size_t n = 0;
+    for (const auto& c : checks) n += c.status == s;
+    return n;
+}
+
+namespace {
+
+std::vector<Scene> load_scenes(const Suite& suite) {
+    std::vector<Scene> scenes;
+    for (const SuiteScene& entry : suite.scenes) {
+        Scene scene = entry.scene ? *entry.scene : load_scene(entry.path);
+        if (scene.name.empty()) scene.name = entry.name;
+        scenes.push_back(std::move(scene));
+    }
+    return scenes;
+}
+
+// Cases that already have a readable result file from an earlier run (for --resume).
+std::map<std::string, CaseResult> finished_results(const std::vector<CaseSpec>& specs, const std::string& dir) {
+    std::map<std::string, CaseResult> done;
+    for (const CaseSpec& spec : specs) {
+        const std::string path = result_path(dir, spec.id);
+        if (!std::filesystem::exists(path)) continue;
+        try {
+            done.emplace(spec.id, read_case_result(path));
+        } catch (const std::exception&) {
+            // An unreadable result counts as not finished: the case runs again.
+        }
+    }
+    return done;
+}
+
+}  // namespace
+
+SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& available, const RunnerOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<const BackendInfo*> backends = select_backends(suite, available);
+    const std::vector<Scene> scenes = load_scenes(suite);  // bad scene files fail here, before any case
+    std::vector<SceneFeatures> features;
+    for (const auto& scene : scenes) features.push_back(scene_features(scene, generate_initial_state(scene)));
+    const std::vector<CaseSpec> specs = plan_cases(suite, scenes, backends);
+
+    std::filesystem::create_directories(options.output_dir);
+    const std::string result_dir = options.output_dir + "/cases";
+    std::map<std::string, CaseResult> results;
+    if (options.resume) results = finished_results(specs, result_dir);
+
+    SuiteOutcome outcome;
+    outcome.cases_resumed = results.size();
+    std::vector<CaseSpec> to_run;
+    for (const auto& spec : specs)
+        if (!results.count(spec.id)) to_run.push_back(spec);
+
+    std::map<std::string, const BackendInfo*> by_name;
+    for (const BackendInfo* b : backends) by_name[b->name] = b;
+    IsolationOptions isolation{options.jobs, suite.time_limit_seconds, result_dir};
+    auto run_case = [&](const CaseSpec& spec) {
+        CaseContext context{&suite, &scenes[spec.scene_index], by_name.at(spec.backend), options.output_dir};
+        return execute_case(spec, context);
+    };
+    std::unique_ptr<Progress> progress;
+    if (options.progress) progress = std::make_unique<Progress>(to_run.size(), options.progress, options.progress_is_terminal);
+    std::size_t done = 0, failed = 0;
+    run_isolated(to_run, isolation, run_case, [&](const CaseResult& r) {
+        ++done;
+        if (r.status != RunStatus::completed && r.status != RunStatus::left_out) ++failed;
+        results[r.spec.id] = r;
+        if (progress) progress->update(done, failed, r.spec.id);
+    });
+    if (progress) progress->finish();
+    outcome.cases_run = to_run.size();
+
+    // Judge every case in plan order, then the comparisons with the reference.
+    std::map<std::string, Tolerances> tolerances;
+    for (const BackendInfo* b : backends) tolerances[b->name] = suite.tolerances.for_backend(b->name, b->precision);
+    for (const CaseSpec& spec : specs) {
+        outcome.cases.push_back(results.at(spec.id));
+        const auto checks = case_checks(outcome.cases.back(), features[spec.scene_index], tolerances.at(spec.backend));
+        outcome.checks.insert(outcome.checks.end(), checks.begin(), checks.end());
+    }
+    Comparisons comparisons = compare_with_reference(suite, outcome.cases, features, tolerances);
+    outcome.checks.insert(outcome.checks.end(), comparisons.checks.begin(), comparisons.checks.end());
+    outcome.work_precision = std::move(comparisons.work_precision);
+    outcome.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    write_summary_json(suite, outcome, options.output_dir + "/summary.json");
+    write_junit_xml(suite, outcome, options.output_dir + "/junit.xml");
+    return outcome;
+}
+
+}  // namespace collide::validation

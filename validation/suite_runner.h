@@ -1,0 +1,46 @@
+// run_suite: the validation runner behind `collide validate`. Plans the cases, runs each in
+// an isolated child process, judges the results and writes the summary (summary.json), the
+// JUnit file (junit.xml) and one HDF5 file per case into the output directory:
+//
+//   <out>/summary.json     everything the report needs: cases, checks, work-precision, provenance
+//   <out>/junit.xml        one testcase per (case, check), for CI systems
+//   <out>/cases/<id>.toml  each case's measurements (read back by --resume and the report)
+//   <out>/cases/<id>.log   what the case's process printed
+//   <out>/runs/<id>.h5     each case's metrics and provenance (RunWriter)
+#pragma once
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "case_result.h"
+#include "checks.h"
+#include "core/backend_registry.h"
+#include "reference_comparison.h"
+#include "suite.h"
+
+namespace collide::validation {
+
+struct RunnerOptions {
+    std::string output_dir = "results";
+    int jobs = 1;
+    bool resume = false;            // keep every case that already has a result file
+    std::FILE* progress = nullptr;  // progress lines go here (nullptr: none)
+    bool progress_is_terminal = false;
+};
+
+struct SuiteOutcome {
+    std::vector<CaseResult> cases;
+    std::vector<CheckResult> checks;
+    std::vector<WorkPrecisionLine> work_precision;
+    std::size_t cases_run = 0, cases_resumed = 0;
+    double wall_seconds = 0;
+    std::size_t count(CheckStatus s) const;
+    bool passed() const { return count(CheckStatus::fail) == 0; }
+};
+
+// `backends` are the backends the suite may use (all_backends() in the program, test doubles
+// in tests). Throws SuiteError / SceneError for bad input before any case runs.
+SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& backends, const RunnerOptions& options);
+
+}  // namespace collide::validation

@@ -1,0 +1,197 @@
+#include "summary_writer.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "core/provenance.h"
+
+namespace collide::validation {
+namespace {
+
+std::string json_string(const std::string& s) {
+    std::string out = "\"";
+    for (unsigned char c : s) {
+        switch (c) {
+            case '"': out += "\\\""; break;
+            case '\\': out += "\\\\"; break;
+            case '\n': out += "\\n"; break;
+            case '\r': out += "\\r"; break;
+            case '\t': out += "\\t"; break;
+            default:
+                if (c < 0x20) {
+                    char buf[8];
+                    std::snprintf(buf, sizeof buf, "\\u%04x", c);
+                    out += buf;
+                } else {
+                    out += char(c);
+                }
+        }
+    }
+    return out + "\"";
+}
+
+// JSON has no NaN or Infinity: those become null (the report shows "n/a").
+std::string json_number(double v) {
+    if (!std::isfinite(v)) return "null";
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
+}
+
+// A JSON object written field by field.
+class Object {
+public:
+    Object& field(const std::string& key, const std::string& raw_json) {
+        text_ += (text_.empty() ? "" : ", ") + json_string(key) + ": " + raw_json;
+        return *this;
+    }
+    Object& text(const std::string& key, const std::string& v) { return field(key, json_string(v)); }
+    Object& number(const std::string& key, double v) { return field(key, json_number(v)); }
+    Object& integer(const std::string& key, long long v) { return field(key, std::to_string(v)); }
+    Object& boolean(const std::string& key, bool v) { return field(key, v ? "true" : "false"); }
+    std::string str() const { return "{" + text_ + "}"; }
+
+private:
+    std::string text_;
+};
+
+template <typename Range, typename ToJson>
+std::string array(const Range& items, ToJson&& to_json, const char* separator = ",\n  ") {
+    std::string out = "[";
+    bool first = true;
+    for (const auto& item : items) {
+        out += (first ? "" : separator) + to_json(item);
+        first = false;
+    }
+    return out + "]";
+}
+
+std::string string_map(const std::map<std::string, std::string>& m) {
+    Object o;
+    for (const auto& [k, v] : m) o.text(k, v);
+    return o.str();
+}
+
+std::string case_json(const CaseResult& r) {
+    Object o;
+    o.text("id", r.spec.id).text("scene", r.spec.scene).text("backend", r.spec.backend)
+        .boolean("reference", r.spec.reference).text("group", group_id(r.spec))
+        .integer("seed", (long long)r.spec.seed).number("dt", r.dt).integer("substeps", r.substeps)
+        .field("iterations", r.spec.iterations ? std::to_string(*r.spec.iterations) : "null")
+        .text("status", to_string(r.status)).text("diagnostic", r.diagnostic)
+        .integer("disks", (long long)r.disks).number("duration", r.duration)
+        .number("wall_seconds", r.wall_seconds).number("warmup_seconds", r.warmup_seconds)
+        .integer("steps", r.steps).integer("contacts", r.contacts)
+        .text("result_file", "cases/" + r.spec.id + ".toml").text("hdf5_file", r.hdf5_file)
+        .field("provenance", string_map(r.provenance));
+    Object phases;
+    for (const auto& [k, v] : r.phase_seconds) phases.number(k, v);
+    o.field("phase_seconds", phases.str());
+    return o.str();
+}
+
+std::string check_json(const CheckResult& c) {
+    Object o;
+    o.text("subject", c.subject).text("scene", c.scene).text("backend", c.backend).text("check", c.check)
+        .text("status", to_string(c.status)).number("value", c.value).number("tolerance", c.tolerance)
+        .text("comparison", c.comparison).text("detail", c.detail);
+    return o.str();
+}
+
+std::string line_json(const WorkPrecisionLine& line) {
+    Object o;
+    o.text("scene", line.scene).text("backend", line.backend).text("error_kind", line.error_kind)
+        .number("order", line.order ? *line.order : std::nan("")).text("order_note", line.order_note);
+    o.field("points", array(line.points, [](const WorkPrecisionPoint& p) {
+        Object q;
+        q.text("group", p.group).number("dt", p.dt).integer("substeps", p.substeps)
+            .integer("iterations", p.iterations).number("seconds_per_time_unit", p.seconds_per_time_unit)
+            .number("error", p.error).number("error_standard_error", p.error_standard_error)
+            .integer("replicates", (long long)p.replicates);
+        return q.str();
+    }, ", "));
+    return o.str();
+}
+
+void write_atomically(const std::string& path, const std::string& text) {
+    const std::string temporary = path + ".partial";
+    {
+        std::ofstream out(temporary);
+        out << text;
+        if (!out) throw std::runtime_error(temporary + ": cannot write");
+    }
+    std::filesystem::rename(temporary, path);
+}
+
+std::string xml_escape(const std::string& s) {
+    std::string out;
+    for (char c : s) {
+        switch (c) {
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '&': out += "&amp;"; break;
+            case '"': out += "&quot;"; break;
+            default: out += (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t') ? ' ' : c;
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+void write_summary_json(const Suite& suite, const SuiteOutcome& outcome, const std::string& path) {
+    Object counts;
+    counts.integer("pass", (long long)outcome.count(CheckStatus::pass))
+        .integer("fail", (long long)outcome.count(CheckStatus::fail))
+        .integer("left_out", (long long)outcome.count(CheckStatus::left_out));
+    std::map<std::string, std::string> seeds;
+    for (const auto& s : suite.scenes) {
+        std::string list;
+        for (auto seed : s.seeds.empty() ? suite.seeds : s.seeds) {
+            if (!list.empty()) list += ' ';
+            list += std::to_string(seed);
+        }
+        seeds[s.name] = list;
+    }
+    std::map<std::string, std::string> scene_files;
+    for (const auto& s : suite.scenes) scene_files[s.name] = s.path;
+    Object root;
+    root.text("suite", suite.name).text("description", suite.description).text("suite_file", suite.source_path)
+        .text("reference", suite.reference).boolean("passed", outcome.passed())
+        .number("wall_seconds", outcome.wall_seconds).integer("cases_run", (long long)outcome.cases_run)
+        .integer("cases_resumed", (long long)outcome.cases_resumed).field("counts", counts.str())
+        .field("provenance", string_map(build_provenance())).text("command_line", command_line())
+        .field("seeds", string_map(seeds)).field("scene_files", string_map(scene_files))
+        .field("cases", array(outcome.cases, case_json))
+        .field("checks", array(outcome.checks, check_json))
+        .field("work_precision", array(outcome.work_precision, line_json));
+    write_atomically(path, root.str() + "\n");
+}
+
+void write_junit_xml(const Suite& suite, const SuiteOutcome& outcome, const std::string& path) {
+    std::ostringstream x;
+    x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+    x << "<testsuites name=\"" << xml_escape(suite.name) << "\" tests=\"" << outcome.checks.size()
+      << "\" failures=\"" << outcome.count(CheckStatus::fail) << "\" skipped=\""
+      << outcome.count(CheckStatus::left_out) << "\" time=\"" << outcome.wall_seconds << "\">\n";
+    x << "  <testsuite name=\"" << xml_escape(suite.name) << "\" tests=\"" << outcome.checks.size()
+      << "\" failures=\"" << outcome.count(CheckStatus::fail) << "\" skipped=\""
+      << outcome.count(CheckStatus::left_out) << "\">\n";
+    for (const auto& c : outcome.checks) {
+        x << "    <testcase classname=\"" << xml_escape(c.subject) << "\" name=\"" << xml_escape(c.check) << "\"";
+        if (c.status == CheckStatus::pass) {
+            x << "/>\n";
+            continue;
+        }
+        x << ">\n      <" << (c.status == CheckStatus::fail ? "failure" : "skipped") << " message=\""
+          << xml_escape(c.detail) << "\"/>\n    </testcase>\n";
+    }
+    x << "  </testsuite>\n</testsuites>\n";
+    write_atomically(path, x.str());
+}
+
+}  // namespace collide::validation

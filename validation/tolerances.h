@@ -1,0 +1,44 @@
+// Tolerances: the limit each check compares its value against, per backend. The defaults
+// below are derived in docs/validation.md ("How each tolerance was derived"); a suite can
+// override any of them in [tolerances.default] or [tolerances.<backend>].
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace collide::validation {
+
+// One limit per check; every value is a bound on a dimensionless number (see the check list
+// in checks.h for what each one divides by).
+struct Tolerances {
+    double momentum_drift = 1e-9;
+    double energy_drift = 1e-9;
+    double max_overlap = 1e-9;
+    double mean_overlap = 1e-9;
+    double overlapping_pairs_per_disk = 0.01;
+    double wall_penetration = 1e-9;
+    double trajectory_error = 1e-6;   // in units of the smallest radius
+    double statistics_z = 4.0;        // |difference| / combined standard error
+    double speed_ks_p_value = 1e-3;   // two-sample Kolmogorov-Smirnov p-value must exceed this
+};
+
+// The names of the fields above, in order, as they appear in suite files.
+const std::vector<std::string>& tolerance_keys();
+double& tolerance_field(Tolerances& t, const std::string& key);  // throws on an unknown key
+double tolerance_value(const Tolerances& t, const std::string& key);
+
+// Defaults by backend name and precision, before any suite override: exact double (event),
+// stepped double (step), stepped float (cpu, opencl), the Box2D baseline.
+Tolerances default_tolerances(const std::string& backend, const std::string& precision);
+
+// [tolerances.default] and [tolerances.<backend>] of a suite: key -> value overrides.
+struct ToleranceTable {
+    std::map<std::string, double> all_backends;
+    std::map<std::string, std::map<std::string, double>> per_backend;
+
+    Tolerances for_backend(const std::string& backend, const std::string& precision) const;
+};
+
+}  // namespace collide::validation
