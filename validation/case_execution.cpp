@@ -11,6 +11,7 @@
 #include "core/scene_loader.h"
 #include "core/metrics.h"
 #include "observables.h"
+#include "phase_shift.h"
 
 namespace collide::validation {
 namespace {
@@ -66,6 +67,14 @@ std::map<std::string, std::string> file_attributes(const Scene& scene, const Cas
     return attributes;
 }
 
+// The generated state; for trajectory comparisons shifted to replicate `seed`'s collision
+// phase (phase_shift.h), identically for the reference and every tested backend.
+ParticleState<double> initial_state_of(const Scene& scene, const SuiteScene& entry, std::uint64_t seed) {
+    ParticleState<double> initial = generate_initial_state(scene);
+    if (entry.comparison == Comparison::trajectory) advance_free_flight(scene, initial, phase_shift(seed, scene.run.dt));
+    return initial;
+}
+
 void measure(const CaseSpec& spec, const CaseContext& ctx, CaseResult& result) {
     const Suite& suite = *ctx.suite;
     const SuiteScene& entry = suite.scenes[spec.scene_index];
@@ -73,7 +82,7 @@ void measure(const CaseSpec& spec, const CaseContext& ctx, CaseResult& result) {
     result.duration = scene.run.duration;
     result.dt = scene.run.dt;
     result.substeps = scene.run.substeps;
-    const ParticleState<double> initial = generate_initial_state(scene);
+    const ParticleState<double> initial = initial_state_of(scene, entry, spec.seed);
     result.disks = initial.size();
     for (std::size_t i = 0; i < initial.size(); ++i)
         if (!initial.is_stone(i)) result.total_mass += initial.mass[i];

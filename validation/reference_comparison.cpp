@@ -107,10 +107,17 @@ Comparisons compare_with_reference(const Suite& suite, const std::vector<CaseRes
         if (it == groups.end()) groups.push_back({id, {&r}});
         else it->cases.push_back(&r);
     }
+    // All reference cases of a scene as one group (trajectory scenes have one per dt).
+    std::map<std::string, Group> reference_groups;
+    for (const Group& g : groups) {
+        if (!g.cases.front()->spec.reference) continue;
+        Group& merged = reference_groups[g.cases.front()->spec.scene];
+        if (merged.id.empty()) merged.id = g.id;
+        merged.cases.insert(merged.cases.end(), g.cases.begin(), g.cases.end());
+    }
     auto reference_group = [&](const std::string& scene) -> const Group* {
-        for (const Group& g : groups)
-            if (g.cases.front()->spec.scene == scene && g.cases.front()->spec.reference) return &g;
-        return nullptr;
+        auto it = reference_groups.find(scene);
+        return it == reference_groups.end() ? nullptr : &it->second;
     };
     std::map<std::pair<std::string, std::string>, WorkPrecisionLine> lines;
     std::vector<std::pair<std::string, std::string>> line_order;
@@ -152,7 +159,7 @@ Comparisons compare_with_reference(const Suite& suite, const std::vector<CaseRes
             for (const CaseResult* r : g.cases) {
                 const CaseResult* partner = nullptr;
                 for (const CaseResult* q : ref->cases)
-                    if (q->spec.seed == r->spec.seed) partner = q;
+                    if (q->spec.seed == r->spec.seed && (!q->spec.dt || q->spec.dt == r->spec.dt)) partner = q;
                 double e = std::nan("");
                 if (r->finished() && partner && partner->finished()) e = trajectory_error(*r, *partner);
                 if (!(e <= worst)) worst = e;
