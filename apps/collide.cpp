@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
     collide::cli::add_backends_command(app);
     collide::cli::add_scenes_command(app);
     collide::cli::add_bench_command(app);
+    collide::cli::add_devices_command(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

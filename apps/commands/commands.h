@@ -9,5 +9,6 @@ void add_run_command(CLI::App& app);       // run one scene on one backend -> HD
 void add_backends_command(CLI::App& app);  // list the backends
 void add_scenes_command(CLI::App& app);    // list the scene library
 void add_bench_command(CLI::App& app);     // benchmark suites
+void add_devices_command(CLI::App& app);   // list OpenCL platforms and devices
 
 }  // namespace collide::cli
