@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <stdexcept>
 
 namespace collide::opencl {
@@ -71,8 +72,11 @@ std::vector<DeviceEntry> list_devices() {
     return devices;
 }
 
-DeviceEntry select_device(const std::string& selector) {
+DeviceEntry select_device(const std::string& requested) {
     const auto devices = list_devices();
+    std::string selector = requested;
+    if (selector.empty())
+        if (const char* env = std::getenv("COLLIDE_CL_DEVICE")) selector = env;
     if (selector.empty()) return devices.front();
     const bool numeric = std::all_of(selector.begin(), selector.end(), [](unsigned char c) { return std::isdigit(c); });
     if (numeric) {

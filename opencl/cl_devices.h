@@ -24,7 +24,9 @@ struct DeviceEntry {
 // no OpenCL platform or no device at all, saying how to install one.
 std::vector<DeviceEntry> list_devices();
 
-// The device picked by `selector`: "" = the first device, a number = that index of
+// The device picked by `selector`: "" = the device named by the environment variable
+// COLLIDE_CL_DEVICE if set (for programs without --cl-device, such as `collide bench`), else
+// the first device; a number = that index of
 // list_devices(), otherwise the first device whose "platform: device" name contains the text
 // (case-insensitive). Throws, listing the devices, if nothing matches.
 DeviceEntry select_device(const std::string& selector);

@@ -16,9 +16,12 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// The grid the seed's design calls for on a CPU device, and on a GPU the one that avoids the
-// per-step round trip over the bus (docs/opencl-backend.md has the measurements).
-std::string default_grid_mode(const DeviceEntry&) { return "device"; }
+// Default grid per device type (docs/opencl-backend.md has the measurements). On a CPU
+// device (PoCL) the "device" memory is host memory: the read-back and upload of the host
+// build are plain copies, and the serial counting sort beat the five grid kernels at every
+// N from 1e4 to 1e6. On a GPU the host build would cross the bus twice per step and the
+// sort would run on one core while thousands wait, so the grid stays on the device.
+std::string default_grid_mode(const DeviceEntry& device) { return device.type == "CPU" ? "host" : "device"; }
 
 template <typename Real>
 class OpenclSolver : public Solver {
@@ -26,7 +29,7 @@ public:
     using Particle = typename Layout<Real>::Particle;
     using StepParams = typename Layout<Real>::StepParams;
 
-    explicit OpenclSolver(const BackendOptions& options) : options_(options) {}
+    explicit OpenclSolver(const BackendOptions& options) : requested_(options), options_(options) {}
 
     std::string name() const override { return "opencl"; }
     double time() const override { return double(step_count_) * scene_.run.dt; }
@@ -88,6 +91,8 @@ public:
 private:
     void load_checked(const Scene& scene, const ParticleState<double>& initial) {
         scene_ = scene;
+        options_ = requested_;
+        merge_scene_options(scene);
         n_ = initial.size();
         step_count_ = 0;
         stats_ = SolverStats{};
@@ -109,6 +114,18 @@ private:
         allocate_buffers();
         upload(initial);
         choose_local_size();
+    }
+
+    // Keys of the scene's [backend.opencl] table, unless the caller set them already.
+    void merge_scene_options(const Scene& scene) {
+        const auto table = scene.backend_options.find("opencl");
+        if (table == scene.backend_options.end()) return;
+        for (const auto& [key, value] : table->second) {
+            if (key != "grid" && key != "local_size")
+                throw std::invalid_argument("opencl: scene '" + scene.name + "', [backend.opencl]: unknown key '" + key +
+                                            "' (expected grid or local_size)");
+            options_.extra.emplace(key, value);  // does not replace an explicit option
+        }
     }
 
     // The kernel compiler must see the layout the host sees (particle_layout.hpp).
@@ -265,7 +282,8 @@ private:
         stats_.phase_seconds["kernels"] += seconds_since(start);
     }
 
-    BackendOptions options_;
+    const BackendOptions requested_;  // as created
+    BackendOptions options_;          // requested_ plus the scene's [backend.opencl] keys
     Scene scene_;
     std::size_t n_ = 0;
     std::int64_t step_count_ = 0;

@@ -8,6 +8,8 @@
 //                   step (seed 000's design); "device": built by kernels (kernels/grid.cl).
 //                   Default: the faster one for the device type (docs/opencl-backend.md).
 //   extra["local_size"]  work-group size of the per-disk kernels (default: the driver's choice)
+// A scene file can set `grid` and `local_size` too, in its [backend.opencl] table; options
+// given here take precedence.
 #pragma once
 
 #include <memory>

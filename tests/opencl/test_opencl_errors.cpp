@@ -71,6 +71,20 @@ TEST(OpenclErrors, BuildFailurePrintsTheBuildLog) {
     EXPECT_NE(message.find("error"), std::string::npos) << "the compiler's own diagnostics: " << message;
 }
 
+TEST(OpenclErrors, UnknownSceneKeyIsNamed) {
+    auto c = opencl_cases(1).front();
+    c.scene.backend_options["opencl"]["gird"] = "host";
+    const std::string message = error_of([&] { backend("opencl").create({})->load(c.scene, c.initial); });
+    EXPECT_NE(message.find("unknown key 'gird'"), std::string::npos) << message;
+}
+
+TEST(OpenclErrors, SceneGridKeyIsValidated) {
+    auto c = opencl_cases(1).front();
+    c.scene.backend_options["opencl"]["grid"] = "sideways";
+    const std::string message = error_of([&] { backend("opencl").create({})->load(c.scene, c.initial); });
+    EXPECT_NE(message.find("grid = 'sideways'"), std::string::npos) << message;
+}
+
 TEST(OpenclErrors, ValidWorkGroupSizeRuns) {
     BackendOptions options;
     options.extra["local_size"] = "16";  // every OpenCL 1.2 device allows 16 work-items
