@@ -1,7 +1,9 @@
 #include "run_driver.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <sstream>
 #include <stdexcept>
 
@@ -15,6 +17,26 @@ std::vector<double> output_times(const Scene& scene) {
     if (times.back() < duration) times.push_back(duration);
     return times;
 }
+
+namespace {
+
+// "step: 3 disk(s) with NaN/Inf state at t = 0.5 (first: disk 17, x = (...), v = (...))"
+std::string describe_nonfinite(const std::string& solver_name, const ParticleState<double>& state,
+                               std::int64_t count, double t) {
+    std::ostringstream msg;
+    msg << solver_name << ": " << count << " disk(s) with NaN/Inf state at t = " << t;
+    for (std::size_t i = 0; i < state.size(); ++i) {
+        if (std::isfinite(state.x[i]) && std::isfinite(state.y[i]) && std::isfinite(state.vx[i]) &&
+            std::isfinite(state.vy[i]))
+            continue;
+        msg << " (first: disk " << i << ", x = (" << state.x[i] << ", " << state.y[i] << "), v = ("
+            << state.vx[i] << ", " << state.vy[i] << "))";
+        break;
+    }
+    return msg.str();
+}
+
+}  // namespace
 
 RunResult run_scene(const Scene& scene, Solver& solver, const ParticleState<double>& initial,
                     const RunOptions& options) {
@@ -31,19 +53,8 @@ RunResult run_scene(const Scene& scene, Solver& solver, const ParticleState<doub
         result.series.push_back(m);
         if (options.writer) options.writer->append(m, state);
         if (options.on_output) options.on_output(t, scene.run.duration);
-        if (options.stop_on_nonfinite && m.nonfinite > 0) {
-            std::ostringstream msg;
-            msg << solver.name() << ": " << m.nonfinite << " disk(s) with NaN/Inf state at t = " << t;
-            for (std::size_t i = 0; i < state.size(); ++i)
-                if (!std::isfinite(state.x[i] + state.y[i] + state.vx[i] + state.vy[i])) {
-                    msg << " (first: disk " << i << ", x = (" << state.x[i] << ", " << state.y[i]
-                        << "), v = (" << state.vx[i] << ", " << state.vy[i] << "))";
-                    break;
-                }
-            result.stats = solver.stats();
-            result.final_state = state;
-            throw std::runtime_error(msg.str());
-        }
+        if (options.stop_on_nonfinite && m.nonfinite > 0)
+            throw std::runtime_error(describe_nonfinite(solver.name(), state, m.nonfinite, t));
     }
     result.final_state = std::move(state);
     result.stats = solver.stats();

@@ -1,16 +1,24 @@
-// RunWriter: one run's results as an HDF5 file (layout in docs/output-format.md).
+// RunWriter: one run's results as an HDF5 file. docs/output-format.md describes the layout
+// in full, with units and how to read it; in short:
 //
-//   /                      attributes: provenance (commit, compiler, versions, seed, command
-//                          line, backend, scene text, ...)
+//   /                      attributes: format ("collide-run"), format_version, and the
+//                          provenance (commit, compiler, versions, seed, command line,
+//                          backend, scene text, ...), each a variable-length UTF-8 string
 //   /particles/radius, mass, inv_mass        per-disk constants (N)
 //   /metrics/<name>        one 1-D dataset per Metrics field, one entry per output time
-//   /stats                 attributes: SolverStats (steps, contacts, phase seconds, counters)
+//                          (chunked and extendible, so it grows as the run goes)
+//   /stats                 attributes steps, contacts; /stats/phase_seconds and
+//                          /stats/counters hold one attribute per named entry
 //   /frames/time (T), /frames/position (T x N x 2), /frames/velocity (T x N x 2)
-//                          only with frames enabled; chunked and gzip-compressed
+//                          only with frames enabled; chunked, gzip-compressed, extendible in T
 //
-// The file is written under a temporary name beside the target and renamed into place by
-// commit(), so an existing file is never left half-written; if the writer is destroyed
-// without commit() the temporary file is removed and the target is untouched.
+// The file is written under a temporary name beside the target (".NAME.tmp-PID-K") and
+// renamed into place by commit(), so an existing file is never left half-written; if the
+// writer is destroyed without commit() the temporary file is removed and the target is
+// untouched. A target that cannot be written (missing directory, no permission, a directory
+// in the way) fails in the constructor, before any simulation time is spent.
+//
+// Every failure throws Hdf5Error (a std::runtime_error) whose message names the file.
 #pragma once
 
 #include <map>
@@ -30,12 +38,16 @@ public:
     RunWriter(const RunWriter&) = delete;
     RunWriter& operator=(const RunWriter&) = delete;
 
+    // Root-group string attributes; a key written twice keeps the last value.
     void write_attributes(const std::map<std::string, std::string>& attributes);
     void write_particles(const ParticleState<double>& state);
-    // Called once per output time, in order.
+    // Called once per output time, in order. `state` is used only when frames are enabled.
     void append(const Metrics& metrics, const ParticleState<double>& state);
     void write_stats(const SolverStats& stats);
-    void commit();  // flush, close and rename into place
+    void commit();  // flush, close and rename into place; the writer is finished afterwards
+
+    const std::string& path() const;             // the target path
+    const std::string& temporary_path() const;   // where the file is written until commit()
 
 private:
     struct Impl;

@@ -46,7 +46,11 @@ struct ParticleGenerator {
     std::string kind;  // "list", "gas", "lattice"
 
     // kind = "list": explicit disks
-    struct Disk { double x, y, vx, vy, radius, mass; bool stone; };
+    struct Disk {
+        double x, y, vx, vy, radius, mass;
+        bool stone;
+        int source_line = 0;  // line of the disk's inline table, for error messages
+    };
     std::vector<Disk> disks;
 
     // kind = "gas" and "lattice": count and region (defaults to the whole box)
@@ -73,6 +77,8 @@ struct ParticleGenerator {
 
     bool stone = false;        // every disk of this block is a kinematic stone
     int source_line = 0;       // line in the scene file, for error messages
+
+    double max_radius() const;  // the largest radius this block can produce
 };
 
 struct Scene {
@@ -95,6 +101,9 @@ struct Scene {
     bool has_friction() const { return physics.friction != 0; }
     bool has_damping() const { return physics.damping != 0; }
     bool periodic() const { return world.boundary == Boundary::periodic; }
+
+    // The largest radius any generator can produce (the grid cell size must be >= 2 r_max).
+    double max_radius() const;
 
     // Number of stepped time steps that make up `t` (t is a multiple of dt by validation).
     std::int64_t steps_for(double t) const;

@@ -28,6 +28,8 @@ private:
 }  // namespace
 
 void StepSolver::load(const Scene& scene, const ParticleState<double>& initial) {
+    if (initial.size() == 0) throw std::invalid_argument("step: the scene has no disks");
+    if (!(scene.run.dt > 0)) throw std::invalid_argument("step: dt must be positive");
     scene_ = scene;
     state_ = initial;
     step_count_ = 0;

@@ -8,7 +8,7 @@ packages=(
   libeigen3-dev libbox2d-dev libgsl-dev libgtest-dev libhdf5-dev hdf5-tools
   libtomlplusplus-dev libcli11-dev
   ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers pocl-opencl-icd clinfo
-  clang libclang-rt-14-dev
+  clang libclang-rt-14-dev libomp-dev
   python3 python3-matplotlib python3-numpy python3-h5py
 )
 

@@ -1,8 +1,10 @@
 // `collide run SCENE --backend NAME [--out FILE] [--frames]`: one scene on one backend.
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <memory>
 
+#include "apps/progress_line.h"
 #include "commands.h"
 #include "core/backend_registry.h"
 #include "core/provenance.h"
@@ -48,9 +50,27 @@ void print_summary(const Scene& scene, const std::string& backend, const RunResu
     std::printf("walls     final max penetration %.3e (relative to radius)\n", b.max_wall_penetration);
 }
 
+// The root attributes of the output file (docs/output-format.md): the build, the backend,
+// the scene text and seed, and the command line.
+std::map<std::string, std::string> run_provenance(const Scene& scene, const BackendInfo& backend,
+                                                  const Solver& solver) {
+    auto attributes = build_provenance();
+    for (const auto& [key, value] : solver.provenance()) attributes["backend_" + key] = value;
+    attributes["backend"] = backend.name;
+    attributes["scene_name"] = scene.name;
+    attributes["scene_path"] = scene.source_path;
+    attributes["scene_text"] = scene.source_text;
+    attributes["seed"] = std::to_string(scene.seed);
+    attributes["command_line"] = command_line();
+    return attributes;
+}
+
+// Every check that can fail fast comes before the simulation: the backend name (no file read
+// needed), the scene, whether the backend supports it, and whether the output can be written.
+// A failure at any point leaves no output file and an existing one untouched (RunWriter).
 void execute(const RunArgs& args) {
-    const Scene scene = load_scene(args.scene_path);
     const BackendInfo& backend = find_backend(args.backend);
+    const Scene scene = load_scene(args.scene_path);
     if (auto reason = backend.supports(scene))
         throw std::runtime_error("backend '" + backend.name + "' cannot run scene '" + scene.name + "': " + *reason);
     const ParticleState<double> initial = generate_initial_state(scene);
@@ -58,20 +78,15 @@ void execute(const RunArgs& args) {
 
     std::unique_ptr<RunWriter> writer;
     if (!args.out.empty()) writer = std::make_unique<RunWriter>(args.out, args.frames);
+    ProgressLine progress;
     RunOptions run_options;
     run_options.writer = writer.get();
+    run_options.on_output = [&progress](double time, double duration) { progress.update(time, duration); };
     const RunResult result = run_scene(scene, *solver, initial, run_options);
+    progress.finish();
 
     if (writer) {
-        auto attributes = build_provenance();
-        for (const auto& [k, v] : solver->provenance()) attributes["backend_" + k] = v;
-        attributes["backend"] = backend.name;
-        attributes["scene_name"] = scene.name;
-        attributes["scene_path"] = scene.source_path;
-        attributes["scene_text"] = scene.source_text;
-        attributes["seed"] = std::to_string(scene.seed);
-        attributes["command_line"] = command_line();
-        writer->write_attributes(attributes);
+        writer->write_attributes(run_provenance(scene, backend, *solver));
         writer->commit();
     }
     print_summary(scene, backend.name, result);
