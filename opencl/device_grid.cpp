@@ -19,7 +19,7 @@ DeviceGrid::DeviceGrid(ClSession& session, std::int64_t n, std::int64_t cells)
     // One block-sum buffer per level of the recursive scan, until one block holds everything.
     std::size_t count = std::size_t(cells) + 1;
     do {
-        count = (count + block_ - 1) / block_;
+        count = (count + block_values() - 1) / block_values();
         block_sums_.emplace_back(ctx, CL_MEM_READ_WRITE, sizeof(cl_uint) * count);
     } while (count > 1);
 }
@@ -29,19 +29,21 @@ std::uint64_t DeviceGrid::work_bytes(std::int64_t n, std::int64_t cells) {
 }
 
 void DeviceGrid::exclusive_scan(const cl::Buffer& values, std::uint32_t count, std::size_t level) {
-    const std::size_t blocks = (count + block_ - 1) / block_;
+    const std::size_t blocks = (count + block_values() - 1) / block_values();
     scan_.setArg(0, values);
     scan_.setArg(1, count);
-    scan_.setArg(2, block_sums_[level]);
-    scan_.setArg(3, cl::Local(sizeof(cl_uint) * block_));
+    scan_.setArg(2, cl_uint(scan_chunk));
+    scan_.setArg(3, block_sums_[level]);
+    scan_.setArg(4, cl::Local(sizeof(cl_uint) * block_));
     session_.queue.enqueueNDRangeKernel(scan_, cl::NullRange, cl::NDRange(blocks * block_), cl::NDRange(block_));
     if (blocks == 1) return;
     // The block totals, scanned in turn, are the offsets each block adds.
     exclusive_scan(block_sums_[level], std::uint32_t(blocks), level + 1);
     add_offsets_.setArg(0, values);
     add_offsets_.setArg(1, count);
-    add_offsets_.setArg(2, block_sums_[level]);
-    session_.queue.enqueueNDRangeKernel(add_offsets_, cl::NullRange, cl::NDRange(blocks * block_), cl::NDRange(block_));
+    add_offsets_.setArg(2, cl_uint(block_values()));
+    add_offsets_.setArg(3, block_sums_[level]);
+    session_.queue.enqueueNDRangeKernel(add_offsets_, cl::NullRange, cl::NDRange(count));
 }
 
 void DeviceGrid::build(const cl::Buffer& particles, const void* params, std::size_t params_size,

@@ -26,6 +26,10 @@ public:
 
 private:
     void exclusive_scan(const cl::Buffer& values, std::uint32_t count, std::size_t level);
+    // Values one work-group of the scan covers: each work-item scans scan_chunk of them.
+    std::size_t block_values() const { return block_ * scan_chunk; }
+
+    static constexpr std::size_t scan_chunk = 16;
 
     ClSession& session_;
     std::int64_t n_, cells_;

@@ -2,8 +2,8 @@
  * the same result, bit for bit (the tests compare the two).
  *   grid_count      cell of every disk; atomic increment of its cell's count, which also
  *                   gives the disk a rank inside its cell (in no particular order)
- *   scan_blocks     exclusive prefix sum of the counts -> cell_start (work-group scans,
- *   add_block_offsets  applied recursively to the block sums by the host)
+ *   scan_blocks     exclusive prefix sum of the counts -> cell_start (blocks scanned by
+ *   add_block_offsets  work-groups, the block sums scanned recursively by the host)
  *   grid_scatter    sorted_index[cell_start[c] + rank] = i
  *   grid_sort_cells the atomics made the order inside a cell depend on thread timing;
  *                   sorting each cell's few indices restores increasing index order, so the
@@ -32,14 +32,21 @@ __kernel void grid_count(__global const Particle* particles, const StepParams pa
     rank[i] = atomic_inc(&counts[c]);
 }
 
-/* Exclusive scan of one block of get_local_size(0) values in local memory (Hillis and
- * Steele's doubling scan; integer sums, so the order of additions does not matter).
- * block_sums[g] receives the block's total for the next level. */
-__kernel void scan_blocks(__global uint* values, const uint count, __global uint* block_sums,
+/* Exclusive scan of one block of get_local_size(0) * chunk values. Each work-item owns `chunk`
+ * consecutive values: it sums them serially, the work-group scans the per-item sums in local
+ * memory (Hillis and Steele's doubling scan), and each item then rewrites its values as
+ * running sums from its offset. The serial part keeps the work linear in the values; the
+ * doubling scan (log2 of the group size steps) runs on the group's sums only. Integer sums,
+ * so the order of additions does not matter. block_sums[g] receives the block's total for
+ * the next level of the scan. */
+__kernel void scan_blocks(__global uint* values, const uint count, const uint chunk, __global uint* block_sums,
                           __local uint* scratch)
 {
-    const uint gid = get_global_id(0), lid = get_local_id(0), size = get_local_size(0);
-    const uint own = gid < count ? values[gid] : 0u;
+    const uint lid = get_local_id(0), size = get_local_size(0);
+    const uint begin = (uint)get_global_id(0) * chunk;
+    const uint end = min(begin + chunk, count);
+    uint own = 0;
+    for (uint k = begin; k < end; ++k) own += values[k];
     scratch[lid] = own;
     barrier(CLK_LOCAL_MEM_FENCE);
     for (uint offset = 1; offset < size; offset *= 2) {
@@ -48,14 +55,21 @@ __kernel void scan_blocks(__global uint* values, const uint count, __global uint
         scratch[lid] += add;
         barrier(CLK_LOCAL_MEM_FENCE);
     }
-    if (gid < count) values[gid] = scratch[lid] - own;  /* inclusive -> exclusive */
+    uint running = scratch[lid] - own;  /* inclusive -> exclusive: this item's offset */
+    for (uint k = begin; k < end; ++k) {
+        const uint value = values[k];
+        values[k] = running;
+        running += value;
+    }
     if (lid == size - 1) block_sums[get_group_id(0)] = scratch[lid];
 }
 
-__kernel void add_block_offsets(__global uint* values, const uint count, __global const uint* block_offsets)
+/* values[k] += the scanned total of all blocks before k's block. */
+__kernel void add_block_offsets(__global uint* values, const uint count, const uint block_values,
+                                __global const uint* block_offsets)
 {
-    const uint gid = get_global_id(0);
-    if (gid < count) values[gid] += block_offsets[get_group_id(0)];
+    const uint k = get_global_id(0);
+    if (k < count) values[k] += block_offsets[k / block_values];
 }
 
 __kernel void grid_scatter(__global const uint* cell_of, __global const uint* rank,

@@ -81,6 +81,13 @@ TEST(OpenclGrid, DeviceGridEqualsHostGridPeriodic) {
     expect_same_grid<float>(scene, crowd(scene, 2000, 22));
 }
 
+TEST(OpenclGrid, DeviceGridEqualsHostGridWithManyCells) {
+    // 333 x 333 cells: the prefix sum spans many work-group blocks (4096 values each), so
+    // the recursive scan of the block sums and the offsets are exercised.
+    const Scene scene = box_scene(200, 200);
+    expect_same_grid<float>(scene, crowd(scene, 20000, 24));
+}
+
 TEST(OpenclGrid, DeviceGridEqualsHostGridWithOneCell) {
     // Every disk in one cell: the per-cell sort has the most to do.
     const Scene scene = box_scene(1, 1);
