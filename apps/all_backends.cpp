@@ -1,16 +1,26 @@
 // The list of backends compiled into collide. Adding a backend = one entry here; the
 // command line, validation runner, benchmark and conformance tests pick it up from this list.
+#include "box2d/box2d_solver.h"
 #include "core/backend_registry.h"
+#include "cpu/cpu_solver.h"
 #include "opencl/opencl_solver.h"
+#include "reference/event_solver.h"
 #include "reference/step_solver.h"
 
 namespace collide {
 
 const std::vector<BackendInfo>& all_backends() {
     static const std::vector<BackendInfo> backends = {
+        {"event", "double", "exact event-driven hard disks (EDMD), serial: the reference", &EventSolver::supports,
+         [](const BackendOptions&) -> std::unique_ptr<Solver> { return std::make_unique<EventSolver>(); }},
         {"step", "double", "time-stepped rules of seeds 000/001, serial reference",
          [](const Scene&) -> std::optional<std::string> { return std::nullopt; },
          [](const BackendOptions&) -> std::unique_ptr<Solver> { return std::make_unique<StepSolver>(); }},
+        {"cpu", "float", "the same rules in float, multi-threaded (OpenMP), seed 001's engine",
+         [](const Scene&) -> std::optional<std::string> { return std::nullopt; },
+         [](const BackendOptions& o) -> std::unique_ptr<Solver> { return std::make_unique<cpu::CpuSolver>(o); }},
+        {"box2d", "float", "Box2D 2.4 world of circle bodies, the baseline", box2d_supports,
+         [](const BackendOptions&) -> std::unique_ptr<Solver> { return std::make_unique<Box2dSolver>(); }},
         {"opencl", "float|double", "stepping rules as OpenCL kernels (seed 000), float or --real double",
          [](const Scene&) -> std::optional<std::string> { return std::nullopt; }, opencl::make_opencl_solver},
     };

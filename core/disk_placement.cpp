@@ -11,8 +11,9 @@ DiskPlacement::DiskPlacement(const World& world, double max_radius, std::size_t 
     // Cell side >= 2 r_max, enlarged if needed to keep about 4 cells per disk at most.
     const double max_cells = 4.0 * double(expected_disks) + 1024.0;
     const double side = std::max(2.0 * max_radius, std::sqrt(world.width() * world.height() / max_cells));
-    cells_x_ = std::max<std::int64_t>(1, std::int64_t(world.width() / side));
-    cells_y_ = std::max<std::int64_t>(1, std::int64_t(world.height() / side));
+    // Capped per axis too, for very elongated boxes (10^9 x 10^-9).
+    cells_x_ = std::int64_t(std::clamp(world.width() / side, 1.0, max_cells));
+    cells_y_ = std::int64_t(std::clamp(world.height() / side, 1.0, std::max(1.0, max_cells / double(cells_x_))));
     // Stretch the cells to tile the box exactly (each side still >= 2 r_max), so that the
     // periodic wrap of cell indices matches the wrap of positions.
     cell_w_ = world.width() / double(cells_x_);

@@ -79,8 +79,12 @@ void draw_velocities(const ParticleGenerator& g, gsl_rng* rng, std::vector<Disk>
     }
 }
 
-double mass_of(const ParticleGenerator& g, double radius) {
-    return g.mass ? *g.mass : *g.density * pi * radius * radius;
+double mass_of(const Scene& scene, const ParticleGenerator& g, std::size_t index, double radius) {
+    const double m = g.mass ? *g.mass : *g.density * pi * radius * radius;
+    if (!(m > 0) || !std::isfinite(m))  // density * pi r^2 can underflow to 0 or overflow
+        throw SceneError(block_location(scene, g, index) + "mass " + std::to_string(m) +
+                         " from density and radius: expected a finite mass > 0");
+    return m;
 }
 
 // Random sequential addition (RSA; Feder, J. Theor. Biol. 87, 237 (1980)): propose a
@@ -126,7 +130,7 @@ std::vector<Disk> place_gas(const Scene& scene, const ParticleGenerator& g, std:
             if (wrap_whole_box && (x >= scene.world.xmax || y >= scene.world.ymax)) continue;
             if (placed.find_overlap(x, y, r) >= 0) continue;
             placed.insert(x, y, r);
-            disks.push_back({x, y, 0, 0, r, mass_of(g, r)});
+            disks.push_back({x, y, 0, 0, r, mass_of(scene, g, index, r)});
             break;
         }
     }
@@ -165,7 +169,7 @@ std::vector<Disk> place_lattice(const Scene& scene, const ParticleGenerator& g, 
             throw SceneError(block_location(scene, g, index) + "lattice disk " + std::to_string(k + 1) +
                              " overlaps a disk of an earlier [[particles]] block: expected non-overlapping blocks");
         placed.insert(x, y, g.radius);
-        disks.push_back({x, y, 0, 0, g.radius, mass_of(g, g.radius)});
+        disks.push_back({x, y, 0, 0, g.radius, mass_of(scene, g, index, g.radius)});
     }
     draw_velocities(g, rng, disks);
     return disks;

@@ -20,7 +20,8 @@ constexpr double pi = 3.14159265358979323846;
 World read_world(const TomlFields& world) {
     world.allow_only({"box", "boundary"});
     const std::vector<double> box = world.numbers("box", 4);
-    world.require(box[2] > box[0] && box[3] > box[1], "box", "[xmin, ymin, xmax, ymax] with xmax > xmin and ymax > ymin");
+    world.require(box[2] > box[0] && box[3] > box[1] && std::isfinite(box[2] - box[0]) && std::isfinite(box[3] - box[1]),
+                  "box", "[xmin, ymin, xmax, ymax] with xmax > xmin and ymax > ymin (and a finite size)");
     World w{box[0], box[1], box[2], box[3]};
     w.boundary = world.choice("boundary", {"reflect", "periodic"}, "reflect") == "periodic" ? Boundary::periodic
                                                                                           : Boundary::reflect;
@@ -46,11 +47,11 @@ Physics read_physics(const TomlFields& physics) {
     return p;
 }
 
-// True when t is a whole number (>= 1) of steps dt, to a relative tolerance of 1e-9:
-// decimal values such as 0.1 / 1e-3 are not exact in binary floating point.
+// True when t is a whole number (>= 1, at most 10^15) of steps dt, to a relative tolerance
+// of 1e-9: decimal values such as 0.1 / 1e-3 are not exact in binary floating point.
 bool whole_steps(double t, double dt) {
     const double n = t / dt;
-    return std::round(n) >= 1 && std::fabs(n - std::round(n)) <= 1e-9 * std::round(n);
+    return std::round(n) >= 1 && std::round(n) <= 1e15 && std::fabs(n - std::round(n)) <= 1e-9 * std::round(n);
 }
 
 RunSettings read_run(const TomlFields& run) {
@@ -124,7 +125,7 @@ void read_velocity(const TomlFields& block, ParticleGenerator& g) {
     const char* expected = "\"zero\", { maxwell = kT } or { speed = v }";
     if (!n) return;
     if (n->is_string()) {
-        block.choice("velocity", {"zero"}, "zero");
+        if (n->as_string()->get() != "zero") block.fail("velocity", expected);
         return;
     }
     if (!n->is_table()) block.fail("velocity", expected);
@@ -269,7 +270,8 @@ Scene read_scene(const toml::table& root_table, const std::string& file) {
     root.require(!scene.description.empty() && scene.description.find('\n') == std::string::npos, "description",
                  "a non-empty one-line string");
     const std::int64_t seed = root.integer("seed", 1);
-    root.require(seed >= 0, "seed", "an integer >= 0");
+    // gsl_rng_mt19937 uses the low 32 bits of its seed: larger seeds would silently collide.
+    root.require(seed >= 0 && seed <= 4294967295, "seed", "an integer in [0, 2^32 - 1]");
     scene.seed = std::uint64_t(seed);
     scene.world = read_world(root.table("world"));
     if (root.has("physics")) scene.physics = read_physics(root.table("physics"));

@@ -34,7 +34,8 @@ void StepSolver::load(const Scene& scene, const ParticleState<double>& initial) 
     state_ = initial;
     step_count_ = 0;
     stats_ = SolverStats{};
-    const double r_max = *std::max_element(state_.radius.begin(), state_.radius.end());
+    // An empty scene still gets a valid (unused) grid.
+    const double r_max = state_.size() > 0 ? *std::max_element(state_.radius.begin(), state_.radius.end()) : 0.5;
     grid_.configure(scene_.world, 2 * r_max);
     for (auto* a : {&dx_, &dy_, &dvx_, &dvy_}) a->assign(state_.size(), 0.0);
 }
@@ -108,12 +109,15 @@ void StepSolver::compute_contact_deltas() {
             dy_[i] += d.dy;
             dvx_[i] += d.dvx;
             dvy_[i] += d.dvy;
-            if (i < j) ++stats_.contacts;
+            // Each pair once: by its lower index, or by the moving disk when the other is a
+            // stone (a stone never runs this loop).
+            if (i < j || s.is_stone(j)) ++stats_.contacts;
         });
     }
 }
 
 void StepSolver::apply_contact_deltas() {
+    PhaseTimer timer(stats_, "correct");
     for (std::size_t i = 0; i < state_.size(); ++i) {
         state_.x[i] += dx_[i];
         state_.y[i] += dy_[i];
@@ -125,6 +129,7 @@ void StepSolver::apply_contact_deltas() {
 void StepSolver::integrate_velocities(double h) {
     const double gx = scene_.physics.gravity_x, gy = scene_.physics.gravity_y;
     const double gamma = scene_.physics.damping;
+    PhaseTimer timer(stats_, "integrate");
     for (std::size_t i = 0; i < state_.size(); ++i) {
         if (state_.is_stone(i)) continue;  // kinematic: never integrated
         state_.vx[i] += (gx - gamma * state_.vx[i]) * h;
@@ -142,6 +147,7 @@ void StepSolver::integrate_positions(double h) {
 }
 
 void StepSolver::apply_walls() {
+    PhaseTimer timer(stats_, "correct");
     const World& w = scene_.world;
     const double e_wall = scene_.physics.wall_restitution;
     for (std::size_t i = 0; i < state_.size(); ++i) {

@@ -9,7 +9,6 @@ namespace collide::test {
 
 double conformance_tolerance(const std::string& backend) {
     const std::string precision = find_backend(backend).precision;
-    if (backend == "box2d") return 2e-2;
     if (precision == "double") return 1e-12;
     return 1e-5;
 }

@@ -171,6 +171,13 @@ TEST(GasGenerator, AvoidsExplicitDisksAndEarlierBlocks) {
     EXPECT_EQ(overlapping_pairs(scene, s), 0);
 }
 
+TEST(GasGenerator, MassFromDensityMustBeFiniteAndPositive) {
+    ParticleGenerator g = gas_block(1, 1e-200, 1.0);
+    g.mass.reset();
+    g.density = 1.0;  // m = pi 1e-400 underflows to 0
+    EXPECT_THROW(generate_initial_state(scene_with(10, 10, {g})), SceneError);
+}
+
 TEST(GasGenerator, TooDenseForRandomSequentialAdditionIsAClearError) {
     // phi = 80 pi 0.25 / 100 = 0.63 > 0.547, the RSA jamming limit.
     const Scene scene = scene_with(10, 10, {gas_block(80, 0.5, 1.0)});

@@ -94,6 +94,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"UnknownVelocity",
                  "[[particles]]\nkind = \"gas\"\ncount = 10\nradius = 0.5\nmass = 1\nvelocity = { maxwel = 1 }\n",
                  {"bad.toml:9:", "[[particles]][1].velocity", "maxwell"}},
+        BadScene{"UnknownVelocityWord",
+                 "[[particles]]\nkind = \"gas\"\ncount = 10\nradius = 0.5\nmass = 1\nvelocity = \"hot\"\n",
+                 {"bad.toml:9:", "[[particles]][1].velocity = 'hot'", "{ maxwell = kT }"}},
         BadScene{"ReversedBidisperse",
                  "[[particles]]\nkind = \"gas\"\ncount = 10\nradius = { bidisperse = [0.6, 0.4] }\nmass = 1\n",
                  {"bad.toml:7:", "[[particles]][1].radius.bidisperse", "small < large"}},
@@ -116,11 +119,14 @@ TEST(Loader, TopLevelErrorsNameTheKeyAndLine) {
         {"description = \"t\"\nseed = \"one\"\n[world]\nbox = [0, 0, 10, 10]\n" + one_disk,
          "bad.toml:2: seed = 'one': expected an integer"},
         {"description = \"t\"\nseed = -3\n[world]\nbox = [0, 0, 10, 10]\n" + one_disk,
-         "bad.toml:2: seed = -3: expected an integer >= 0"},
+         "bad.toml:2: seed = -3: expected an integer in [0, 2^32 - 1]"},
         {"[world]\nbox = [0, 0, 10, 10]\n" + one_disk, "bad.toml:1: description is missing: expected a string"},
         {"description = \"t\"\n" + one_disk, "bad.toml:1: world is missing: expected a table [world]"},
         {"description = \"t\"\n[world]\nbox = [0, 0, -10, 10]\n" + one_disk,
          "bad.toml:3: [world].box = [0, 0, -10, 10]: expected [xmin, ymin, xmax, ymax] with xmax > xmin"},
+        {"description = \"t\"\n[world]\nbox = [-1e308, 0, 1e308, 10]\n" + one_disk,
+         "bad.toml:3: [world].box = [-1e+308, 0, 1e+308, 10]: expected [xmin, ymin, xmax, ymax] with xmax > xmin and "
+         "ymax > ymin (and a finite size)"},
     };
     for (const auto& [text, expected] : cases) {
         try {

@@ -1,0 +1,123 @@
+// Benchmark suite `event`: throughput of the event-driven solver, one thread, in collisions
+// per second and nanoseconds per collision, for N = 1e3 ... 1e6 disks at area fractions 0.1,
+// 0.5 and 0.7 in a periodic box. Flat cost per collision in N is the point of the cell list
+// and the per-particle event queue; the table shows it directly.
+//
+// Placement: random sequential addition cannot reach area fraction 0.7 (it jams near 0.55),
+// so every case starts from a square lattice (which holds up to pi/4 = 0.785) with random
+// velocities and is "melted" by running it for a few collisions per disk before timing.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+
+#include "bench_suite.h"
+#include "reference/event_solver.h"
+
+namespace collide::bench {
+namespace {
+
+struct LatticeGas {
+    Scene scene;
+    ParticleState<double> state;
+};
+
+// n unit-mass disks of radius 1/2 on a square lattice in a periodic square box whose size
+// gives the requested area fraction phi = n pi r^2 / L^2; velocity components Gaussian with
+// unit variance (kT/m = 1), the centre-of-mass motion removed.
+LatticeGas lattice_gas(std::int64_t n, double area_fraction, std::uint64_t seed) {
+    const double radius = 0.5;
+    const double box = std::sqrt(double(n) * M_PI * radius * radius / area_fraction);
+    const std::int64_t columns = std::int64_t(std::ceil(std::sqrt(double(n))));
+    const double spacing = box / double(columns);
+    LatticeGas gas;
+    gas.scene.name = "event_bench";
+    gas.scene.seed = seed;
+    gas.scene.world = World{0, 0, box, box, Boundary::periodic};
+    gas.state.resize(std::size_t(n));
+    std::mt19937_64 rng(seed);
+    std::normal_distribution<double> gauss(0.0, 1.0);
+    double px = 0, py = 0;
+    for (std::int64_t k = 0; k < n; ++k) {
+        const std::size_t i = std::size_t(k);
+        gas.state.x[i] = (double(k % columns) + 0.5) * spacing;
+        gas.state.y[i] = (double(k / columns) + 0.5) * spacing;
+        gas.state.vx[i] = gauss(rng);
+        gas.state.vy[i] = gauss(rng);
+        gas.state.radius[i] = radius;
+        gas.state.mass[i] = gas.state.inv_mass[i] = 1.0;
+        px += gas.state.vx[i];
+        py += gas.state.vy[i];
+    }
+    for (std::size_t i = 0; i < gas.state.size(); ++i) gas.state.vx[i] -= px / double(n), gas.state.vy[i] -= py / double(n);
+    return gas;
+}
+
+// Advances the solver until at least `target` more collisions have happened, in steps of
+// simulated time sized from the collision rate seen so far. Returns the steps' wall time.
+double run_collisions(EventSolver& solver, std::int64_t target) {
+    const std::int64_t start = solver.stats().contacts;
+    double step = 0.01, seconds = 0;
+    while (solver.stats().contacts - start < target) {
+        const std::int64_t before = solver.stats().contacts;
+        const double t = solver.time() + step;
+        seconds += time_seconds([&] { solver.advance_to(t); });
+        const std::int64_t done = solver.stats().contacts - before;
+        // Aim for about 20 steps per measurement.
+        const std::int64_t want = std::max<std::int64_t>(1, target / 20);
+        step *= done > 0 ? std::clamp(double(want) / double(done), 0.5, 4.0) : 4.0;
+    }
+    return seconds;
+}
+
+void run_event_suite(const BenchArgs& args, BenchReport& report) {
+    if (!args.backends.empty() && std::find(args.backends.begin(), args.backends.end(), "event") == args.backends.end())
+        return;
+    std::vector<std::int64_t> sizes = args.sizes;
+    if (sizes.empty()) sizes = args.quick ? std::vector<std::int64_t>{1000, 10000}
+                                          : std::vector<std::int64_t>{1000, 10000, 100000, 1000000};
+    for (double phi : {0.1, 0.5, 0.7}) {
+        double first_cost = 0;
+        for (std::int64_t n : sizes) {
+            LatticeGas gas = lattice_gas(n, phi, 42);
+            EventSolver solver;
+            solver.load(gas.scene, gas.state);
+            // Melt the lattice: a few collisions per disk forget the initial order.
+            const double melt_seconds = run_collisions(solver, args.quick ? n : 5 * n);
+            const SolverStats before = solver.stats();
+            const std::int64_t measured = std::max<std::int64_t>(args.quick ? 100000 : 1000000, 5 * n);
+            const double seconds = run_collisions(solver, measured);
+            const SolverStats after = solver.stats();
+            const double collisions = double(after.contacts - before.contacts);
+            const double events = double(after.steps - before.steps);
+            const double stale = after.counters.at("events_stale") - before.counters.at("events_stale");
+            const double ns = 1e9 * seconds / collisions;
+            if (first_cost == 0) first_cost = ns;
+            report.add({{"backend", std::string("event")},
+                        {"threads", std::int64_t(1)},
+                        {"n", n},
+                        {"area_fraction", phi},
+                        {"collisions", std::int64_t(collisions)},
+                        {"seconds", seconds},
+                        {"melt_seconds", melt_seconds},
+                        {"collisions_per_second", collisions / seconds},
+                        {"ns_per_collision", ns},
+                        {"cost_vs_smallest_n", ns / first_cost},
+                        {"events_per_collision", events / collisions},
+                        {"stale_per_collision", stale / collisions}});
+        }
+    }
+    report.note("cost_vs_smallest_n: ns per collision relative to the smallest N at the same area fraction "
+                "(target: within 2x up to N = 1e6); target throughput: >= 1e6 collisions/s at N = 1e5, "
+                "area fraction 0.5");
+}
+
+}  // namespace
+
+BenchSuite event_bench_suite() {
+    return {"event", "event-driven solver: collisions/s and ns/collision, 1 thread, N = 1e3..1e6, area fraction 0.1/0.5/0.7",
+            run_event_suite};
+}
+
+}  // namespace collide::bench

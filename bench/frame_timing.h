@@ -1,0 +1,33 @@
+// measure_frames: runs one backend on one scene for a number of fixed-timestep frames
+// (seed 001's headless benchmark) and reports the throughput and the time per phase.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+
+#include "bench_suite.h"
+#include "core/backend_registry.h"
+#include "gas_scene.h"
+
+namespace collide::bench {
+
+struct FrameTiming {
+    bool stopped = false;               // the first frame exceeded the per-frame limit
+    double first_frame_seconds = 0;     // the warm-up frame (not in the figures below)
+    double seconds = 0;                 // the measured frames
+    double particle_steps_per_second = 0;
+    std::map<std::string, double> phase_ms_per_frame;  // from SolverStats.phase_seconds
+    std::string threads;                // as the backend reports it, or as requested
+};
+
+// One warm-up frame, then `frames` timed frames (frame = one step dt of the scene). If the
+// warm-up frame takes longer than frame_limit_seconds the run stops there (stopped = true).
+FrameTiming measure_frames(const BackendInfo& backend, const BackendOptions& options, const GasCase& gas,
+                           int frames, double frame_limit_seconds);
+
+// Adds the timing to a report row: particle_steps_per_s, ns_per_particle_step, seconds,
+// threads and one ms_per_frame_<phase> column per phase.
+void add_timing(Row& row, const FrameTiming& t, std::int64_t n);
+
+}  // namespace collide::bench

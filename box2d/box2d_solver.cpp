@@ -1,0 +1,208 @@
+#include "box2d_solver.h"
+
+#include <box2d/box2d.h>
+
+#include <chrono>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace collide {
+namespace {
+
+// Box2D mixes the restitution of two fixtures as max(e_a, e_b), so a disk (e) against the
+// walls (e_wall < e) would bounce with e. This listener gives every wall contact the wall
+// restitution when the contact begins; Box2D keeps it for the contact's lifetime.
+class WallRestitution : public b2ContactListener {
+public:
+    WallRestitution(const b2Fixture* wall, float e_wall) : wall_(wall), e_wall_(e_wall) {}
+    void BeginContact(b2Contact* contact) override {
+        if (contact->GetFixtureA() == wall_ || contact->GetFixtureB() == wall_) contact->SetRestitution(e_wall_);
+    }
+
+private:
+    const b2Fixture* wall_;
+    float e_wall_;
+};
+
+double mean_radius(const ParticleState<double>& s) {
+    double sum = 0;
+    for (double r : s.radius) sum += r;
+    return sum / double(s.size());
+}
+
+}  // namespace
+
+std::optional<std::string> box2d_supports(const Scene& scene) {
+    if (scene.periodic())
+        return "Box2D 2.4 has no periodic boundaries (a body cannot wrap around the world), "
+               "and a faked wrap would not be Box2D's answer";
+    return std::nullopt;
+}
+
+Box2dSolver::Box2dSolver() = default;
+Box2dSolver::~Box2dSolver() = default;
+
+void Box2dSolver::load(const Scene& scene, const ParticleState<double>& initial) {
+    if (auto reason = box2d_supports(scene)) throw std::runtime_error("box2d: scene '" + scene.name + "': " + *reason);
+    if (initial.size() == 0) throw std::runtime_error("box2d: scene '" + scene.name + "' has no disks");
+    scene_ = scene;
+    initial_ = initial;
+    options_ = parse_box2d_options(scene);
+    units_ = Box2dUnits(options_.length_scale.value_or(default_box2d_scale(mean_radius(initial))), scene.world);
+    substeps_ = options_.substeps.value_or(scene.run.substeps);
+    if (!(scene.run.dt > 0) || substeps_ < 1)
+        throw std::runtime_error("box2d: scene '" + scene.name + "': needs dt > 0 and substeps >= 1 (dt = " +
+                                 std::to_string(scene.run.dt) + ", substeps = " + std::to_string(substeps_) + ")");
+    step_count_ = 0;
+    stats_ = SolverStats{};
+    cap_steps_ = cap_body_steps_ = 0;
+
+    world_ = std::make_unique<b2World>(b2Vec2(float(units_.to_box2d_length(scene.physics.gravity_x)),
+                                              float(units_.to_box2d_length(scene.physics.gravity_y))));
+    // Sleeping freezes bodies whose speed stays below a threshold: never true for a gas, and
+    // a frozen body would silently stop being validated.
+    world_->SetAllowSleeping(false);
+    world_->SetContinuousPhysics(true);  // time of impact against static bodies (walls, stones)
+    wall_fixture_ = nullptr;
+    wall_restitution_.reset();
+    create_walls();
+    create_disks();
+}
+
+void Box2dSolver::create_walls() {
+    const World& w = scene_.world;
+    // Box2D gives chain edges a skin of b2_polygonRadius: a disk touches an edge when its centre
+    // is r + b2_polygonRadius from it. Moving the edges out by that skin puts the touching
+    // surface on the scene's walls.
+    const float skin = b2_polygonRadius;
+    const float x0 = float(units_.to_box2d_x(w.xmin)) - skin, x1 = float(units_.to_box2d_x(w.xmax)) + skin;
+    const float y0 = float(units_.to_box2d_y(w.ymin)) - skin, y1 = float(units_.to_box2d_y(w.ymax)) + skin;
+    // Chain edges are one-sided: they push back only bodies on their right. Going round the
+    // box clockwise puts the inside of the box on the right of every edge.
+    const b2Vec2 corners[4] = {{x0, y0}, {x0, y1}, {x1, y1}, {x1, y0}};
+    b2ChainShape chain;
+    chain.CreateLoop(corners, 4);
+
+    b2BodyDef def;  // static by default
+    b2Body* walls = world_->CreateBody(&def);
+    b2FixtureDef fixture;
+    fixture.shape = &chain;
+    fixture.restitution = float(scene_.physics.wall_restitution);
+    fixture.friction = 0;  // the walls of the exact model are smooth: b2MixFriction(mu, 0) = 0
+    fixture.restitutionThreshold = float(units_.to_box2d_length(options_.restitution_threshold));
+    wall_fixture_ = walls->CreateFixture(&fixture);
+
+    if (scene_.physics.wall_restitution != scene_.physics.restitution) {
+        wall_restitution_ = std::make_unique<WallRestitution>(wall_fixture_, float(scene_.physics.wall_restitution));
+        world_->SetContactListener(wall_restitution_.get());
+    }
+}
+
+void Box2dSolver::create_disks() {
+    const ParticleState<double>& s = initial_;
+    bodies_.assign(s.size(), nullptr);
+    b2CircleShape circle;
+    b2FixtureDef fixture;
+    fixture.shape = &circle;
+    fixture.restitution = float(scene_.physics.restitution);
+    fixture.friction = float(scene_.physics.friction);
+    fixture.restitutionThreshold = float(units_.to_box2d_length(options_.restitution_threshold));
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        const bool stone = s.is_stone(i);
+        b2BodyDef def;
+        def.type = stone ? b2_staticBody : b2_dynamicBody;
+        def.position.Set(float(units_.to_box2d_x(s.x[i])), float(units_.to_box2d_y(s.y[i])));
+        if (!stone) def.linearVelocity.Set(float(units_.to_box2d_length(s.vx[i])), float(units_.to_box2d_length(s.vy[i])));
+        def.allowSleep = false;
+        // The exact model's disks carry no spin; without fixed rotation friction would feed
+        // energy into rotation that the model does not have.
+        def.fixedRotation = true;
+        // Box2D's damping is v <- v / (1 + h c) per step, the implicit form of dv/dt = -c v.
+        def.linearDamping = float(scene_.physics.damping);
+        def.bullet = options_.bullet;
+        b2Body* body = world_->CreateBody(&def);
+        const double r = units_.to_box2d_length(s.radius[i]);
+        circle.m_radius = float(r);
+        // Box2D's mass is density times area: m = rho pi r^2, so rho = m / (pi r^2).
+        fixture.density = float(s.mass[i] / (std::numbers::pi * r * r));
+        body->CreateFixture(&fixture);
+        bodies_[i] = body;
+    }
+}
+
+void Box2dSolver::advance_to(double t) {
+    const std::int64_t target = scene_.steps_for(t);
+    if (!world_) throw std::logic_error("box2d: advance_to() before load()");
+    if (target < step_count_)
+        throw std::invalid_argument("box2d: advance_to(" + std::to_string(t) + ") is in the past");
+    while (step_count_ < target) step();
+}
+
+void Box2dSolver::step() {
+    const double h = scene_.run.dt / substeps_;
+    for (int k = 0; k < substeps_; ++k) {
+        const auto start = std::chrono::steady_clock::now();
+        world_->Step(float(h), options_.velocity_iterations, options_.position_iterations);
+        const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+        stats_.phase_seconds["box2d_step"] += elapsed.count();
+        record_box2d_step(h);
+    }
+    ++step_count_;
+    ++stats_.steps;
+}
+
+void Box2dSolver::record_box2d_step(double h) {
+    for (b2Contact* c = world_->GetContactList(); c; c = c->GetNext())
+        if (c->IsTouching() && c->GetFixtureA() != wall_fixture_ && c->GetFixtureB() != wall_fixture_)
+            ++stats_.contacts;
+    // b2Island::Solve scales a body's velocity down to b2_maxTranslation / h when it would
+    // move further in one step; such a body leaves the step with exactly that speed.
+    const float cap_speed = b2_maxTranslation / float(h);
+    const float near_cap = (1.0f - 1e-4f) * cap_speed;
+    std::int64_t capped = 0;
+    for (const b2Body* body : bodies_)
+        if (body->GetType() == b2_dynamicBody && body->GetLinearVelocity().LengthSquared() >= near_cap * near_cap)
+            ++capped;
+    cap_body_steps_ += capped;
+    if (capped > 0) ++cap_steps_;
+}
+
+void Box2dSolver::read_state(ParticleState<double>& out) const {
+    out = initial_;  // radii, masses, stones (which never move)
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+        if (initial_.is_stone(i)) continue;
+        const b2Vec2 p = bodies_[i]->GetPosition(), v = bodies_[i]->GetLinearVelocity();
+        out.x[i] = units_.from_box2d_x(p.x);
+        out.y[i] = units_.from_box2d_y(p.y);
+        out.vx[i] = units_.from_box2d_length(v.x);
+        out.vy[i] = units_.from_box2d_length(v.y);
+    }
+}
+
+SolverStats Box2dSolver::stats() const {
+    SolverStats s = stats_;
+    s.counters["translation_cap_steps"] = double(cap_steps_);
+    s.counters["translation_cap_body_steps"] = double(cap_body_steps_);
+    s.counters["sleeping_allowed"] = (world_ && world_->GetAllowSleeping()) ? 1 : 0;
+    s.counters["length_scale"] = units_.scale;
+    s.counters["box2d_substeps"] = substeps_;
+    if (stats_.steps > 0) s.counters["seconds_per_step"] = stats_.phase_seconds.at("box2d_step") / double(stats_.steps);
+    return s;
+}
+
+std::map<std::string, std::string> Box2dSolver::provenance() const {
+    const b2Version v = b2_version;
+    return {
+        {"box2d_version", std::to_string(v.major) + "." + std::to_string(v.minor) + "." + std::to_string(v.revision)},
+        {"box2d_length_scale", std::to_string(units_.scale)},
+        {"box2d_time_step", std::to_string(scene_.run.dt / substeps_)},
+        {"box2d_velocity_iterations", std::to_string(options_.velocity_iterations)},
+        {"box2d_position_iterations", std::to_string(options_.position_iterations)},
+        {"box2d_restitution_threshold", std::to_string(options_.restitution_threshold)},
+        {"box2d_bullet", options_.bullet ? "true" : "false"},
+        {"box2d_sleeping", "off"},
+    };
+}
+
+}  // namespace collide

@@ -1,0 +1,222 @@
+#include "cpu_solver.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+#include <string>
+
+#include "parallel_for.h"
+
+namespace collide::cpu {
+namespace {
+
+// Adds the wall time of one phase to the statistics when it goes out of scope.
+class PhaseTimer {
+public:
+    PhaseTimer(SolverStats& stats, const char* phase)
+        : stats_(stats), phase_(phase), start_(std::chrono::steady_clock::now()) {}
+    ~PhaseTimer() {
+        stats_.phase_seconds[phase_] += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    }
+
+private:
+    SolverStats& stats_;
+    const char* phase_;
+    std::chrono::steady_clock::time_point start_;
+};
+
+// Reorders `a` so that slot k holds what slot order[k] held (a gather through scratch).
+template <typename T>
+void permute(std::vector<T>& a, const std::uint32_t* order, std::vector<T>& scratch, int threads) {
+    scratch.resize(a.size());
+    parallel_for(a.size(), threads, [&](std::size_t begin, std::size_t end) -> std::int64_t {
+        for (std::size_t k = begin; k < end; ++k) scratch[k] = a[order[k]];
+        return 0;
+    });
+    a.swap(scratch);
+}
+
+}  // namespace
+
+CpuSolver::CpuSolver(const BackendOptions& options) : options_(options) {
+    if (options.threads < 0) throw std::invalid_argument("cpu: thread count must be >= 0, got " + std::to_string(options.threads));
+    threads_ = options.threads > 0 ? options.threads : omp_get_max_threads();
+    apply_settings(options.extra, "backend options");
+}
+
+void CpuSolver::apply_settings(const std::map<std::string, std::string>& settings, const std::string& where) {
+    for (const auto& [key, value] : settings) {
+        if (key == "specialise") {
+            if (value != "on" && value != "off")
+                throw std::invalid_argument("cpu: " + where + ": specialise = \"" + value + "\": expected \"on\" or \"off\"");
+            specialise_ = value == "on";
+        } else if (key == "sort_interval") {
+            std::size_t used = 0;
+            int k = -1;
+            try { k = std::stoi(value, &used); } catch (const std::exception&) { used = 0; }
+            if (used != value.size() || k < 0)
+                throw std::invalid_argument("cpu: " + where + ": sort_interval = \"" + value +
+                                            "\": expected an integer >= 0 (0: never reorder)");
+            sort_interval_ = k;
+        } else {
+            throw std::invalid_argument("cpu: " + where + ": unknown setting \"" + key +
+                                        "\" (known: specialise, sort_interval)");
+        }
+    }
+}
+
+void CpuSolver::load(const Scene& scene, const ParticleState<double>& initial) {
+    scene_ = scene;
+    // Settings: defaults, then the scene's [backend.cpu] table, then the options (which win).
+    specialise_ = true;
+    sort_interval_ = kDefaultSortInterval;
+    if (auto it = scene.backend_options.find("cpu"); it != scene.backend_options.end())
+        apply_settings(it->second, "scene [backend.cpu]");
+    apply_settings(options_.extra, "backend options");
+    const std::size_t n = initial.size();
+    if (n >= std::size_t(UINT32_MAX)) throw std::invalid_argument("cpu: at most 2^32 - 1 disks (32-bit indices)");
+    state_ = initial.as<float>();  // the one conversion to float; back to double only in read_state
+    original_index_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) original_index_[i] = std::uint32_t(i);
+    for (auto* a : {&dx_, &dy_, &dvx_, &dvy_}) a->assign(n, 0.0f);
+    step_count_ = 0;
+    stats_ = SolverStats{};
+
+    features_ = specialise_ ? FeatureSet::of(scene, state_) : FeatureSet::generic(scene);
+    const Physics& ph = scene.physics;
+    const World& w = scene.world;
+    params_ = PhaseParams{float(ph.restitution), float(ph.friction), float(ph.wall_restitution),
+                          float(ph.gravity_x), float(ph.gravity_y), float(ph.damping),
+                          n > 0 ? state_.radius[0] : 0.0f,
+                          float(w.xmin), float(w.ymin), float(w.xmax), float(w.ymax),
+                          float(w.width()), float(w.height())};
+    const float r_max = n > 0 ? *std::max_element(state_.radius.begin(), state_.radius.end()) : 0.5f;
+    grid_.configure(w, 2.0 * double(r_max));
+}
+
+void CpuSolver::advance_to(double t) {
+    const std::int64_t target = scene_.steps_for(t);
+    if (target < step_count_) throw std::invalid_argument("cpu: advance_to(" + std::to_string(t) + ") is in the past");
+    while (step_count_ < target) step();
+}
+
+void CpuSolver::step() {
+    if (scene_.run.order == StepOrder::collide_first) {
+        step_collide_first(float(scene_.run.dt));
+    } else {
+        const float h = float(scene_.run.dt / scene_.run.substeps);
+        for (int k = 0; k < scene_.run.substeps; ++k) substep_integrate_first(h);
+    }
+    ++step_count_;
+    ++stats_.steps;
+}
+
+void CpuSolver::step_collide_first(float dt) {
+    build_grid();
+    collide();
+    correct_and_integrate(dt);
+}
+
+// Seed 001's six phases: (1) field accelerations, (2) velocity with damping, (3) position,
+// fused into one pass by integrate(); (4) grid rebuild; (5) contact pass; (6) corrections and
+// world bounds.
+void CpuSolver::substep_integrate_first(float h) {
+    integrate(h);
+    build_grid();
+    collide();
+    correct();
+}
+
+void CpuSolver::integrate(float h) {
+    PhaseTimer timer(stats_, "integrate");
+    dispatch([&]<bool Gravity, bool Damping, bool Stones>() {
+        parallel_for(state_.size(), threads_, [&](std::size_t b, std::size_t e) {
+            return integrate_range<Gravity, Damping, Stones>(state_, params_, h, b, e);
+        });
+    }, features_.gravity, features_.damping, features_.stones);
+}
+
+void CpuSolver::build_grid() {
+    {
+        PhaseTimer timer(stats_, "grid");
+        grid_.build(state_.x.data(), state_.y.data(), state_.size(), threads_);
+    }
+    // Every sort_interval steps, move the particles into cell order so that the neighbours a
+    // contact pass reads lie next to each other in memory (docs/cpu-backend.md measures it).
+    // Done once per step (in its first sub-step).
+    if (sort_interval_ > 0 && step_count_ % sort_interval_ == 0 && sorted_at_step_ != step_count_) {
+        sorted_at_step_ = step_count_;
+        sort_by_cell();
+    }
+}
+
+void CpuSolver::sort_by_cell() {
+    PhaseTimer timer(stats_, "sort");
+    const std::uint32_t* order = grid_.sorted_index();
+    std::vector<float> scratch;
+    for (auto* a : state_.arrays()) permute(*a, order, scratch, threads_);
+    std::vector<std::uint32_t> index_scratch;
+    permute(original_index_, order, index_scratch, threads_);
+    grid_.mark_sorted(threads_);
+}
+
+void CpuSolver::collide() {
+    PhaseTimer timer(stats_, "collide");
+    dispatch([&]<bool Friction, bool Stones, bool UniformRadius, bool Periodic>() {
+        stats_.contacts += parallel_for(state_.size(), threads_, [&](std::size_t b, std::size_t e) {
+            return collide_range<Friction, Stones, UniformRadius, Periodic>(state_, grid_, params_, corrections(), b, e);
+        });
+    }, features_.friction, features_.stones, features_.uniform_radius, features_.periodic);
+}
+
+void CpuSolver::correct() {
+    PhaseTimer timer(stats_, "correct");
+    dispatch([&]<bool Stones, bool Periodic>() {
+        parallel_for(state_.size(), threads_, [&](std::size_t b, std::size_t e) {
+            return correct_range<Stones, Periodic>(state_, corrections(), params_, b, e);
+        });
+    }, features_.stones, features_.periodic);
+}
+
+void CpuSolver::correct_and_integrate(float dt) {
+    PhaseTimer timer(stats_, "integrate");
+    dispatch([&]<bool Gravity, bool Damping, bool Stones, bool Periodic>() {
+        parallel_for(state_.size(), threads_, [&](std::size_t b, std::size_t e) {
+            return correct_and_integrate_range<Gravity, Damping, Stones, Periodic>(state_, corrections(), params_,
+                                                                                   dt, b, e);
+        });
+    }, features_.gravity, features_.damping, features_.stones, features_.periodic);
+}
+
+void CpuSolver::read_state(ParticleState<double>& out) const {
+    const std::size_t n = state_.size();
+    out.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t i = original_index_[k];  // back to the scene's order
+        out.x[i] = state_.x[k];
+        out.y[i] = state_.y[k];
+        out.vx[i] = state_.vx[k];
+        out.vy[i] = state_.vy[k];
+        out.radius[i] = state_.radius[k];
+        out.mass[i] = state_.mass[k];
+        out.inv_mass[i] = state_.inv_mass[k];
+    }
+}
+
+std::map<std::string, std::string> CpuSolver::provenance() const {
+    auto on_off = [](bool b) { return std::string(b ? "on" : "off"); };
+    return {
+        {"cpu.threads", std::to_string(threads_)},
+        {"cpu.openmp", std::to_string(_OPENMP)},
+        {"cpu.specialise", on_off(specialise_)},
+        {"cpu.sort_interval", std::to_string(sort_interval_)},
+        {"cpu.features", "gravity=" + on_off(features_.gravity) + " damping=" + on_off(features_.damping) +
+                             " friction=" + on_off(features_.friction) + " stones=" + on_off(features_.stones) +
+                             " uniform_radius=" + on_off(features_.uniform_radius) +
+                             " periodic=" + on_off(features_.periodic)},
+    };
+}
+
+}  // namespace collide::cpu

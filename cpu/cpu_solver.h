@@ -1,0 +1,76 @@
+// The `cpu` backend: the stepping rules of docs/stepping-rules.md (both orders, the same as
+// `step`) in float, on a structure of arrays, with every per-particle phase run in parallel
+// on OpenMP's persistent thread pool. docs/cpu-backend.md walks through it.
+//
+// Guarantees:
+//   * bitwise identical states for any thread count and across reruns (each particle's
+//     update reads a fixed snapshot and sums its neighbours in a fixed order);
+//   * agreement with `step` to float rounding over short horizons;
+//   * read_state returns particles in the scene's order, whatever the internal order is.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "cell_list.h"
+#include "core/solver.h"
+#include "feature_set.h"
+#include "phase_kernels.h"
+
+namespace collide::cpu {
+
+class CpuSolver : public Solver {
+public:
+    // options.threads (0: OpenMP's default); options.extra keys (also accepted from the
+    // scene's [backend.cpu] table, which options override):
+    //   "specialise" = "on" (default) | "off": loops specialised to the scene's features, or
+    //                  the generic loop with every feature compiled in (for the benchmark);
+    //   "sort_interval" = K >= 0: reorder particles by cell every K steps (0: never).
+    explicit CpuSolver(const BackendOptions& options);
+
+    std::string name() const override { return "cpu"; }
+    void load(const Scene& scene, const ParticleState<double>& initial) override;
+    void advance_to(double t) override;
+    void read_state(ParticleState<double>& out) const override;
+    double time() const override { return double(step_count_) * scene_.run.dt; }
+    SolverStats stats() const override { return stats_; }
+    std::map<std::string, std::string> provenance() const override;
+
+    int threads() const { return threads_; }
+    // One full time step dt of the scene's rule.
+    void step();
+
+    // Default of "sort_interval": chosen by the `features` benchmark (docs/cpu-backend.md).
+    static constexpr int kDefaultSortInterval = 16;
+
+private:
+    void apply_settings(const std::map<std::string, std::string>& settings, const std::string& where);
+    void step_collide_first(float dt);
+    void substep_integrate_first(float h);
+
+    void integrate(float h);          // phases 1-3 of integrate-first
+    void build_grid();                // phase 4 (and the periodic reorder by cell)
+    void collide();                   // phase 5: one-sided Jacobi contact pass
+    void correct();                   // phase 6 of integrate-first
+    void correct_and_integrate(float dt);  // collide-first after its contact pass
+    void sort_by_cell();
+    Corrections corrections() { return {dx_.data(), dy_.data(), dvx_.data(), dvy_.data()}; }
+
+    BackendOptions options_;
+    int threads_ = 1;
+    bool specialise_ = true;
+    int sort_interval_ = kDefaultSortInterval;
+
+    Scene scene_;
+    FeatureSet features_;
+    PhaseParams params_;
+    ParticleState<float> state_;              // in the current internal order
+    std::vector<std::uint32_t> original_index_;  // scene index of the particle in each slot
+    std::vector<float> dx_, dy_, dvx_, dvy_;
+    CellList grid_;
+    std::int64_t step_count_ = 0;
+    std::int64_t sorted_at_step_ = -1;
+    SolverStats stats_;
+};
+
+}  // namespace collide::cpu

@@ -1,0 +1,66 @@
+// Collision times of the event-driven solver: pure functions of the relative position and
+// velocity, no state. docs/event-driven.md derives every formula here.
+//
+// Every function returns the time *from now* until the event, or `never` (infinity) if the
+// event does not happen. A result that round-off would place slightly in the past is
+// returned as 0 ("happens now"): the solver then processes the event at the current time
+// instead of moving a particle backwards (round-off rule 1 in docs/event-driven.md).
+#pragma once
+
+#include <cmath>
+#include <limits>
+
+namespace collide::event_time {
+
+inline constexpr double never = std::numeric_limits<double>::infinity();
+
+// Pair collision time of two disks in free flight (no relative acceleration).
+//   d = x_i - x_j (minimum image), u = v_i - v_j, sigma = r_i + r_j.
+// Contact means |d + u t| = sigma, i.e. the quadratic
+//   (u.u) t^2 + 2 (d.u) t + (d.d - sigma^2) = 0.
+// With b = d.u, c = d.d - sigma^2 and the discriminant D = b^2 - (u.u) c, the earlier root is
+//   t = (-b - sqrt(D)) / (u.u) = c / (-b + sqrt(D)),
+// and the second form is used: for an approaching pair b < 0, so -b + sqrt(D) adds two
+// non-negative numbers and has no cancellation (the first form loses all digits when the
+// pair is nearly touching, c -> 0). Only approaching pairs (b < 0) can collide.
+// Touching (c = 0) or slightly overlapping (c < 0, round-off) approaching pairs collide now.
+inline double pair_collision_time(double dx, double dy, double ux, double uy, double sigma) {
+    const double b = dx * ux + dy * uy;
+    if (!(b < 0)) return never;  // separating or sliding past: no collision (also NaN)
+    const double c = dx * dx + dy * dy - sigma * sigma;
+    if (c <= 0) return 0;  // touching or overlapping by round-off and approaching: now
+    const double uu = ux * ux + uy * uy;
+    const double discriminant = b * b - uu * c;
+    if (discriminant <= 0) return never;  // the paths miss (or graze: zero impulse)
+    return c / (-b + std::sqrt(discriminant));
+}
+
+// First time at which a coordinate q(t) = q0 + v t + a t^2 / 2 crosses the level q0 + d
+// moving *upwards* (q'(t) > 0 at the crossing). Used for cell borders and walls, with or
+// without gravity a. Requiring the direction of the crossing picks the right root of the
+// quadratic a/2 t^2 + v t - d = 0: a disk that has just crossed a border upwards sits on it
+// (d ~ 0) and must not "cross" it again at t ~ 0; its next upward crossing is a different one.
+// With D = v^2 + 2 a d the upward root has q'(t) = +sqrt(D), so t = (sqrt(D) - v) / a,
+// evaluated as 2 d / (v + sqrt(D)) when v >= 0 (no cancellation, and valid for a = 0).
+inline double upward_crossing_time(double d, double v, double a) {
+    const double discriminant = v * v + 2 * a * d;
+    if (discriminant < 0) return never;  // turns around below the level
+    const double root = std::sqrt(discriminant);
+    double t;
+    if (v >= 0) {
+        const double denominator = v + root;
+        if (denominator == 0) return (a > 0 && d <= 0) ? 0.0 : never;  // at rest on the level
+        t = 2 * d / denominator;
+    } else {
+        if (!(a > 0)) return never;  // moving down and not pulled up: never crosses upwards
+        t = (root - v) / a;
+    }
+    return t > 0 ? t : 0.0;  // a level already passed (round-off): now
+}
+
+// First downward crossing of the level q0 + d: the mirror image of the upward crossing.
+inline double downward_crossing_time(double d, double v, double a) {
+    return upward_crossing_time(-d, -v, -a);
+}
+
+}  // namespace collide::event_time

@@ -1,0 +1,497 @@
+#include "event_solver.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+#include "collision_time.h"
+#include "core/stepping_laws.hpp"
+
+namespace collide {
+namespace {
+
+using event_time::never;
+
+// Initial states may touch or reach a wall to within this fraction of the contact distance
+// (e.g. a lattice with spacing exactly 2r, rounded); anything deeper is an input error.
+constexpr double overlap_tolerance = 1e-10;
+
+std::string describe(double v) {
+    std::ostringstream s;
+    s.precision(17);
+    s << v;
+    return s.str();
+}
+
+bool scene_has_stones(const Scene& scene) {
+    for (const auto& g : scene.generators) {
+        if (g.stone) return true;
+        for (const auto& d : g.disks)
+            if (d.stone) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+std::optional<std::string> EventSolver::supports(const Scene& scene) {
+    if (scene.has_friction())
+        return "friction: hard disks of the event-driven model are smooth (no tangential impulse)";
+    if (scene.has_damping())
+        return "damping: a velocity-dependent drag is not free flight between events";
+    if (scene.has_gravity() && scene_has_stones(scene))
+        return "gravity with stones: a falling disk moves on a parabola relative to a fixed stone, "
+               "so their collision time is a quartic root, which this solver does not compute";
+    return std::nullopt;
+}
+
+// ---------------------------------------------------------------------------------------
+// Loading and input checks
+// ---------------------------------------------------------------------------------------
+
+void EventSolver::load(const Scene& scene, const ParticleState<double>& initial) {
+    if (auto reason = supports(scene)) throw std::runtime_error("event: scene '" + scene.name + "': " + *reason);
+    scene_ = scene;
+    validate_input(initial);
+    const std::size_t n = initial.size();
+    state_ = initial;
+    gx_ = scene.physics.gravity_x;
+    gy_ = scene.physics.gravity_y;
+    const World& w = scene.world;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (state_.is_stone(i)) {
+            // Kinematic stones never move, as in the stepping rules.
+            if (gx_ != 0 || gy_ != 0)
+                throw std::runtime_error("event: particle " + std::to_string(i) +
+                                         " is a stone and the scene has gravity, which this solver does not "
+                                         "support (the collision time would be a quartic root)");
+            state_.vx[i] = state_.vy[i] = 0;
+        }
+        if (scene.periodic()) {
+            state_.x[i] = WallLaw<double>::wrap(state_.x[i], w.xmin, w.width());
+            state_.y[i] = WallLaw<double>::wrap(state_.y[i], w.ymin, w.height());
+        }
+    }
+    flight_.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+        flight_[i] = Flight{state_.x[i], state_.y[i], state_.vx[i], state_.vy[i], 0.0, state_.radius[i]};
+    count_.assign(n, 0);
+    last_collision_.assign(n, -std::numeric_limits<double>::infinity());
+    prediction_.assign(n, Prediction{});
+    now_ = progress_mark_ = kinetic_mark_ = 0;
+    events_since_mark_ = 0;
+    pair_events_ = wall_events_ = cell_events_ = stale_events_ = tc_elastic_ = 0;
+    virial_ = kinetic_integral_ = CompensatedSum{};
+    for (auto& s : wall_impulse_) s = CompensatedSum{};
+
+    double r_max = 0, r_sum = 0, v2_sum = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        r_max = std::max(r_max, flight_[i].radius);
+        r_sum += flight_[i].radius;
+        v2_sum += flight_[i].vx * flight_[i].vx + flight_[i].vy * flight_[i].vy;
+    }
+    cells_.configure(w, n > 0 ? 2 * r_max : 1.0, n);
+    if (scene.periodic() && (cells_.cells_x() < 3 || cells_.cells_y() < 3))
+        throw std::runtime_error("event: periodic box " + describe(w.width()) + " x " + describe(w.height()) +
+                                 " is narrower than 3 contact distances (2 r_max = " + describe(2 * r_max) +
+                                 "); the minimum-image convention needs at least 3 cells per axis");
+    for (std::uint32_t i = 0; i < n; ++i) cells_.insert(i, cells_.column_of(flight_[i].x), cells_.row_of(flight_[i].y));
+    reject_overlaps();
+
+    // Time scale: the time a typical disk needs to travel one diameter (from the rms speed or,
+    // for disks starting at rest under gravity, from the fall speed over one diameter).
+    const double diameter = n > 0 ? 2 * r_sum / double(n) : 1.0;
+    const double speed = std::max(n > 0 ? std::sqrt(v2_sum / double(n)) : 0.0, std::sqrt(std::hypot(gx_, gy_) * diameter));
+    time_scale_ = speed > 0 ? diameter / speed : 1.0;
+    tc_ = tc_duration();
+
+    queue_.reset(n);
+    for (std::uint32_t i = 0; i < n; ++i) predict(i);
+    kinetic_ = kinetic_energy_now();
+}
+
+double EventSolver::tc_duration() const {
+    // TC model (S. Luding and S. McNamara, Granular Matter 1 (1998) 113): a collision that
+    // follows another collision of the same disk within t_c is treated as elastic. This stops
+    // the inelastic collapse of e < 1 (infinitely many collisions in finite time, McNamara &
+    // Young, Phys. Fluids A 4 (1992) 496). The default t_c is 1e-4 of the time a disk needs to
+    // cross one diameter: far below the mean free time of a gas (about 0.05 of it even at area
+    // fraction 0.7), so mainly collisions inside a collapsing cluster are affected, yet large
+    // enough that a column settling on a floor under gravity stays resolvable in double (with
+    // 1e-6 the gaps fall below the rounding of the positions and the loop stalls). The counter
+    // `tc_elastic` says how many collisions were made elastic.
+    double tc = 1e-4 * time_scale_;
+    auto options = scene_.backend_options.find("event");
+    if (options == scene_.backend_options.end()) return tc;
+    for (const auto& [key, value] : options->second) {
+        if (key != "tc")
+            throw std::runtime_error("event: scene '" + scene_.name + "' [backend.event]: unknown key '" + key +
+                                     "' (known: tc)");
+        std::size_t used = 0;
+        try {
+            tc = std::stod(value, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used != value.size() || !(tc >= 0) || !std::isfinite(tc))
+            throw std::runtime_error("event: scene '" + scene_.name + "' [backend.event] tc = '" + value +
+                                     "': expected a duration >= 0");
+    }
+    return tc;
+}
+
+void EventSolver::validate_input(const ParticleState<double>& s) const {
+    const Physics& p = scene_.physics;
+    if (!(p.restitution >= 0 && p.restitution <= 1))
+        throw std::runtime_error("event: scene '" + scene_.name + "': restitution e = " + describe(p.restitution) +
+                                 " must lie in [0, 1] (e > 1 would create energy at every collision)");
+    if (!(p.wall_restitution >= 0 && p.wall_restitution <= 1))
+        throw std::runtime_error("event: scene '" + scene_.name + "': wall restitution " +
+                                 describe(p.wall_restitution) + " must lie in [0, 1]");
+    const World& w = scene_.world;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        const std::string who = "event: particle " + std::to_string(i) + " ";
+        if (!(s.radius[i] > 0) || !std::isfinite(s.radius[i]))
+            throw std::runtime_error(who + "has radius " + describe(s.radius[i]) + "; hard disks need a radius > 0");
+        if (!(s.mass[i] > 0) || !std::isfinite(s.mass[i]))
+            throw std::runtime_error(who + "has mass " + describe(s.mass[i]) + "; expected a mass > 0");
+        for (double v : {s.x[i], s.y[i], s.vx[i], s.vy[i]})
+            if (!std::isfinite(v)) throw std::runtime_error(who + "has a non-finite position or velocity");
+        if (scene_.periodic()) continue;
+        const double r = s.radius[i], slack = overlap_tolerance * 2 * r;
+        if (s.x[i] - r < w.xmin - slack || s.x[i] + r > w.xmax + slack || s.y[i] - r < w.ymin - slack ||
+            s.y[i] + r > w.ymax + slack)
+            throw std::runtime_error(who + "at (" + describe(s.x[i]) + ", " + describe(s.y[i]) + ") with radius " +
+                                     describe(r) + " reaches outside the walls [" + describe(w.xmin) + ", " +
+                                     describe(w.xmax) + "] x [" + describe(w.ymin) + ", " + describe(w.ymax) + "]");
+    }
+}
+
+void EventSolver::reject_overlaps() const {
+    const bool periodic = scene_.periodic();
+    const World& w = scene_.world;
+    for (std::uint32_t i = 0; i < state_.size(); ++i) {
+        cells_.for_each_neighbour(i, [&](std::uint32_t j) {
+            if (j <= i) return;
+            double dx = flight_[i].x - flight_[j].x, dy = flight_[i].y - flight_[j].y;
+            if (periodic) {
+                dx = WallLaw<double>::minimum_image(dx, w.width());
+                dy = WallLaw<double>::minimum_image(dy, w.height());
+            }
+            const double sigma = flight_[i].radius + flight_[j].radius;
+            const double distance = std::hypot(dx, dy);
+            if (sigma - distance > overlap_tolerance * sigma)
+                throw std::runtime_error("event: initial state overlaps: particles " + std::to_string(i) + " and " +
+                                         std::to_string(j) + " overlap by " + describe(sigma - distance) +
+                                         " (centre distance " + describe(distance) + ", contact distance " +
+                                         describe(sigma) + ")");
+        });
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// The event loop
+// ---------------------------------------------------------------------------------------
+
+void EventSolver::advance_to(double t) {
+    if (t < now_)
+        throw std::invalid_argument("event: advance_to(" + describe(t) + ") is before the current time " + describe(now_));
+    while (!queue_.empty() && queue_.top_time() <= t) process_event();
+    now_ = t;
+}
+
+void EventSolver::process_event() {
+    const std::uint32_t i = queue_.top();
+    // Event times are never earlier than the time they were predicted at (collision_time.h
+    // clamps to "now"), so simulated time never runs backwards.
+    now_ = std::max(now_, queue_.top_time());
+    check_progress(i);
+    const Prediction p = prediction_[i];
+    switch (p.kind) {
+    case EventKind::pair:
+        if (count_[p.partner] != p.partner_count) {
+            // The partner changed course after this was predicted: the event is stale.
+            ++stale_events_;
+            predict(i);
+            return;
+        }
+        collide_pair(i, p.partner);
+        predict(i);
+        predict(p.partner);
+        return;
+    case EventKind::wall:
+        collide_wall(i, p.partner);
+        predict(i);
+        return;
+    case EventKind::cell:
+        cross_cell(i, p.partner);
+        predict(i);
+        return;
+    case EventKind::none:
+        return;  // unreachable: such a disk's time is infinite
+    }
+}
+
+// An event loop that keeps finding events without simulated time moving on (inelastic
+// collapse with t_c = 0, a disk at rest on a floor) must be reported, not spun forever.
+void EventSolver::check_progress(std::uint32_t i) {
+    const double resolution = 1e-12 * time_scale_ + 4 * std::numeric_limits<double>::epsilon() * std::fabs(now_);
+    if (now_ > progress_mark_ + resolution) {
+        progress_mark_ = now_;
+        events_since_mark_ = 0;
+        return;
+    }
+    // A Newton's cradle of N touching disks legitimately has N events at one instant.
+    const std::int64_t limit = 10 * std::int64_t(state_.size()) + 100000;
+    if (++events_since_mark_ <= limit) return;
+    const Prediction& p = prediction_[i];
+    const std::string with = p.kind == EventKind::pair ? "particle " + std::to_string(p.partner)
+                             : p.kind == EventKind::wall ? "wall " + std::to_string(p.partner)
+                                                         : "a cell border";
+    throw std::runtime_error("event: no progress in simulated time: " + std::to_string(events_since_mark_) +
+                             " events at t = " + describe(now_) + " within " + describe(resolution) +
+                             "; the last one between particle " + std::to_string(i) + " and " + with +
+                             ". Likely an inelastic collapse (set [backend.event] tc > 0) or a disk "
+                             "resting on a wall under gravity");
+}
+
+// ---------------------------------------------------------------------------------------
+// Free flight and prediction
+// ---------------------------------------------------------------------------------------
+
+void EventSolver::bring_to_now(std::uint32_t i) {
+    const double dt = now_ - flight_[i].t;
+    flight_[i].t = now_;
+    if (dt == 0 || state_.is_stone(i)) return;
+    // Free flight under uniform gravity: x(t) = x + v dt + g dt^2 / 2, v(t) = v + g dt.
+    flight_[i].x += (flight_[i].vx + 0.5 * gx_ * dt) * dt;
+    flight_[i].y += (flight_[i].vy + 0.5 * gy_ * dt) * dt;
+    flight_[i].vx += gx_ * dt;
+    flight_[i].vy += gy_ * dt;
+}
+
+void EventSolver::predict(std::uint32_t i) {
+    if (state_.is_stone(i)) {  // stones never move: their events are found by the movers
+        prediction_[i] = Prediction{};
+        queue_.update(i, never);
+        return;
+    }
+    bring_to_now(i);
+    Prediction best;
+    double best_dt = earliest_border_or_wall(i, best);
+    const double xi = flight_[i].x, yi = flight_[i].y, vxi = flight_[i].vx, vyi = flight_[i].vy, ri = flight_[i].radius;
+    const bool periodic = scene_.periodic();
+    const double width = scene_.world.width(), height = scene_.world.height();
+    cells_.for_each_neighbour(i, [&](std::uint32_t j) {
+        if (j == i) return;
+        double xj, yj, vxj, vyj;
+        position_now(j, xj, yj, vxj, vyj);
+        double dx = xi - xj, dy = yi - yj;
+        if (periodic) {
+            // Minimum image; both centres lie in [lo, lo + L), so one shift is enough
+            // (cheaper than WallLaw::minimum_image's division in this innermost loop).
+            if (dx > 0.5 * width) dx -= width;
+            else if (dx < -0.5 * width) dx += width;
+            if (dy > 0.5 * height) dy -= height;
+            else if (dy < -0.5 * height) dy += height;
+        }
+        // Both disks feel the same gravity, so their relative motion is a straight line.
+        const double dt = event_time::pair_collision_time(dx, dy, vxi - vxj, vyi - vyj, ri + flight_[j].radius);
+        if (dt < best_dt) {
+            best_dt = dt;
+            best = Prediction{EventKind::pair, j, count_[j]};
+        }
+    });
+    prediction_[i] = best;
+    queue_.update(i, now_ + best_dt);
+}
+
+// The earliest crossing of one of the four borders of disk i's cell, or of a wall.
+double EventSolver::earliest_border_or_wall(std::uint32_t i, Prediction& p) const {
+    const World& w = scene_.world;
+    const bool periodic = scene_.periodic();
+    const double r = flight_[i].radius;
+    const std::int64_t cx = cells_.column(i), cy = cells_.row(i);
+    double best = never;
+    auto consider = [&](double t, EventKind kind, std::uint32_t which) {
+        if (t < best) best = t, p = Prediction{kind, which, 0};
+    };
+    // One axis: position q, velocity v, acceleration a, cell index c of n cells.
+    auto axis = [&](double q, double v, double a, std::int64_t c, std::int64_t n, double border_lo, double border_hi,
+                    double wall_lo, double wall_hi, std::uint32_t lo_id) {
+        if (periodic || c > 0) consider(event_time::downward_crossing_time(border_lo - q, v, a), EventKind::cell, lo_id);
+        if (periodic || c < n - 1) consider(event_time::upward_crossing_time(border_hi - q, v, a), EventKind::cell, lo_id + 1);
+        if (periodic) return;
+        consider(event_time::downward_crossing_time(wall_lo + r - q, v, a), EventKind::wall, lo_id);
+        consider(event_time::upward_crossing_time(wall_hi - r - q, v, a), EventKind::wall, lo_id + 1);
+    };
+    axis(flight_[i].x, flight_[i].vx, gx_, cx, cells_.cells_x(), cells_.border_x(cx), cells_.border_x(cx + 1), w.xmin,
+         w.xmax, 0);
+    axis(flight_[i].y, flight_[i].vy, gy_, cy, cells_.cells_y(), cells_.border_y(cy), cells_.border_y(cy + 1), w.ymin,
+         w.ymax, 2);
+    return best;
+}
+
+// ---------------------------------------------------------------------------------------
+// Applying events
+// ---------------------------------------------------------------------------------------
+
+double EventSolver::restitution_now(double e, std::uint32_t i, std::uint32_t j) {
+    if (e == 1) return 1;
+    if (now_ - last_collision_[i] < tc_ || now_ - last_collision_[j] < tc_) {
+        ++tc_elastic_;
+        return 1;
+    }
+    return e;
+}
+
+void EventSolver::collide_pair(std::uint32_t i, std::uint32_t j) {
+    bring_to_now(i);
+    bring_to_now(j);
+    double dx = flight_[i].x - flight_[j].x, dy = flight_[i].y - flight_[j].y;
+    if (scene_.periodic()) {
+        dx = WallLaw<double>::minimum_image(dx, scene_.world.width());
+        dy = WallLaw<double>::minimum_image(dy, scene_.world.height());
+    }
+    const double ux = flight_[i].vx - flight_[j].vx, uy = flight_[i].vy - flight_[j].vy;
+    const double b = dx * ux + dy * uy;  // d.u < 0: approaching
+    if (!(b < 0)) return;                // a grazing contact that round-off turned into a miss
+    const double d2 = dx * dx + dy * dy;
+    const double wi = state_.inv_mass[i], wj = state_.inv_mass[j];
+    const double e = restitution_now(scene_.physics.restitution, i, j);
+    // Normal impulse of a smooth collision with restitution e (contact_law.h, without the
+    // overlap correction and friction): J = -(1 + e) (u.n) / (w_i + w_j), n = d / |d|.
+    // Written as J n = g d with g = -(1 + e) (d.u) / (|d|^2 (w_i + w_j)).
+    const double g = -(1 + e) * b / (d2 * (wi + wj));
+    flight_[i].vx += wi * g * dx;
+    flight_[i].vy += wi * g * dy;
+    flight_[j].vx -= wj * g * dx;
+    flight_[j].vy -= wj * g * dy;
+    // Collision virial d.(J n) = g |d|^2 (the pressure, see stats()).
+    virial_.add(g * d2);
+    // Energy lost: (1 - e^2)/2 * mu (u.n)^2 with the reduced mass mu = 1/(w_i + w_j).
+    if (e != 1) {
+        kinetic_integral_.add(kinetic_ * (now_ - kinetic_mark_));
+        kinetic_mark_ = now_;
+        kinetic_ -= 0.5 * (1 - e * e) * b * b / (d2 * (wi + wj));
+    }
+    ++count_[i];
+    ++count_[j];
+    last_collision_[i] = last_collision_[j] = now_;
+    ++pair_events_;
+}
+
+void EventSolver::collide_wall(std::uint32_t i, std::uint32_t wall) {
+    bring_to_now(i);
+    const World& w = scene_.world;
+    const double r = flight_[i].radius;
+    const bool x_axis = wall < 2, low = wall % 2 == 0;
+    double& q = x_axis ? flight_[i].x : flight_[i].y;
+    double& v = x_axis ? flight_[i].vx : flight_[i].vy;
+    // Round-off rule: the centre is put back exactly on the contact line, never beyond it.
+    const double contact = x_axis ? (low ? w.xmin + r : w.xmax - r) : (low ? w.ymin + r : w.ymax - r);
+    q = low ? std::max(q, contact) : std::min(q, contact);
+    ++wall_events_;
+    if (low ? !(v < 0) : !(v > 0)) return;  // at rest on the contact line: nothing to reflect
+    const double e = restitution_now(scene_.physics.wall_restitution, i, i);
+    const double m = state_.mass[i];
+    wall_impulse_[wall].add(m * (1 + e) * std::fabs(v));
+    if (e != 1) {
+        kinetic_integral_.add(kinetic_ * (now_ - kinetic_mark_));
+        kinetic_mark_ = now_;
+        kinetic_ -= 0.5 * m * (1 - e * e) * v * v;
+    }
+    v = -e * v;
+    ++count_[i];
+    last_collision_[i] = now_;
+}
+
+void EventSolver::cross_cell(std::uint32_t i, std::uint32_t border) {
+    bring_to_now(i);
+    std::int64_t cx = cells_.column(i), cy = cells_.row(i);
+    switch (border) {
+    case 0: --cx; break;
+    case 1: ++cx; break;
+    case 2: --cy; break;
+    default: ++cy; break;
+    }
+    // Periodic box: leaving through one side is entering through the other.
+    const World& w = scene_.world;
+    if (cx < 0) cx += cells_.cells_x(), flight_[i].x += w.width();
+    if (cx >= cells_.cells_x()) cx -= cells_.cells_x(), flight_[i].x -= w.width();
+    if (cy < 0) cy += cells_.cells_y(), flight_[i].y += w.height();
+    if (cy >= cells_.cells_y()) cy -= cells_.cells_y(), flight_[i].y -= w.height();
+    cells_.remove(i);
+    cells_.insert(i, cx, cy);
+    ++cell_events_;
+}
+
+// ---------------------------------------------------------------------------------------
+// Output
+// ---------------------------------------------------------------------------------------
+
+void EventSolver::read_state(ParticleState<double>& out) const {
+    out = state_;
+    const World& w = scene_.world;
+    for (std::uint32_t i = 0; i < state_.size(); ++i) {
+        position_now(i, out.x[i], out.y[i], out.vx[i], out.vy[i]);
+        if (scene_.periodic()) {
+            out.x[i] = WallLaw<double>::wrap(out.x[i], w.xmin, w.width());
+            out.y[i] = WallLaw<double>::wrap(out.y[i], w.ymin, w.height());
+        }
+    }
+}
+
+double EventSolver::kinetic_energy_now() const {
+    CompensatedSum k;
+    for (std::size_t i = 0; i < state_.size(); ++i)
+        if (!state_.is_stone(i)) k.add(0.5 * state_.mass[i] * (flight_[i].vx * flight_[i].vx + flight_[i].vy * flight_[i].vy));
+    return k.value();
+}
+
+SolverStats EventSolver::stats() const {
+    SolverStats s;
+    s.contacts = pair_events_;
+    s.steps = pair_events_ + wall_events_ + cell_events_;
+    auto& c = s.counters;
+    c["events_pair"] = double(pair_events_);
+    c["events_wall"] = double(wall_events_);
+    c["events_cell"] = double(cell_events_);
+    c["events_stale"] = double(stale_events_);
+    c["tc_elastic"] = double(tc_elastic_);
+    c["simulated_time"] = now_;
+    const double t = now_, n = double(state_.size()), area = scene_.world.width() * scene_.world.height();
+    if (t > 0 && n > 0) {
+        // Every collision involves two disks: collisions per disk per unit time = 2 C / (N t).
+        c["collision_rate"] = 2 * double(pair_events_) / (n * t);
+        c["collisions_per_time"] = double(pair_events_) / t;
+    }
+    c["virial_sum"] = virial_.value();
+    if (scene_.periodic()) {
+        // Virial theorem for impulsive forces in 2D (docs/event-driven.md):
+        //   P A = <K> + (1 / (2 t)) sum_collisions d.(J n),   <K> = time average of kinetic energy.
+        if (!scene_.has_gravity()) {
+            const double kinetic_integral = kinetic_integral_.value() + kinetic_ * (now_ - kinetic_mark_);
+            c["kinetic_integral"] = kinetic_integral;
+            if (t > 0) c["pressure"] = (kinetic_integral / t + virial_.value() / (2 * t)) / area;
+        }
+    } else {
+        // Mechanical pressure: momentum given to the walls per unit time and unit wall length.
+        static const char* names[4] = {"wall_impulse_xmin", "wall_impulse_xmax", "wall_impulse_ymin", "wall_impulse_ymax"};
+        double total = 0;
+        for (int k = 0; k < 4; ++k) c[names[k]] = wall_impulse_[k].value(), total += wall_impulse_[k].value();
+        c["wall_impulse"] = total;
+        const double perimeter = 2 * (scene_.world.width() + scene_.world.height());
+        if (t > 0) c["pressure"] = total / (perimeter * t);
+    }
+    return s;
+}
+
+std::map<std::string, std::string> EventSolver::provenance() const {
+    return {{"event.tc", describe(tc_)},
+            {"event.cells", std::to_string(cells_.cells_x()) + "x" + std::to_string(cells_.cells_y())}};
+}
+
+}  // namespace collide

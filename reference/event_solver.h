@@ -1,0 +1,113 @@
+// The `event` backend: exact event-driven dynamics of hard disks (EDMD), double precision,
+// serial. The ground truth the other backends are measured against. docs/event-driven.md is
+// the walkthrough of this file and event_solver.cpp.
+//
+// Between events every disk flies freely (a straight line, a parabola under gravity). The
+// solver predicts, for every disk, its earliest event: a collision with a neighbour
+// (collision_time.h), a wall, or the crossing of a cell border (cell_list.h). It jumps to
+// the earliest event of all (event_queue.h), applies it, and re-predicts only the disks whose
+// course changed. Each disk carries its own clock (the time its position was last written),
+// so an event touches only the disks involved, whatever N is.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cell_list.h"
+#include "core/compensated_sum.h"
+#include "core/solver.h"
+#include "event_queue.h"
+
+namespace collide {
+
+class EventSolver : public Solver {
+public:
+    // Empty if the event-driven model covers the scene, else the reason it does not.
+    static std::optional<std::string> supports(const Scene& scene);
+
+    std::string name() const override { return "event"; }
+    void load(const Scene& scene, const ParticleState<double>& initial) override;
+    void advance_to(double t) override;
+    void read_state(ParticleState<double>& out) const override;
+    double time() const override { return now_; }
+    SolverStats stats() const override;
+    std::map<std::string, std::string> provenance() const override;
+
+    // The collapse-guard duration t_c of the TC model in use (see tc_duration in the .cpp).
+    double tc() const { return tc_; }
+
+private:
+    enum class EventKind : std::uint8_t { none, pair, wall, cell };
+    // Walls and cell borders are numbered: 0 = x low, 1 = x high, 2 = y low, 3 = y high.
+    struct Prediction {
+        EventKind kind = EventKind::none;
+        std::uint32_t partner = 0;        // the other disk (pair) or the wall/border number
+        std::uint32_t partner_count = 0;  // the partner's event counter when predicted
+    };
+
+    void validate_input(const ParticleState<double>& initial) const;
+    void reject_overlaps() const;
+    void process_event();
+    void check_progress(std::uint32_t i);
+
+    // Free flight of disk i from its own clock to `now_` (written back: the clock moves).
+    void bring_to_now(std::uint32_t i);
+    // Position/velocity disk j would have at `now_`, without touching its state.
+    void position_now(std::uint32_t j, double& x, double& y, double& vx, double& vy) const {
+        // Stones have zero velocity and scenes with stones have no gravity: no special case.
+        const Flight& f = flight_[j];
+        const double dt = now_ - f.t;
+        x = f.x + (f.vx + 0.5 * gx_ * dt) * dt;
+        y = f.y + (f.vy + 0.5 * gy_ * dt) * dt;
+        vx = f.vx + gx_ * dt;
+        vy = f.vy + gy_ * dt;
+    }
+    // Re-predicts disk i's earliest event from `now_` and files it in the queue.
+    void predict(std::uint32_t i);
+    double earliest_border_or_wall(std::uint32_t i, Prediction& p) const;
+
+    void collide_pair(std::uint32_t i, std::uint32_t j);
+    void collide_wall(std::uint32_t i, std::uint32_t wall);
+    void cross_cell(std::uint32_t i, std::uint32_t border);
+    // Restitution for a collision now, after the TC model (Luding & McNamara 1998).
+    double restitution_now(double e, std::uint32_t i, std::uint32_t j);
+    double tc_duration() const;
+    double kinetic_energy_now() const;
+
+    // One disk's free flight: position and velocity valid at the disk's own clock t. Kept
+    // together (one cache line) because predicting reads all of them for every neighbour.
+    struct Flight {
+        double x, y, vx, vy;
+        double t;       // the disk's clock
+        double radius;
+    };
+
+    Scene scene_;
+    ParticleState<double> state_;      // masses and stone flags; positions only on load
+    std::vector<Flight> flight_;
+    std::vector<std::uint32_t> count_; // event counter: bumped whenever disk i changes course
+    std::vector<double> last_collision_;
+    std::vector<Prediction> prediction_;
+    CellList cells_;
+    EventQueue queue_;
+    double gx_ = 0, gy_ = 0;
+    double now_ = 0;
+    double tc_ = 0;
+    double time_scale_ = 1;            // typical time between collisions, for the guards
+
+    // Progress guard: events since simulated time last advanced noticeably.
+    double progress_mark_ = 0;
+    std::int64_t events_since_mark_ = 0;
+
+    // Statistics.
+    std::int64_t pair_events_ = 0, wall_events_ = 0, cell_events_ = 0, stale_events_ = 0;
+    std::int64_t tc_elastic_ = 0;
+    CompensatedSum virial_;            // sum over collisions of |d| J (pair impulse J)
+    CompensatedSum wall_impulse_[4];   // momentum transferred to each wall
+    CompensatedSum kinetic_integral_;  // integral of K dt up to kinetic_mark_
+    double kinetic_ = 0, kinetic_mark_ = 0;
+};
+
+}  // namespace collide

@@ -1,0 +1,219 @@
+// The `box2d` backend on cases with exact answers. Tolerances follow from Box2D's solver (see
+// docs/box2d-baseline.md): an isolated contact is one constraint, which the first
+// sequential-impulse iteration solves exactly, so a binary collision is exact up to float
+// rounding (a few ulps of 6e-8 on velocities of order 1: kFloat = 1e-5).
+#include <gtest/gtest.h>
+
+#include <box2d/b2_common.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "box2d/box2d_solver.h"
+#include "core/metrics.h"
+#include "core/run_driver.h"
+#include "tests/support/test_scenes.h"
+
+namespace collide {
+namespace {
+
+constexpr double kFloat = 1e-5;
+
+ParticleState<double> run_to(const Scene& scene, const ParticleState<double>& initial, double t,
+                             Box2dSolver* solver_out = nullptr) {
+    Box2dSolver local;
+    Box2dSolver& solver = solver_out ? *solver_out : local;
+    solver.load(scene, initial);
+    solver.advance_to(t);
+    ParticleState<double> s;
+    solver.read_state(s);
+    return s;
+}
+
+TEST(Box2dSolver, HeadOnEqualMassesExchangeVelocities) {
+    Scene scene = test::box_scene(10, 4);
+    scene.run.dt = 1e-3;
+    Box2dSolver solver;
+    const auto s = run_to(scene, test::make_state({{3, 2, 1, 0, 0.5, 1}, {7, 2, -1, 0, 0.5, 1}}), 2.0, &solver);
+    EXPECT_NEAR(s.vx[0], -1.0, kFloat);
+    EXPECT_NEAR(s.vx[1], 1.0, kFloat);
+    EXPECT_NEAR(s.vy[0], 0.0, kFloat);
+    // Contact at t = 1.5; afterwards each disk moves back with speed 1 for 0.5. Box2D finds the
+    // contact only once the disks overlap (no speculative contact for circles), so the bounce
+    // comes up to one step late: the positions are exact to |v| dt.
+    EXPECT_NEAR(s.x[0], 4.5 - 0.5, 2 * scene.run.dt);
+    EXPECT_NEAR(s.x[1], 5.5 + 0.5, 2 * scene.run.dt);
+    EXPECT_GE(solver.stats().contacts, 1);
+    EXPECT_EQ(solver.stats().steps, 2000);
+}
+
+TEST(Box2dSolver, WallsReflectOnAllFourSides) {
+    // The chain loop is one-sided: a wrong winding would let the disks fly through the walls.
+    Scene scene = test::box_scene(20, 20);
+    scene.run.dt = 1e-3;
+    const auto s = run_to(scene,
+                          test::make_state({{10, 3, 2, 0, 0.5, 1}, {10, 17, -2, 0, 0.5, 1},
+                                            {3, 10, 0, -2, 0.5, 1}, {17, 10, 0, 2, 0.5, 1}}),
+                          5.0);
+    // Each disk reaches its wall at t = 4.75 and comes back with its speed reversed:
+    // disk 0 turns at x = 19.5 and is back at x = 19 at t = 5, disk 2 likewise at y = 1.
+    EXPECT_NEAR(s.vx[0], -2.0, kFloat);
+    EXPECT_NEAR(s.vx[1], 2.0, kFloat);
+    EXPECT_NEAR(s.vy[2], 2.0, kFloat);
+    EXPECT_NEAR(s.vy[3], -2.0, kFloat);
+    // The skin of the chain sits on the wall: the disks turn around 0.5 from it.
+    EXPECT_NEAR(s.x[0], 19.0, 3 * 2 * scene.run.dt);
+    EXPECT_NEAR(s.y[2], 1.0, 3 * 2 * scene.run.dt);
+}
+
+TEST(Box2dSolver, WallRestitutionOverridesBox2dsMaxMixing) {
+    Scene scene = test::box_scene(10, 10);
+    scene.physics.wall_restitution = 0.5;  // pair restitution stays 1
+    scene.run.dt = 1e-3;
+    const auto s = run_to(scene, test::make_state({{2, 5, -2, 0, 0.5, 1}}), 1.0);
+    EXPECT_NEAR(s.vx[0], 1.0, kFloat);
+}
+
+TEST(Box2dSolver, StoneNeverMovesUnderGravityAndImpacts) {
+    Scene scene = test::box_scene(10, 10);
+    scene.physics.gravity_y = -9.81;
+    scene.run.dt = 1e-3;
+    const auto s = run_to(scene, test::make_state({{5, 3, 0, 0, 1.0, 1, true}, {5, 8, 0, -3, 0.5, 1}}), 1.5);
+    EXPECT_EQ(s.x[0], 5.0);
+    EXPECT_EQ(s.y[0], 3.0);
+    EXPECT_EQ(s.vx[0], 0.0);
+    EXPECT_EQ(s.vy[0], 0.0);
+    // The falling disk (speed ~ 9 at impact, t ~ 0.64) has bounced: it is above the stone.
+    EXPECT_GT(s.y[1], 3.0 + 1.5 - 0.05);
+}
+
+TEST(Box2dSolver, FreeFlightIsSemiImplicitEulerInSceneUnits) {
+    // Radius 0.05 gives the default scale s = 10: positions and speeds must come back unscaled.
+    // Box2D integrates v_{k+1} = v_k + h g, x_{k+1} = x_k + h v_{k+1}, so after n steps
+    // y_n = y_0 + n h v_0 + g h^2 n (n + 1) / 2.
+    Scene scene = test::box_scene(100, 100);
+    scene.physics.gravity_y = -2.0;
+    scene.run.dt = 0.01;
+    Box2dSolver solver;
+    const auto s = run_to(scene, test::make_state({{30, 80, 1.5, 0.5, 0.05, 1}}), 1.0, &solver);
+    EXPECT_DOUBLE_EQ(solver.units().scale, 10.0);
+    const double n = 100, h = 0.01;
+    EXPECT_NEAR(s.x[0], 30 + n * h * 1.5, 1e-4);
+    EXPECT_NEAR(s.y[0], 80 + n * h * 0.5 - 2.0 * h * h * n * (n + 1) / 2, 1e-4);
+    EXPECT_NEAR(s.vy[0], 0.5 - 2.0, kFloat);
+}
+
+TEST(Box2dSolver, DampingIsBox2dsImplicitDecay) {
+    // Box2D applies v <- v / (1 + h gamma) each step: after n steps v_0 / (1 + h gamma)^n.
+    Scene scene = test::box_scene(100, 100);
+    scene.physics.damping = 0.5;
+    scene.run.dt = 0.01;
+    const auto s = run_to(scene, test::make_state({{50, 50, 2, 0, 0.5, 1}}), 1.0);
+    EXPECT_NEAR(s.vx[0], 2.0 / std::pow(1 + 0.01 * 0.5, 100), kFloat);
+}
+
+TEST(Box2dSolver, SleepingIsOff) {
+    // A disk slower than Box2D's sleep tolerance (0.01 m/s) would fall asleep after 0.5 s and
+    // stop; with sleeping off it keeps drifting.
+    Scene scene = test::box_scene(10, 10);
+    scene.run.dt = 1e-2;
+    Box2dSolver solver;
+    const auto s = run_to(scene, test::make_state({{5, 5, 0.002, 0, 0.5, 1}}), 2.0, &solver);
+    EXPECT_NEAR(s.x[0], 5.004, 1e-5);
+    EXPECT_EQ(solver.stats().counters.at("sleeping_allowed"), 0.0);
+}
+
+TEST(Box2dSolver, TranslationCapIsDetectedAndCounted) {
+    // Scale 1 (radius 0.5). At 3000 units/s and dt = 1e-3 the disk would move 3 m per step, but
+    // Box2D caps it at b2_maxTranslation = 2 m: it moves 2 per step and is counted each step.
+    Scene scene = test::box_scene(1000, 100);
+    scene.run.dt = 1e-3;
+    Box2dSolver solver;
+    const auto s = run_to(scene, test::make_state({{100, 50, 3000, 0, 0.5, 1}, {100, 20, 1000, 0, 0.5, 1}}),
+                          0.01, &solver);
+    EXPECT_NEAR(s.x[0], 100 + 10 * b2_maxTranslation, 1e-3);
+    EXPECT_NEAR(s.x[1], 100 + 10.0, 1e-3);  // 1 m per step: below the cap, untouched
+    const auto counters = solver.stats().counters;
+    EXPECT_EQ(counters.at("translation_cap_steps"), 10.0);
+    EXPECT_EQ(counters.at("translation_cap_body_steps"), 10.0);
+}
+
+TEST(Box2dSolver, SubstepsLiftTheTranslationCap) {
+    // The same 3000 units/s with 2 Box2D steps per dt: 1.5 m per Box2D step, below the cap.
+    Scene scene = test::box_scene(1000, 100);
+    scene.run.dt = 1e-3;
+    scene.backend_options["box2d"] = {{"substeps", "2"}};
+    Box2dSolver solver;
+    const auto s = run_to(scene, test::make_state({{100, 50, 3000, 0, 0.5, 1}}), 0.01, &solver);
+    EXPECT_NEAR(s.x[0], 100 + 30.0, 1e-3);
+    EXPECT_EQ(solver.stats().counters.at("translation_cap_steps"), 0.0);
+    EXPECT_EQ(solver.stats().counters.at("box2d_substeps"), 2.0);
+    EXPECT_EQ(solver.stats().steps, 10);
+}
+
+TEST(Box2dSolver, NoTranslationCapAtOrdinarySpeeds) {
+    Scene scene = test::box_scene(10, 4);
+    Box2dSolver solver;
+    run_to(scene, test::make_state({{3, 2, 1, 0, 0.5, 1}, {7, 2, -1, 0, 0.5, 1}}), 2.0, &solver);
+    EXPECT_EQ(solver.stats().counters.at("translation_cap_steps"), 0.0);
+}
+
+TEST(Box2dSolver, PeriodicSceneIsRefusedWithTheReason) {
+    const Scene scene = test::box_scene(10, 10, Boundary::periodic);
+    const auto reason = box2d_supports(scene);
+    ASSERT_TRUE(reason.has_value());
+    EXPECT_NE(reason->find("periodic"), std::string::npos) << *reason;
+    Box2dSolver solver;
+    EXPECT_THROW(solver.load(scene, test::make_state({{5, 5, 1, 0, 0.5, 1}})), std::runtime_error);
+    EXPECT_FALSE(box2d_supports(test::box_scene(10, 10)).has_value());
+}
+
+TEST(Box2dSolver, RestitutionThresholdMakesSlowCollisionsInelastic) {
+    // Equal masses meet at relative speed 0.5. Below a threshold of 1 Box2D drops the bounce and
+    // solves for zero normal relative velocity: both stop (momentum 0). With threshold 0 they
+    // exchange velocities.
+    Scene scene = test::box_scene(10, 4);
+    scene.run.dt = 1e-3;
+    const auto initial = test::make_state({{4, 2, 0.25, 0, 0.5, 1}, {6, 2, -0.25, 0, 0.5, 1}});
+    const auto elastic = run_to(scene, initial, 3.0);
+    EXPECT_NEAR(elastic.vx[0], -0.25, kFloat);
+    EXPECT_NEAR(elastic.vx[1], 0.25, kFloat);
+
+    scene.backend_options["box2d"] = {{"restitution_threshold", "1"}};
+    const auto inelastic = run_to(scene, initial, 3.0);
+    EXPECT_NEAR(inelastic.vx[0], 0.0, kFloat);
+    EXPECT_NEAR(inelastic.vx[1], 0.0, kFloat);
+}
+
+TEST(Box2dSolver, DiluteElasticGasKeepsItsEnergy) {
+    // N = 200 disks of radius 0.2 in a 20 x 20 box (area fraction 6%), e = 1, 5 s. Without
+    // forces Box2D leaves velocities bit-for-bit alone between contacts, and it solves an
+    // isolated contact exactly (one constraint: the first sequential-impulse iteration), so the
+    // energy changes only by the float rounding of each contact's velocity update: ~10 roundings
+    // of 6e-8 per velocity, i.e. ~1.2e-6 of the energy of the two disks involved, a share 2/N of
+    // the total. Over C ~ 220 contact steps that is at most C (2/N) 1.2e-6 ~ 3e-7: tolerance
+    // 1e-6. A step where three disks touch at once, which 8 iterations need not solve as the
+    // hard-disk collision, would cost of order 1/N = 5e-3 and fail the test: in a gas this
+    // dilute at this dt it should not happen (docs/box2d-baseline.md).
+    Scene scene = test::box_scene(20, 20);
+    scene.run.dt = 1e-3;
+    scene.run.duration = 5.0;
+    scene.run.output_interval = 1.0;
+    const auto initial = test::random_gas(scene, 200, 0.2, 7);
+    Box2dSolver solver;
+    const RunResult r = run_scene(scene, solver, initial);
+    const double e0 = r.series.front().kinetic_energy, e1 = r.series.back().kinetic_energy;
+    EXPECT_GT(r.stats.contacts, 100) << "the run must contain collisions to test anything";
+    EXPECT_NEAR(e1, e0, 1e-6 * e0);
+    EXPECT_EQ(r.series.back().nonfinite, 0);
+}
+
+TEST(Box2dSolver, UnknownOptionStopsTheLoad) {
+    Scene scene = test::box_scene(10, 10);
+    scene.backend_options["box2d"] = {{"sleep", "false"}};
+    Box2dSolver solver;
+    EXPECT_THROW(solver.load(scene, test::make_state({{5, 5, 1, 0, 0.5, 1}})), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace collide

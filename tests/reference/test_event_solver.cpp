@@ -1,0 +1,285 @@
+// The `event` backend on cases with exact answers, its round-off rules and its input checks.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "core/metrics.h"
+#include "reference/event_solver.h"
+#include "tests/support/test_scenes.h"
+
+namespace collide {
+namespace {
+
+using test::box_scene;
+using test::make_state;
+
+ParticleState<double> run_to(const Scene& scene, const ParticleState<double>& initial, double t,
+                             SolverStats* stats = nullptr) {
+    EventSolver solver;
+    solver.load(scene, initial);
+    solver.advance_to(t);
+    ParticleState<double> out;
+    solver.read_state(out);
+    if (stats) *stats = solver.stats();
+    return out;
+}
+
+// Expects `f` to throw std::runtime_error whose message contains every one of `parts`.
+template <typename F>
+void expect_error(F&& f, std::initializer_list<std::string> parts) {
+    try {
+        f();
+        ADD_FAILURE() << "expected an error";
+    } catch (const std::runtime_error& e) {
+        for (const auto& p : parts) EXPECT_NE(std::string(e.what()).find(p), std::string::npos) << e.what();
+    }
+}
+
+TEST(EventSolver, HeadOnEqualMassesSwapVelocities) {
+    const auto s = run_to(box_scene(10, 4), make_state({{3, 2, 1, 0, 0.5, 1}, {7, 2, -1, 0, 0.5, 1}}), 2.0);
+    // Contact at t = 1.5 (x = 4.5 and 5.5); then each flies 0.5 with the other's velocity.
+    EXPECT_NEAR(s.x[0], 4.0, 1e-12);
+    EXPECT_NEAR(s.x[1], 6.0, 1e-12);
+    EXPECT_NEAR(s.vx[0], -1.0, 1e-12);
+    EXPECT_NEAR(s.vx[1], 1.0, 1e-12);
+    EXPECT_NEAR(s.y[0], 2.0, 1e-12);
+}
+
+TEST(EventSolver, HeadOnUnequalMassesFollowElasticFormula) {
+    // m1 = 1, m2 = 3, u1 = 2: v1' = (m1 - m2)/(m1 + m2) u1 = -1, v2' = 2 m1/(m1 + m2) u1 = 1.
+    // Contact at t = 1 (gap 2 closed at speed 2, at x1 = 3, x2 = 4).
+    const auto s = run_to(box_scene(10, 4), make_state({{1, 2, 2, 0, 0.5, 1}, {4, 2, 0, 0, 0.5, 3}}), 2.5);
+    EXPECT_NEAR(s.vx[0], -1.0, 1e-12);
+    EXPECT_NEAR(s.vx[1], 1.0, 1e-12);
+    EXPECT_NEAR(s.x[0], 3 - 1.5, 1e-12);
+    EXPECT_NEAR(s.x[1], 4 + 1.5, 1e-12);
+}
+
+TEST(EventSolver, GlancingCollisionUnequalMasses) {
+    // Disk i (m = 1) at the origin moving (1, 0) meets disk j (m = 2) at rest at (3, 0.5);
+    // contact distance 1 is reached at t_c = 3 - sqrt(3/4) with normal n = (-sqrt(3/4), -1/2).
+    // v_i' = v_i - 2 m_j/(m_i + m_j) (u.n) n = (0, -sqrt(3/4) 2/3),
+    // v_j' =       2 m_i/(m_i + m_j) (u.n) n = (1/2, sqrt(3/4) / 3).
+    const double c = std::sqrt(0.75), tc = 3 - c, t = 4;
+    const auto s = run_to(box_scene(20, 20), make_state({{5, 5, 1, 0, 0.5, 1}, {8, 5.5, 0, 0, 0.5, 2}}), t);
+    EXPECT_NEAR(s.vx[0], 0.0, 1e-12);
+    EXPECT_NEAR(s.vy[0], -2 * c / 3, 1e-12);
+    EXPECT_NEAR(s.vx[1], 0.5, 1e-12);
+    EXPECT_NEAR(s.vy[1], c / 3, 1e-12);
+    EXPECT_NEAR(s.x[0], 5 + tc, 1e-12);
+    EXPECT_NEAR(s.y[0], 5 - 2 * c / 3 * (t - tc), 1e-12);
+    EXPECT_NEAR(s.x[1], 8 + 0.5 * (t - tc), 1e-12);
+    EXPECT_NEAR(s.y[1], 5.5 + c / 3 * (t - tc), 1e-12);
+}
+
+TEST(EventSolver, OutputBetweenEventsIsFreeFlight) {
+    EventSolver solver;
+    solver.load(box_scene(10, 4), make_state({{3, 2, 1, 0.25, 0.5, 1}}));
+    ParticleState<double> s;
+    for (double t : {0.5, 1.0, 1.0, 2.0}) {
+        solver.advance_to(t);
+        solver.read_state(s);
+        EXPECT_NEAR(s.x[0], 3 + t, 1e-12);
+        EXPECT_NEAR(s.y[0], 2 + 0.25 * t, 1e-12);
+    }
+    EXPECT_THROW(solver.advance_to(1.0), std::invalid_argument);
+}
+
+TEST(EventSolver, DroppedDiskBouncesOnFloorUnderGravity) {
+    Scene scene = box_scene(10, 20);
+    scene.physics.gravity_y = -9.81;
+    const double g = 9.81, drop = 9.5;  // centre from y = 10 down to the contact height 0.5
+    const double t1 = std::sqrt(2 * drop / g), v1 = g * t1, tau = 0.3;
+    SolverStats stats;
+    const auto s = run_to(scene, make_state({{5, 10, 0, 0, 0.5, 2}}), t1 + tau, &stats);
+    EXPECT_NEAR(s.y[0], 0.5 + v1 * tau - 0.5 * g * tau * tau, 1e-12);
+    EXPECT_NEAR(s.vy[0], v1 - g * tau, 1e-12);
+    EXPECT_EQ(stats.counters["events_wall"], 1);
+    EXPECT_NEAR(stats.counters["wall_impulse_ymin"], 2 * 2 * v1, 1e-12);
+}
+
+TEST(EventSolver, WallRestitutionScalesNormalVelocity) {
+    Scene scene = box_scene(10, 4);
+    scene.physics.wall_restitution = 0.5;
+    const auto s = run_to(scene, make_state({{3, 2, -2, 0.5, 0.5, 1}}), 1.5);
+    // Contact with x = 0 at t = 1.25: vx -2 -> +1, vy unchanged.
+    EXPECT_NEAR(s.vx[0], 1.0, 1e-12);
+    EXPECT_NEAR(s.x[0], 0.5 + 0.25, 1e-12);
+    EXPECT_NEAR(s.vy[0], 0.5, 1e-12);
+}
+
+TEST(EventSolver, InelasticHeadOnFollowsRestitution) {
+    Scene scene = box_scene(10, 4);
+    scene.physics.restitution = 0.5;
+    const auto s = run_to(scene, make_state({{3, 2, 1, 0, 0.5, 1}, {7, 2, -1, 0, 0.5, 1}}), 2.0);
+    // Equal masses, u = 2: each leaves with e * 1 = 0.5 in the reverse direction.
+    EXPECT_NEAR(s.vx[0], -0.5, 1e-12);
+    EXPECT_NEAR(s.vx[1], 0.5, 1e-12);
+}
+
+TEST(EventSolver, NewtonsCradleSimultaneousCollisionsPassMomentumThrough) {
+    // A striker hits a row of four touching disks: the touching contacts are resolved one after
+    // the other at the same instant, and only the last disk leaves (equal masses, e = 1).
+    SolverStats stats;
+    const auto s = run_to(box_scene(20, 4),
+                          make_state({{1, 2, 1, 0, 0.5, 1}, {3, 2, 0, 0, 0.5, 1}, {4, 2, 0, 0, 0.5, 1},
+                                      {5, 2, 0, 0, 0.5, 1}, {6, 2, 0, 0, 0.5, 1}}),
+                          2.0, &stats);
+    for (int i = 0; i < 4; ++i) EXPECT_EQ(s.vx[i], 0.0) << "disk " << i;
+    EXPECT_EQ(s.vx[4], 1.0);
+    EXPECT_EQ(s.x[0], 2.0);
+    EXPECT_EQ(s.x[4], 7.0);
+    EXPECT_EQ(stats.contacts, 4);
+}
+
+TEST(EventSolver, DiskBouncesOffStoneWhichNeverMoves) {
+    const auto s = run_to(box_scene(10, 10), make_state({{5, 5, 0, 0, 1, 1, true}, {2, 5, 3, 0, 0.5, 1}}), 1.0);
+    // Contact at t = 0.5 (gap 1.5 at speed 3): the disk reverses, the stone stays put.
+    EXPECT_EQ(s.x[0], 5.0);
+    EXPECT_EQ(s.vx[0], 0.0);
+    EXPECT_NEAR(s.vx[1], -3.0, 1e-12);
+    EXPECT_NEAR(s.x[1], 3.5 - 1.5, 1e-12);
+}
+
+TEST(EventSolver, PeriodicCollisionAcrossTheBoundary) {
+    // Disks at x = 0.7 and 9.3 in a periodic box of width 10 are 1.4 apart through the
+    // boundary; closing at speed 2, they touch at t = 0.2 and swap velocities.
+    const auto s = run_to(box_scene(10, 10, Boundary::periodic),
+                          make_state({{0.7, 5, -1, 0, 0.5, 1}, {9.3, 5, 1, 0, 0.5, 1}}), 0.5);
+    EXPECT_NEAR(s.vx[0], 1.0, 1e-12);
+    EXPECT_NEAR(s.vx[1], -1.0, 1e-12);
+    EXPECT_NEAR(s.x[0], 0.5 + 0.3, 1e-12);
+    EXPECT_NEAR(s.x[1], 9.5 - 0.3, 1e-12);
+}
+
+TEST(EventSolver, PeriodicFreeFlightWrapsAround) {
+    const auto s = run_to(box_scene(10, 10, Boundary::periodic), make_state({{9, 9, 3, 2.5, 0.5, 1}}), 2.0);
+    EXPECT_NEAR(s.x[0], 5.0, 1e-12);  // 9 + 6 - 10
+    EXPECT_NEAR(s.y[0], 4.0, 1e-12);  // 9 + 5 - 10
+}
+
+// The "billiard that counts digits of pi" (G. Galperin, Regular and Chaotic Dynamics 8 (2003)
+// 375): a light disk between a wall and a heavy disk of mass ratio 100^k. The total number of
+// collisions (disk-disk plus disk-wall) is the first k + 1 digits of pi.
+TEST(EventSolver, PiBilliardCountsDigitsOfPi) {
+    const std::int64_t expected[] = {3, 31, 314, 3141, 31415, 314159};
+    for (int k = 0; k <= 5; ++k) {
+        const double ratio = std::pow(100.0, k);
+        SolverStats stats;
+        run_to(box_scene(2000, 2), make_state({{2, 1, 0, 0, 0.5, 1}, {4, 1, -1, 0, 0.5, ratio}}), 1000, &stats);
+        const auto collisions = stats.contacts + std::int64_t(stats.counters["events_wall"]);
+        EXPECT_EQ(collisions, expected[k]) << "mass ratio 100^" << k;
+    }
+}
+
+TEST(EventSolver, PeriodicGasConservesEnergyAndMomentumOverMillionCollisions) {
+    const Scene scene = box_scene(51.2, 51.2, Boundary::periodic);  // 1000 disks of r = 0.5: area fraction 0.3
+    const auto initial = test::random_gas(scene, 1000, 0.5, 11);
+    EventSolver solver;
+    solver.load(scene, initial);
+    double t = 0;
+    while (solver.stats().contacts < 1000000) solver.advance_to(t += 20);
+    ParticleState<double> s;
+    solver.read_state(s);
+    const Metrics a = compute_metrics(scene, initial, 0), b = compute_metrics(scene, s, t);
+    double momentum_scale = 0;
+    for (std::size_t i = 0; i < initial.size(); ++i) momentum_scale += std::hypot(initial.vx[i], initial.vy[i]);
+    EXPECT_NEAR(b.kinetic_energy, a.kinetic_energy, 1e-10 * a.kinetic_energy);
+    EXPECT_NEAR(b.momentum_x, a.momentum_x, 1e-10 * momentum_scale);
+    EXPECT_NEAR(b.momentum_y, a.momentum_y, 1e-10 * momentum_scale);
+    EXPECT_EQ(b.overlapping_pairs, 0);
+}
+
+// --- Input checks ---------------------------------------------------------------------
+
+TEST(EventSolverInput, OverlappingInitialStateNamesThePair) {
+    expect_error([] { run_to(box_scene(10, 10), make_state({{2, 2, 0, 0, 0.5, 1}, {5, 5, 0, 0, 0.5, 1}, {5.6, 5, 0, 0, 0.5, 1}}), 1); },
+                 {"particles 1 and 2", "overlap by 0.4"});
+}
+
+TEST(EventSolverInput, TouchingInitialStateIsAccepted) {
+    EXPECT_NO_THROW(run_to(box_scene(10, 10), make_state({{5, 5, 0, 0, 0.5, 1}, {6, 5, 0, 0, 0.5, 1}}), 1));
+}
+
+TEST(EventSolverInput, ParticleOutsideWallsIsRejected) {
+    expect_error([] { run_to(box_scene(10, 10), make_state({{5, 5, 0, 0, 0.5, 1}, {9.8, 5, 0, 0, 0.5, 1}}), 1); },
+                 {"particle 1", "outside the walls"});
+}
+
+TEST(EventSolverInput, RestitutionAboveOneIsRejected) {
+    Scene scene = box_scene(10, 10);
+    scene.physics.restitution = 1.2;
+    expect_error([&] { run_to(scene, make_state({{5, 5, 0, 0, 0.5, 1}}), 1); }, {"restitution", "1.2"});
+}
+
+TEST(EventSolverInput, ZeroRadiusIsRejected) {
+    expect_error([] { run_to(box_scene(10, 10), make_state({{5, 5, 0, 0, 0.5, 1}, {2, 2, 0, 0, 0.0, 1}}), 1); },
+                 {"particle 1", "radius 0"});
+}
+
+TEST(EventSolverInput, FrictionAndDampingAreLeftOutWithReason) {
+    Scene scene = box_scene(10, 10);
+    EXPECT_FALSE(EventSolver::supports(scene));
+    scene.physics.friction = 0.3;
+    ASSERT_TRUE(EventSolver::supports(scene));
+    EXPECT_NE(EventSolver::supports(scene)->find("friction"), std::string::npos);
+    expect_error([&] { run_to(scene, make_state({{5, 5, 0, 0, 0.5, 1}}), 1); }, {"friction"});
+    scene.physics.friction = 0;
+    scene.physics.damping = 0.1;
+    ASSERT_TRUE(EventSolver::supports(scene));
+    EXPECT_NE(EventSolver::supports(scene)->find("damping"), std::string::npos);
+}
+
+TEST(EventSolverInput, UnknownBackendOptionIsRejected) {
+    Scene scene = box_scene(10, 10);
+    scene.backend_options["event"]["t_c"] = "1e-3";
+    expect_error([&] { run_to(scene, make_state({{5, 5, 0, 0, 0.5, 1}}), 1); }, {"t_c", "known: tc"});
+}
+
+// --- Inelastic collapse and the progress guard -----------------------------------------
+
+// A disk dropped on a floor with wall restitution 0.5 bounces with intervals shrinking by 0.5
+// each time: infinitely many bounces in finite time (inelastic collapse at a wall).
+Scene bouncing_scene(const std::string& tc) {
+    Scene scene = box_scene(4, 10);
+    scene.physics.gravity_y = -1;
+    scene.physics.wall_restitution = 0.5;
+    scene.backend_options["event"]["tc"] = tc;
+    return scene;
+}
+
+TEST(EventSolverCollapse, WithoutTcModelTheStalledLoopIsReported) {
+    expect_error([] { run_to(bouncing_scene("0"), make_state({{2, 3, 0, 0, 0.5, 1}}), 20); },
+                 {"no progress", "particle 0", "wall 2"});
+}
+
+TEST(EventSolverCollapse, TcModelKeepsTheBouncingDiskGoing) {
+    SolverStats stats;
+    const auto s = run_to(bouncing_scene("1e-3"), make_state({{2, 3, 0, 0, 0.5, 1}}), 20, &stats);
+    EXPECT_GT(stats.counters["tc_elastic"], 0);
+    // Once bounces come closer than t_c they are elastic: the disk keeps hopping with a
+    // vertical speed of about g t_c / 2, never below the floor.
+    EXPECT_GE(s.y[0], 0.5);
+    EXPECT_LT(std::fabs(s.vy[0]), 1e-2);
+}
+
+TEST(EventSolverCollapse, ThreeDiskInelasticClusterReachesCommonVelocity) {
+    // e = 0.05 is below the three-body collapse threshold 7 - 4 sqrt(3) (McNamara & Young,
+    // Phys. Fluids A 4 (1992) 496): the disks end up moving together with the centre-of-mass
+    // velocity (1.5 - 1) / 3 = 1/6 (up to the small relative motion the TC model leaves),
+    // with momentum conserved to rounding throughout.
+    Scene scene = box_scene(40, 4);
+    scene.physics.restitution = 0.05;
+    scene.backend_options["event"]["tc"] = "1e-9";  // small t_c: let the cluster nearly collapse
+    SolverStats stats;
+    const auto s = run_to(scene, make_state({{5, 2, 1.5, 0, 0.5, 1}, {6.5, 2, 0, 0, 0.5, 1}, {8, 2, -1, 0, 0.5, 1}}), 5,
+                          &stats);
+    EXPECT_NEAR(s.vx[0] + s.vx[1] + s.vx[2], 0.5, 1e-12);
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(s.vx[i], 1.0 / 6.0, 1e-2) << "disk " << i;
+    EXPECT_GT(stats.contacts, 10);
+}
+
+}  // namespace
+}  // namespace collide
