@@ -72,53 +72,73 @@ static inline int neighbour_cell(int c, int cells)
 #endif
 }
 
+/* Adds disk i's contacts with the disks in slots [begin, end) of sorted_index to `sum`.
+ * Counts the contacts with j > i, so each pair is counted once. */
+static inline void add_contacts(int i, const Particle* pi, __global const Particle* in,
+                                __global const uint* sorted_index, uint begin, uint end,
+                                const StepParams* p, ContactDelta* sum, uint* contacts)
+{
+#ifdef COLLIDE_FRICTION
+    const Real friction = p->friction;
+#else
+    const Real friction = 0;
+#endif
+    for (uint k = begin; k < end; ++k) {
+        const int j = (int)sorted_index[k];
+        if (j == i) continue;
+        const Particle pj = in[j];
+        Real sep_x = pi->x - pj.x, sep_y = pi->y - pj.y;
+#ifdef COLLIDE_PERIODIC
+        sep_x = minimum_image(sep_x, p->xmax - p->xmin);
+        sep_y = minimum_image(sep_y, p->ymax - p->ymin);
+#endif
+#ifdef COLLIDE_UNIFORM_RADIUS
+        const Real contact = p->contact_distance;
+#else
+        const Real contact = pi->radius + pj.radius;
+#endif
+        /* The squared-distance test of seed 000: no square root for non-contacts. */
+        if (sep_x * sep_x + sep_y * sep_y >= contact * contact) continue;
+        const ContactDelta d = contact_delta(sep_x, sep_y, pi->vx - pj.vx, pi->vy - pj.vy, contact,
+                                             pi->inv_mass, pj.inv_mass, p->restitution, friction);
+        sum->dx += d.dx;
+        sum->dy += d.dy;
+        sum->dvx += d.dvx;
+        sum->dvy += d.dvy;
+        if (i < j) ++*contacts;
+    }
+}
+
 /* Disk i's summed contact deltas over the 3x3 cell neighbourhood, neighbours visited in the
  * order of UniformGrid::for_each_candidate (rows, then columns, then increasing index).
- * Counts the contacts with j > i, so each pair is counted once. */
+ * Neighbouring cells of one row are neighbours in sorted_index too, so a row whose cells
+ * need no periodic wrap is one contiguous slot range: the same disks in the same order,
+ * for two reads of cell_start instead of six. */
 static inline ContactDelta sum_contacts(int i, const Particle* pi, __global const Particle* in,
                                         __global const uint* cell_start, __global const uint* sorted_index,
                                         const StepParams* p, uint* contacts)
 {
     ContactDelta sum;
     sum.dx = 0; sum.dy = 0; sum.dvx = 0; sum.dvy = 0;
-#ifdef COLLIDE_FRICTION
-    const Real friction = p->friction;
-#else
-    const Real friction = 0;
-#endif
     const int cx = cell_x_of(pi->x, p), cy = cell_y_of(pi->y, p);
     for (int oy = p->oy_lo; oy <= p->oy_hi; ++oy) {
         const int ny = neighbour_cell(cy + oy, p->cells_y);
         if (ny < 0) continue;
-        for (int ox = p->ox_lo; ox <= p->ox_hi; ++ox) {
-            const int nx = neighbour_cell(cx + ox, p->cells_x);
-            if (nx < 0) continue;
-            const int c = ny * p->cells_x + nx;
-            for (uint k = cell_start[c]; k < cell_start[c + 1]; ++k) {
-                const int j = (int)sorted_index[k];
-                if (j == i) continue;
-                const Particle pj = in[j];
-                Real sep_x = pi->x - pj.x, sep_y = pi->y - pj.y;
+        const int row = ny * p->cells_x;
+        int x_lo = cx + p->ox_lo, x_hi = cx + p->ox_hi;
 #ifdef COLLIDE_PERIODIC
-                sep_x = minimum_image(sep_x, p->xmax - p->xmin);
-                sep_y = minimum_image(sep_y, p->ymax - p->ymin);
-#endif
-#ifdef COLLIDE_UNIFORM_RADIUS
-                const Real contact = p->contact_distance;
-#else
-                const Real contact = pi->radius + pj.radius;
-#endif
-                /* The squared-distance test of seed 000: no square root for non-contacts. */
-                if (sep_x * sep_x + sep_y * sep_y >= contact * contact) continue;
-                const ContactDelta d = contact_delta(sep_x, sep_y, pi->vx - pj.vx, pi->vy - pj.vy, contact,
-                                                     pi->inv_mass, pj.inv_mass, p->restitution, friction);
-                sum.dx += d.dx;
-                sum.dy += d.dy;
-                sum.dvx += d.dvx;
-                sum.dvy += d.dvy;
-                if (i < j) ++*contacts;
+        if (x_lo < 0 || x_hi >= p->cells_x) {  /* wrapped cells are not contiguous: one by one */
+            for (int ox = p->ox_lo; ox <= p->ox_hi; ++ox) {
+                const int c = row + neighbour_cell(cx + ox, p->cells_x);
+                add_contacts(i, pi, in, sorted_index, cell_start[c], cell_start[c + 1], p, &sum, contacts);
             }
+            continue;
         }
+#else
+        x_lo = max(x_lo, 0);  /* a reflecting box has no cells beyond its walls */
+        x_hi = min(x_hi, p->cells_x - 1);
+#endif
+        add_contacts(i, pi, in, sorted_index, cell_start[row + x_lo], cell_start[row + x_hi + 1], p, &sum, contacts);
     }
     return sum;
 }
