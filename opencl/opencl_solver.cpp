@@ -16,12 +16,16 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// Default grid per device type (docs/opencl-backend.md has the measurements). On a CPU
-// device (PoCL) the "device" memory is host memory: the read-back and upload of the host
-// build are plain copies, and the serial counting sort beat the grid kernels at three of
-// the four sizes measured (1e3 .. 1e6). On a GPU the host build would cross the bus twice per step and the
-// sort would run on one core while thousands wait, so the grid stays on the device.
-std::string default_grid_mode(const DeviceEntry& device) { return device.type == "CPU" ? "host" : "device"; }
+// Default grid per device (docs/opencl-backend.md has the measurements). On a CPU device
+// (PoCL) the "device" memory is host memory, so the host build's read-back and upload are
+// plain copies: the serial counting sort was faster up to N = 1e4, the grid kernels from
+// 1e5 on. On a GPU the host build would cross the bus twice per step and sort on one core
+// while thousands wait, so the grid stays on the device.
+std::string default_grid_mode(const DeviceEntry& device, std::size_t n) {
+    constexpr std::size_t cpu_device_grid_from = 50'000;
+    if (device.type == "CPU" && n < cpu_device_grid_from) return "host";
+    return "device";
+}
 
 template <typename Real>
 class OpenclSolver : public Solver {
@@ -103,7 +107,7 @@ private:
                                      "' does not offer; use --real float or another --cl-device");
         session_ = open_session(device, kernel_build_options(scene, initial, real_double, device));
         check_layout();
-        grid_mode_ = options_.extra.count("grid") ? options_.extra.at("grid") : default_grid_mode(session_.device);
+        grid_mode_ = options_.extra.count("grid") ? options_.extra.at("grid") : default_grid_mode(session_.device, n_);
         if (grid_mode_ != "host" && grid_mode_ != "device")
             throw std::invalid_argument("opencl: option grid = '" + grid_mode_ + "': expected \"host\" or \"device\"");
 

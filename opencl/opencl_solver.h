@@ -6,7 +6,8 @@
 //   device          OpenCL device: index or name substring (see `collide devices`)
 //   extra["grid"]   "host": the grid is built on the host by counting sort and uploaded every
 //                   step (seed 000's design); "device": built by kernels (kernels/grid.cl).
-//                   Default: the faster one for the device type (docs/opencl-backend.md).
+//                   Default: the one measured faster for the device type and N
+//                   (docs/opencl-backend.md): device, except host below N = 5e4 on a CPU.
 //   extra["local_size"]  work-group size of the per-disk kernels (default: the driver's choice)
 // A scene file can set `grid` and `local_size` too, in its [backend.opencl] table; options
 // given here take precedence.
