@@ -3,8 +3,11 @@
 #include "box2d/box2d_solver.h"
 #include "core/backend_registry.h"
 #include "cpu/cpu_solver.h"
+#include "opencl/opencl_solver.h"
 #include "reference/event_solver.h"
 #include "reference/step_solver.h"
+
+#include <stdexcept>
 
 namespace collide {
 
@@ -18,10 +21,21 @@ const std::vector<BackendInfo>& all_backends() {
         {"cpu", "float", "the same rules in float, multi-threaded (OpenMP), seed 001's engine",
          [](const Scene&) -> std::optional<std::string> { return std::nullopt; },
          [](const BackendOptions& o) -> std::unique_ptr<Solver> { return std::make_unique<cpu::CpuSolver>(o); }},
+        {"opencl", "float|double", "stepping rules as OpenCL kernels (seed 000), float or --real double",
+         [](const Scene&) -> std::optional<std::string> { return std::nullopt; }, opencl::make_opencl_solver},
         {"box2d", "float", "Box2D 2.4 world of circle bodies, the baseline", box2d_supports,
          [](const BackendOptions&) -> std::unique_ptr<Solver> { return std::make_unique<Box2dSolver>(); }},
     };
     return backends;
+}
+
+const BackendInfo& find_backend(const std::string& name) {
+    std::string names;
+    for (const auto& b : all_backends()) {
+        if (b.name == name) return b;
+        names += (names.empty() ? "" : ", ") + b.name;
+    }
+    throw std::invalid_argument("unknown backend '" + name + "'; available: " + names);
 }
 
 }  // namespace collide

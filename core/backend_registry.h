@@ -23,6 +23,8 @@ struct BackendInfo {
 };
 
 // Every backend compiled into this build, in a fixed order (event first: the reference).
+// Both functions are defined beside the list itself, in apps/all_backends.cpp (library
+// collide_registry), so that linking the registry is all a program needs.
 const std::vector<BackendInfo>& all_backends();
 
 // The backend called `name`; throws std::invalid_argument listing the valid names.

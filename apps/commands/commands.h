@@ -11,5 +11,6 @@ void add_scenes_command(CLI::App& app);    // list the scene library
 void add_bench_command(CLI::App& app);     // benchmark suites
 void add_validate_command(CLI::App& app);  // validation suites -> summary.json, junit.xml
 void add_report_command(CLI::App& app);    // validation results -> HTML and Markdown report
+void add_devices_command(CLI::App& app);   // list OpenCL platforms and devices
 
 }  // namespace collide::cli

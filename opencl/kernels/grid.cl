@@ -1,0 +1,98 @@
+/* The uniform grid built on the device: the same counting sort as core/uniform_grid.h, and
+ * the same result, bit for bit (the tests compare the two).
+ *   grid_count      cell of every disk; atomic increment of its cell's count, which also
+ *                   gives the disk a rank inside its cell (in no particular order)
+ *   scan_blocks     exclusive prefix sum of the counts -> cell_start (blocks scanned by
+ *   add_block_offsets  work-groups, the block sums scanned recursively by the host)
+ *   grid_scatter    sorted_index[cell_start[c] + rank] = i
+ *   grid_sort_cells the atomics made the order inside a cell depend on thread timing;
+ *                   sorting each cell's few indices restores increasing index order, so the
+ *                   neighbour order, and every sum over neighbours, is deterministic.
+ */
+
+/* Cell coordinate along one axis, clamped to the border cells (NaN goes to cell 0), exactly
+ * as UniformGrid::clamp_cell. */
+static inline int clamp_cell(Real scaled, int cells)
+{
+    if (!(scaled >= (Real)0)) return 0;
+    if (scaled >= (Real)cells) return cells - 1;
+    return (int)scaled;
+}
+
+static inline int cell_x_of(Real x, const StepParams* p) { return clamp_cell((x - p->xmin) * p->inv_cell_w, p->cells_x); }
+static inline int cell_y_of(Real y, const StepParams* p) { return clamp_cell((y - p->ymin) * p->inv_cell_h, p->cells_y); }
+
+__kernel void grid_count(__global const Particle* particles, const StepParams params,
+                         __global uint* cell_of, __global uint* rank, __global volatile uint* counts)
+{
+    const int i = get_global_id(0);
+    if (i >= params.n) return;
+    const uint c = (uint)(cell_y_of(particles[i].y, &params) * params.cells_x + cell_x_of(particles[i].x, &params));
+    cell_of[i] = c;
+    rank[i] = atomic_inc(&counts[c]);
+}
+
+/* Exclusive scan of one block of get_local_size(0) * chunk values. Each work-item owns `chunk`
+ * consecutive values: it sums them serially, the work-group scans the per-item sums in local
+ * memory (Hillis and Steele's doubling scan), and each item then rewrites its values as
+ * running sums from its offset. The serial part keeps the work linear in the values; the
+ * doubling scan (log2 of the group size steps) runs on the group's sums only. Integer sums,
+ * so the order of additions does not matter. block_sums[g] receives the block's total for
+ * the next level of the scan. */
+__kernel void scan_blocks(__global uint* values, const uint count, const uint chunk, __global uint* block_sums,
+                          __local uint* scratch)
+{
+    const uint lid = get_local_id(0), size = get_local_size(0);
+    const uint begin = (uint)get_global_id(0) * chunk;
+    const uint end = min(begin + chunk, count);
+    uint own = 0;
+    for (uint k = begin; k < end; ++k) own += values[k];
+    scratch[lid] = own;
+    barrier(CLK_LOCAL_MEM_FENCE);
+    for (uint offset = 1; offset < size; offset *= 2) {
+        const uint add = lid >= offset ? scratch[lid - offset] : 0u;
+        barrier(CLK_LOCAL_MEM_FENCE);
+        scratch[lid] += add;
+        barrier(CLK_LOCAL_MEM_FENCE);
+    }
+    uint running = scratch[lid] - own;  /* inclusive -> exclusive: this item's offset */
+    for (uint k = begin; k < end; ++k) {
+        const uint value = values[k];
+        values[k] = running;
+        running += value;
+    }
+    if (lid == size - 1) block_sums[get_group_id(0)] = scratch[lid];
+}
+
+/* values[k] += the scanned total of all blocks before k's block. */
+__kernel void add_block_offsets(__global uint* values, const uint count, const uint block_values,
+                                __global const uint* block_offsets)
+{
+    const uint k = get_global_id(0);
+    if (k < count) values[k] += block_offsets[k / block_values];
+}
+
+__kernel void grid_scatter(__global const uint* cell_of, __global const uint* rank,
+                           __global const uint* cell_start, __global uint* sorted_index, const int n)
+{
+    const int i = get_global_id(0);
+    if (i >= n) return;
+    sorted_index[cell_start[cell_of[i]] + rank[i]] = (uint)i;
+}
+
+/* Insertion sort of each cell's indices (a cell holds a handful of disks). */
+__kernel void grid_sort_cells(__global const uint* cell_start, __global uint* sorted_index, const int cell_count)
+{
+    const int c = get_global_id(0);
+    if (c >= cell_count) return;
+    const uint begin = cell_start[c], end = cell_start[c + 1];
+    for (uint k = begin + 1; k < end; ++k) {
+        const uint key = sorted_index[k];
+        uint m = k;
+        while (m > begin && sorted_index[m - 1] > key) {
+            sorted_index[m] = sorted_index[m - 1];
+            --m;
+        }
+        sorted_index[m] = key;
+    }
+}
