@@ -94,8 +94,8 @@ std::string jammed_message(const std::string& where, std::size_t placed, std::in
     std::ostringstream msg;
     msg << where << "placed only " << placed << " of " << count << " disks after " << attempts
         << " attempts: the requested area fraction in the region is " << area_fraction
-        << "; random sequential addition jams near 0.547 in 2D and slows down well before; "
-           "use fewer or smaller disks, a larger region, or a lattice generator for dense packings";
+        << ": expected fewer or smaller disks, a larger region, or a lattice generator for dense packings "
+           "(random sequential addition jams near 0.547 in 2D and slows down well before)";
     return msg.str();
 }
 
@@ -147,9 +147,13 @@ std::vector<Disk> place_gas(const Scene& scene, const ParticleGenerator& g, std:
     for (double r : radii) requested_area += pi * r * r;
     const double area_fraction = requested_area / region_area;
     const std::string where = block_location(scene, g, index);
-    if (area_fraction > densest_packing)
-        throw SceneError(jammed_message(where, 0, g.count, 0, area_fraction) +
-                         " (it is even beyond pi/sqrt(12) = 0.9069, the densest packing of equal disks)");
+    if (area_fraction > densest_packing) {
+        std::ostringstream msg;
+        msg << where << "the requested area fraction in the region is " << area_fraction
+            << ", beyond pi/sqrt(12) = 0.9069 (the densest packing of equal disks): expected fewer or smaller "
+               "disks or a larger region (random sequential addition jams near 0.547 in 2D)";
+        throw SceneError(msg.str());
+    }
 
     AttemptBudget budget(g.count);
     std::vector<Disk> disks;

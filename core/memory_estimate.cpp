@@ -69,7 +69,10 @@ void check_memory(const Scene& scene, double physical_bytes) {
                      std::to_string(int(bytes_per_grid_cell)) + " B per grid cell x " +
                      std::to_string(std::int64_t(whole.grid_cells)) + " cells), more than " +
                      std::to_string(int(100 * max_memory_share)) + "% of this machine's " +
-                     gibibytes(physical_bytes) + " of physical memory: expected fewer disks");
+                     gibibytes(physical_bytes) + " of physical memory: expected at most about " +
+                     std::to_string(std::int64_t(std::max(0.0, limit - whole.grid_cells * bytes_per_grid_cell) /
+                                                 bytes_per_disk)) +
+                     " disks in the scene on this machine");
 }
 
 }  // namespace collide

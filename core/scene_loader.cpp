@@ -293,8 +293,8 @@ Scene read_scene(const toml::table& root_table, const std::string& file) {
         total += g.kind == "list" ? std::int64_t(g.disks.size()) : g.count;
         // Each block is below the limit, so the sum cannot overflow before this test fails.
         if (total > max_disk_count)
-            fields.fail("count", std::string(count_range) + " for all blocks together: they hold " +
-                                     std::to_string(total) + " disks up to this block");
+            fields.fail("count", "at most 2^31 - 1 disks in all blocks together (the grids index disks with "
+                                 "32-bit integers); with this block the scene holds " + std::to_string(total));
     }
     if (root.has("backend")) read_backend_options(root, scene);
 
