@@ -100,24 +100,25 @@ std::string jammed_message(const std::string& where, std::size_t placed, std::in
 }
 
 // RSA only gets slower as the region fills (the area where a new centre fits shrinks with
-// every disk placed), so the attempts per placed disk over the last stretch bound the cost
-// of every disk still to come from below. Once that cost times the disks left exceeds the
+// every disk placed), so the attempts per placed disk over the last stretch estimate a lower
+// bound on the cost of every disk still to come. Once that cost times the disks left exceeds the
 // attempts left, the budget cannot suffice and spending it would only waste minutes. Not
 // while a bidisperse block places its large disks: the small ones after them fit far more
 // easily.
 class AttemptBudget {
 public:
-    AttemptBudget(std::int64_t count) : budget_(std::max<std::int64_t>(1000 * count, 1000000)) {}
+    explicit AttemptBudget(std::int64_t count) : budget_(std::max<std::int64_t>(1000 * count, 1000000)) {}
 
     // Counts one attempt; false once the budget is spent or cannot suffice.
     bool attempt(std::size_t placed, std::size_t left, bool cost_only_grows) {
         ++attempts_;
         if (attempts_ > budget_) return false;
         if (attempts_ - checkpoint_attempts_ < stretch) return true;
-        const double cost = double(attempts_ - checkpoint_attempts_) / double(std::max<std::size_t>(1, placed - checkpoint_placed_));
+        const double placed_in_stretch = double(std::max<std::size_t>(1, placed - checkpoint_placed_));
+        const double attempts_per_disk = double(attempts_ - checkpoint_attempts_) / placed_in_stretch;
         checkpoint_attempts_ = attempts_;
         checkpoint_placed_ = placed;
-        return !(cost_only_grows && cost * double(left) > double(budget_ - attempts_));
+        return !(cost_only_grows && attempts_per_disk * double(left) > double(budget_ - attempts_));
     }
     std::int64_t attempts() const { return attempts_; }
 
