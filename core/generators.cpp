@@ -17,6 +17,7 @@
 #include <sstream>
 
 #include "disk_placement.h"
+#include "memory_estimate.h"
 #include "scene_loader.h"
 
 namespace collide {
@@ -87,6 +88,50 @@ double mass_of(const Scene& scene, const ParticleGenerator& g, std::size_t index
     return m;
 }
 
+// Why random sequential addition gave up, with what to do instead.
+std::string jammed_message(const std::string& where, std::size_t placed, std::int64_t count, std::int64_t attempts,
+                           double area_fraction) {
+    std::ostringstream msg;
+    msg << where << "placed only " << placed << " of " << count << " disks after " << attempts
+        << " attempts: the requested area fraction in the region is " << area_fraction
+        << ": expected fewer or smaller disks, a larger region, or a lattice generator for dense packings "
+           "(random sequential addition jams near 0.547 in 2D and slows down well before)";
+    return msg.str();
+}
+
+// RSA only gets slower as the region fills (the area where a new centre fits shrinks with
+// every disk placed), so the attempts per placed disk over the last stretch estimate a lower
+// bound on the cost of every disk still to come. Once that cost times the disks left exceeds the
+// attempts left, the budget cannot suffice and spending it would only waste minutes. Not
+// while a bidisperse block places its large disks: the small ones after them fit far more
+// easily.
+class AttemptBudget {
+public:
+    explicit AttemptBudget(std::int64_t count) : budget_(std::max<std::int64_t>(1000 * count, 1000000)) {}
+
+    // Counts one attempt; false once the budget is spent or cannot suffice.
+    bool attempt(std::size_t placed, std::size_t left, bool cost_only_grows) {
+        ++attempts_;
+        if (attempts_ > budget_) return false;
+        if (attempts_ - checkpoint_attempts_ < stretch) return true;
+        const double placed_in_stretch = double(std::max<std::size_t>(1, placed - checkpoint_placed_));
+        const double attempts_per_disk = double(attempts_ - checkpoint_attempts_) / placed_in_stretch;
+        checkpoint_attempts_ = attempts_;
+        checkpoint_placed_ = placed;
+        return !(cost_only_grows && attempts_per_disk * double(left) > double(budget_ - attempts_));
+    }
+    std::int64_t attempts() const { return attempts_; }
+
+private:
+    static constexpr std::int64_t stretch = 1 << 16;  // attempts between two estimates of the cost
+    std::int64_t budget_, attempts_ = 0, checkpoint_attempts_ = 0;
+    std::size_t checkpoint_placed_ = 0;
+};
+
+// The densest packing of equal disks, the hexagonal one (Thue; Fejes Toth 1940): no random
+// placement comes anywhere near it, so a request beyond it is refused without an attempt.
+constexpr double densest_packing = 0.9068996821171089;  // pi / sqrt(12)
+
 // Random sequential addition (RSA; Feder, J. Theor. Biol. 87, 237 (1980)): propose a
 // uniformly random centre, keep it if the disk overlaps nothing placed so far, else draw
 // again. Centres keep the whole disk inside the region, except for a periodic world with
@@ -101,9 +146,17 @@ std::vector<Disk> place_gas(const Scene& scene, const ParticleGenerator& g, std:
     const double region_area = (region[2] - region[0]) * (region[3] - region[1]);
     double requested_area = earlier_area_in_region;
     for (double r : radii) requested_area += pi * r * r;
+    const double area_fraction = requested_area / region_area;
+    const std::string where = block_location(scene, g, index);
+    if (area_fraction > densest_packing) {
+        std::ostringstream msg;
+        msg << where << "the requested area fraction in the region is " << area_fraction
+            << ", beyond pi/sqrt(12) = 0.9069 (the densest packing of equal disks): expected fewer or smaller "
+               "disks or a larger region (random sequential addition jams near 0.547 in 2D)";
+        throw SceneError(msg.str());
+    }
 
-    const std::int64_t budget = std::max<std::int64_t>(1000 * g.count, 1000000);
-    std::int64_t attempts = 0;
+    AttemptBudget budget(g.count);
     std::vector<Disk> disks;
     disks.reserve(radii.size());
     for (double r : radii) {
@@ -111,18 +164,11 @@ std::vector<Disk> place_gas(const Scene& scene, const ParticleGenerator& g, std:
         const double x0 = region[0] + margin, w = region[2] - region[0] - 2 * margin;
         const double y0 = region[1] + margin, h = region[3] - region[1] - 2 * margin;
         if (w < 0 || h < 0)
-            throw SceneError(block_location(scene, g, index) + "a disk of radius " + std::to_string(r) +
-                             " does not fit in the region");
+            throw SceneError(where + "a disk of radius " + std::to_string(r) + " does not fit in the region");
+        const bool cost_only_grows = g.radius_kind != "bidisperse" || r == g.radius_small;
         for (;;) {
-            if (++attempts > budget) {
-                std::ostringstream msg;
-                msg << block_location(scene, g, index) << "placed only " << disks.size() << " of " << g.count
-                    << " disks after " << budget << " attempts: the requested area fraction in the region is "
-                    << requested_area / region_area
-                    << "; random sequential addition jams near 0.547 in 2D and slows down well before; "
-                       "use fewer or smaller disks, a larger region, or a lattice generator for dense packings";
-                throw SceneError(msg.str());
-            }
+            if (!budget.attempt(disks.size(), radii.size() - disks.size(), cost_only_grows))
+                throw SceneError(jammed_message(where, disks.size(), g.count, budget.attempts(), area_fraction));
             const double x = x0 + w * gsl_rng_uniform(rng);
             const double y = y0 + h * gsl_rng_uniform(rng);
             // gsl_rng_uniform lies in [0, 1), but x0 + w * u can still round up to xmax; a
@@ -203,6 +249,7 @@ ParticleState<double> generate_initial_state(const Scene& scene) {
     std::size_t total = 0;
     for (const auto& g : scene.generators) total += g.kind == "list" ? g.disks.size() : std::size_t(g.count);
     if (total == 0) throw SceneError((scene.name.empty() ? "scene" : scene.name) + ": no disks: expected N >= 1");
+    check_memory(scene);  // before the first allocation that grows with N
 
     Rng rng(gsl_rng_alloc(gsl_rng_mt19937), &gsl_rng_free);
     gsl_rng_set(rng.get(), static_cast<unsigned long>(scene.seed));

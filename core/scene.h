@@ -11,6 +11,9 @@
 
 namespace collide {
 
+// The most disks a scene may hold: the uniform grids index disks with 32-bit integers.
+constexpr std::int64_t max_disk_count = 2147483647;  // 2^31 - 1
+
 enum class Boundary { reflect, periodic };
 enum class StepOrder { collide_first, integrate_first };
 

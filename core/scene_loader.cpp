@@ -7,7 +7,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include "disk_placement.h"
 #include "toml_fields.h"
@@ -154,9 +153,11 @@ void read_region(const TomlFields& block, const World& world, ParticleGenerator&
     g.region = std::array<double, 4>{r[0], r[1], r[2], r[3]};
 }
 
+const char* const count_range = "an integer in [1, 2^31 - 1] (the grids index disks with 32-bit integers)";
+
 std::int64_t read_count(const TomlFields& block) {
     const std::int64_t count = block.integer("count");
-    block.require(count >= 1 && count <= 100000000, "count", "an integer in [1, 10^8]");
+    block.require(count >= 1 && count <= max_disk_count, "count", count_range);
     return count;
 }
 
@@ -263,6 +264,9 @@ void check_explicit_disks(const Scene& scene, const std::string& file) {
 }
 
 Scene read_scene(const toml::table& root_table, const std::string& file) {
+    if (root_table.empty())
+        throw SceneError(location(file, 0) + "no keys in the file: expected a scene with description, [world] and "
+                                             "[[particles]] (docs/scenes.md)");
     const TomlFields root(root_table, "", file);
     root.allow_only({"description", "seed", "world", "physics", "run", "particles", "backend"});
     Scene scene;
@@ -281,9 +285,17 @@ Scene read_scene(const toml::table& root_table, const std::string& file) {
     if (!particles || !particles->is_array_of_tables() || particles->as_array()->empty())
         root.fail("particles", "one or more [[particles]] tables");
     std::size_t index = 0;
-    for (const toml::node& block : *particles->as_array())
-        scene.generators.push_back(read_particles(
-            TomlFields(*block.as_table(), "[[particles]][" + std::to_string(++index) + "]", file), scene.world));
+    std::int64_t total = 0;
+    for (const toml::node& block : *particles->as_array()) {
+        const TomlFields fields(*block.as_table(), "[[particles]][" + std::to_string(++index) + "]", file);
+        scene.generators.push_back(read_particles(fields, scene.world));
+        const ParticleGenerator& g = scene.generators.back();
+        total += g.kind == "list" ? std::int64_t(g.disks.size()) : g.count;
+        // Each block is below the limit, so the sum cannot overflow before this test fails.
+        if (total > max_disk_count)
+            fields.fail("count", "at most 2^31 - 1 disks in all blocks together (the grids index disks with "
+                                 "32-bit integers); with this block the scene holds " + std::to_string(total));
+    }
     if (root.has("backend")) read_backend_options(root, scene);
 
     // The uniform grid needs at least 2 cells of side 2 r_max along a periodic axis, or a disk
@@ -300,6 +312,7 @@ Scene read_scene(const toml::table& root_table, const std::string& file) {
 }  // namespace
 
 Scene parse_scene(const std::string& text, const std::string& source_name) {
+    check_toml_nesting(text, source_name);  // before toml++ recurses into a hostile file
     toml::table table;
     try {
         table = toml::parse(text, source_name);
@@ -313,12 +326,22 @@ Scene parse_scene(const std::string& text, const std::string& source_name) {
     return scene;
 }
 
+// Scene files are small (generators make the large scenes); a limit keeps a huge or endless
+// file (a device, a pipe) from being read into memory: reading stops once the limit is passed.
+constexpr std::size_t max_scene_file_bytes = 64u << 20;
+
 Scene load_scene(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw SceneError(path + ": cannot open scene file");
-    std::ostringstream text;
-    text << in.rdbuf();
-    Scene scene = parse_scene(text.str(), path);
+    std::string text;
+    std::vector<char> chunk(1 << 16);
+    while (in.read(chunk.data(), std::streamsize(chunk.size())) || in.gcount() > 0) {
+        text.append(chunk.data(), std::size_t(in.gcount()));
+        if (text.size() <= max_scene_file_bytes) continue;
+        throw SceneError(path + ": more than 64 MiB: expected a scene file of at most 64 MiB (gas and lattice "
+                                "generators describe large scenes in a few lines)");
+    }
+    Scene scene = parse_scene(text, path);
     scene.source_path = path;
     return scene;
 }

@@ -1,5 +1,6 @@
 #include "toml_fields.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -13,9 +14,12 @@ std::string location(const std::string& file, int line) {
 }
 
 // Floats with 15 significant digits: a decimal literal from the file (-0.1) reads back as
-// written instead of as its binary neighbour (-0.10000000000000001).
+// written instead of as its binary neighbour (-0.10000000000000001). Strings in double
+// quotes, as a user writes them in a scene file.
 static void write_value(std::ostream& out, const toml::node& n) {
-    if (auto f = n.as_floating_point()) {
+    if (auto s = n.as_string()) {
+        out << '"' << s->get() << '"';
+    } else if (auto f = n.as_floating_point()) {
         char buffer[32];
         std::snprintf(buffer, sizeof buffer, "%.15g", f->get());
         out << buffer;
@@ -31,14 +35,18 @@ static void write_value(std::ostream& out, const toml::node& n) {
     }
 }
 
+std::string shortened(std::string_view text) {
+    std::string line(text.substr(0, std::min<std::size_t>(text.size(), 61)));
+    for (char& c : line)
+        if (c == '\n' || c == '\r') c = ' ';
+    if (text.size() > 60) line = line.substr(0, 57) + "...";
+    return line;
+}
+
 std::string toml_value_text(const toml::node& n) {
     std::ostringstream out;
     write_value(out, n);
-    std::string text = out.str();
-    for (char& c : text)
-        if (c == '\n') c = ' ';
-    if (text.size() > 60) text = text.substr(0, 57) + "...";
-    return text;
+    return shortened(out.str());
 }
 
 TomlFields::TomlFields(const toml::table& table, std::string path, const std::string& file)
@@ -46,8 +54,9 @@ TomlFields::TomlFields(const toml::table& table, std::string path, const std::st
 
 int TomlFields::line() const { return static_cast<int>(table_.source().begin.line); }
 
+// Shortened: a hostile file's 10 MB key must not become a 10 MB error message.
 std::string TomlFields::key_name(std::string_view key) const {
-    return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
+    return path_.empty() ? shortened(key) : path_ + "." + shortened(key);
 }
 
 void TomlFields::fail(std::string_view key, std::string_view expected) const {
@@ -123,7 +132,12 @@ std::string TomlFields::string(std::string_view key) const {
 std::string TomlFields::choice(std::string_view key, std::initializer_list<std::string_view> choices,
                                std::string_view fallback) const {
     std::string expected;
-    for (std::string_view c : choices) expected += (expected.empty() ? "\"" : " or \"") + std::string(c) + "\"";
+    std::size_t index = 0;
+    for (std::string_view c : choices) {
+        const char* separator = index == 0 ? "" : index + 1 == choices.size() ? " or " : ", ";
+        expected.append(separator).append("\"").append(c).append("\"");
+        ++index;
+    }
     if (!has(key)) {
         if (fallback.empty()) fail(key, expected);
         return std::string(fallback);
@@ -162,6 +176,88 @@ TomlFields TomlFields::table(std::string_view key) const {
     else name = key_name(key);
     if (!n || !n->is_table()) fail(key, path_.empty() ? "a table " + name : std::string("a table"));
     return TomlFields(*n->as_table(), name, file_);
+}
+
+}  // namespace collide
+
+namespace collide {
+namespace {
+
+// Index of the last character of the string that opens at text[start] (a quote), counting
+// the lines a multi-line string spans. A single-line string ends at the end of its line at
+// the latest, and an unterminated one at the end of the text: the parser reports both.
+std::size_t end_of_string(std::string_view text, std::size_t start, int& line) {
+    const char quote = text[start];
+    const std::string triple(3, quote);
+    const bool multi_line = text.substr(start, 3) == triple;
+    const bool escapes = quote == '"';  // literal strings ('...') have no escapes
+    for (std::size_t i = start + (multi_line ? 3 : 1); i < text.size(); ++i) {
+        if (text[i] == '\n') {
+            if (!multi_line) return i - 1;
+            ++line;
+        } else if (escapes && text[i] == '\\') {
+            if (i + 1 < text.size() && text[i + 1] == '\n') ++line;
+            ++i;
+        } else if (text[i] == quote && (!multi_line || text.substr(i, 3) == triple)) {
+            if (!multi_line) return i;
+            std::size_t end = i + 2;  // """a""""" : up to two more quotes belong to the content
+            while (end + 1 < text.size() && text[end + 1] == quote && end < i + 4) ++end;
+            return end;
+        }
+    }
+    return text.size();
+}
+
+}  // namespace
+
+// A small state machine over the raw text that knows just enough TOML to tell keys from
+// values: strings and comments are skipped; a key runs from the start of a top-level line,
+// or from '{' or ',' inside an inline table, to its '='; a table header runs from '[' at
+// the start of a line to ']'. Dots in a key or header separate its parts; '[' in a value
+// opens an array and '{' an inline table.
+void check_toml_nesting(std::string_view text, const std::string& file) {
+    int line = 1;
+    std::string open;        // the open arrays '[' and inline tables '{', innermost last
+    bool in_key = true;      // reading a key or a table header (else a value)
+    bool in_header = false;
+    bool line_start = true;  // nothing but whitespace yet on this top-level line
+    int key_parts = 1;
+    const auto start_key = [&] { in_key = true, in_header = false, key_parts = 1; };
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (c == '\n') {
+            ++line;
+            if (open.empty()) start_key(), line_start = true;
+            continue;
+        }
+        if (c == ' ' || c == '\t' || c == '\r') continue;
+        const bool first_on_line = line_start;
+        line_start = false;
+        if (c == '#') {
+            i = std::min(text.find('\n', i), text.size()) - 1;
+        } else if (c == '"' || c == '\'') {
+            i = end_of_string(text, i, line);
+        } else if (in_key) {
+            if (c == '[' && first_on_line && open.empty()) in_header = true;
+            else if (c == '.' && ++key_parts > max_key_parts)
+                throw SceneError(location(file, line) + "a table header or key with more than " +
+                                 std::to_string(max_key_parts) + " dotted parts: expected at most " +
+                                 std::to_string(max_key_parts) + " (a scene needs 2)");
+            else if (c == '=' || (c == ']' && in_header)) in_key = false;
+            else if (c == '}' && !open.empty()) open.pop_back(), in_key = false;  // an empty {}
+        } else if (c == '[' || c == '{') {
+            open.push_back(c);
+            if (open.size() > std::size_t(max_brackets))
+                throw SceneError(location(file, line) + "arrays or inline tables nested more than " +
+                                 std::to_string(max_brackets) + " deep: expected at most " +
+                                 std::to_string(max_brackets) + " (a scene needs 2)");
+            if (c == '{') start_key();
+        } else if ((c == ']' || c == '}') && !open.empty()) {
+            open.pop_back();
+        } else if (c == ',' && !open.empty() && open.back() == '{') {
+            start_key();
+        }
+    }
 }
 
 }  // namespace collide

@@ -67,5 +67,16 @@ private:
 std::string location(const std::string& file, int line);
 // A value as it appears in TOML, shortened to one line for messages.
 std::string toml_value_text(const toml::node& n);
+// Text cut to one line of at most 60 characters ("..." marks a cut), for messages.
+std::string shortened(std::string_view text);
+
+// toml++ builds and destroys nested tables and arrays recursively, so a hostile file such as
+// [a.a.a. ... .a] with 10^5 levels overflows the stack inside the parser, before any check
+// of ours can run. No scene needs more than 4 levels: this scans the raw text first and
+// throws SceneError at the first table header or key with more than `max_key_parts` dotted
+// parts, or the first array or inline table nested deeper than `max_brackets`.
+constexpr int max_key_parts = 8;
+constexpr int max_brackets = 8;
+void check_toml_nesting(std::string_view text, const std::string& file);
 
 }  // namespace collide

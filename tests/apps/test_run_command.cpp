@@ -2,8 +2,6 @@
 // exit code, its messages on stderr and the files it leaves behind are checked.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -11,6 +9,7 @@
 #include <vector>
 
 #include "tests/support/hdf5_reader.h"
+#include "tests/support/program_runner.h"
 #include "tests/support/scratch_directory.h"
 #include "tests/support/test_scenes.h"
 
@@ -18,41 +17,14 @@ namespace collide {
 namespace {
 
 using test::Hdf5File;
+using test::contains;
+using test::ProgramResult;
+using test::run_program;
 using test::ScratchDirectory;
-
-struct ProgramResult {
-    int exit_code = -1;
-    std::string out, err;
-};
-
-std::string shell_quoted(const std::string& word) {
-    std::string quoted = "'";
-    for (char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return quoted + "'";
-}
-
-// Runs `program args...` with stdout and stderr captured in files of `dir`.
-ProgramResult run_program(const std::string& program, const std::vector<std::string>& args,
-                          const ScratchDirectory& dir) {
-    const std::string out_file = dir.file(".stdout"), err_file = dir.file(".stderr");
-    std::string command = shell_quoted(program);
-    for (const auto& arg : args) command += " " + shell_quoted(arg);
-    command += " >" + shell_quoted(out_file) + " 2>" + shell_quoted(err_file);
-    const int status = std::system(command.c_str());
-    ProgramResult result;
-    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    result.out = test::read_text_file(out_file);
-    result.err = test::read_text_file(err_file);
-    std::filesystem::remove(out_file);
-    std::filesystem::remove(err_file);
-    return result;
-}
 
 ProgramResult run_collide(const std::vector<std::string>& args, const ScratchDirectory& dir) {
     return run_program(COLLIDE_EXECUTABLE, args, dir);
 }
-
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 const std::string head_on_scene = test::scene_file("head_on_equal.toml");
 

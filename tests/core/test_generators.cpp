@@ -193,6 +193,40 @@ TEST(GasGenerator, TooDenseForRandomSequentialAdditionIsAClearError) {
     }
 }
 
+// The attempt budget is max(1000 N, 10^6); a hopeless request must not spend it all. At area
+// fraction 0.8 RSA stalls near 0.547, and the generator sees that the attempts per placed disk
+// times the disks left exceed the budget left.
+TEST(GasGenerator, AHopelessPackingGivesUpLongBeforeTheBudgetIsSpent) {
+    const std::int64_t count = 20000;
+    const double side = std::sqrt(double(count) * pi * 0.25 / 0.8);
+    const Scene scene = scene_with(side, side, {gas_block(count, 0.5, 1.0)}, Boundary::periodic);
+    try {
+        generate_initial_state(scene);
+        FAIL() << "no SceneError";
+    } catch (const SceneError& e) {
+        const std::string message = e.what();
+        const auto after = message.find(" disks after ");
+        ASSERT_NE(after, std::string::npos) << message;
+        const long long attempts = std::stoll(message.substr(after + 13));
+        EXPECT_LT(attempts, 1000 * count / 10) << message;
+        EXPECT_NE(message.find("area fraction in the region is 0.8"), std::string::npos) << message;
+    }
+}
+
+TEST(GasGenerator, BeyondTheDensestPackingIsRefusedWithoutAnAttempt) {
+    // 120 disks of radius 0.5 in 10 x 10: phi = 0.942 > pi/sqrt(12) = 0.9069.
+    const Scene scene = scene_with(10, 10, {gas_block(120, 0.5, 1.0)}, Boundary::periodic);
+    try {
+        generate_initial_state(scene);
+        FAIL() << "no SceneError";
+    } catch (const SceneError& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("area fraction in the region is 0.942"), std::string::npos) << message;
+        EXPECT_NE(message.find("beyond pi/sqrt(12) = 0.9069"), std::string::npos) << message;
+        EXPECT_EQ(message.find("attempts"), std::string::npos) << message;
+    }
+}
+
 TEST(Seeding, SameSeedSameStateOtherSeedOtherState) {
     ParticleGenerator g = gas_block(500, 0.5, 1.0);
     g.velocity_kind = "maxwell";

@@ -1,0 +1,46 @@
+// Runs a built program as a user would, from a test: the command line goes through the
+// shell with every word quoted, and stdout and stderr are captured in files of a scratch
+// directory (removed again, so they do not count as files the program left behind).
+#pragma once
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "tests/support/scratch_directory.h"
+
+namespace collide::test {
+
+struct ProgramResult {
+    int exit_code = -1;  // -1 when the program did not exit normally (a crash, a signal)
+    std::string out, err;
+};
+
+inline std::string shell_quoted(const std::string& word) {
+    std::string quoted = "'";
+    for (char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return quoted + "'";
+}
+
+inline ProgramResult run_program(const std::string& program, const std::vector<std::string>& args,
+                                 const ScratchDirectory& dir) {
+    const std::string out_file = dir.file(".stdout"), err_file = dir.file(".stderr");
+    std::string command = shell_quoted(program);
+    for (const auto& arg : args) command.append(" ").append(shell_quoted(arg));
+    command.append(" >").append(shell_quoted(out_file)).append(" 2>").append(shell_quoted(err_file));
+    const int status = std::system(command.c_str());
+    ProgramResult result;
+    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    result.out = read_text_file(out_file);
+    result.err = read_text_file(err_file);
+    std::filesystem::remove(out_file);
+    std::filesystem::remove(err_file);
+    return result;
+}
+
+inline bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+}  // namespace collide::test
