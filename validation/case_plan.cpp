@@ -13,6 +13,7 @@ std::string format_number(double v) {
 
 std::string make_id(const CaseSpec& c) {
     std::string id = c.scene + "__" + c.backend;
+    if (!c.parameters.empty()) id += "__" + parameter_label(c);
     if (c.dt) id += "__dt" + format_number(*c.dt);
     if (c.substeps) id += "__sub" + std::to_string(*c.substeps);
     if (c.iterations) id += "__it" + std::to_string(*c.iterations);
@@ -27,6 +28,27 @@ std::vector<std::optional<T>> sweep(const std::vector<T>& values) {
 }
 
 }  // namespace
+
+std::string parameter_label(const CaseSpec& spec) {
+    std::string label;
+    for (const auto& [path, value] : spec.parameters)
+        label += (label.empty() ? "" : "__") + path + "=" + format_number(value);
+    return label;
+}
+
+std::vector<std::vector<std::pair<std::string, double>>> parameter_points(const SuiteScene& entry) {
+    std::vector<std::vector<std::pair<std::string, double>>> points = {{}};
+    for (const SceneParameter& p : entry.set) {
+        std::vector<std::vector<std::pair<std::string, double>>> next;
+        for (const auto& point : points)
+            for (double v : p.values) {
+                next.push_back(point);
+                next.back().emplace_back(p.path, v);
+            }
+        points = std::move(next);
+    }
+    return points;
+}
 
 std::vector<const BackendInfo*> select_backends(const Suite& suite, const std::vector<BackendInfo>& available) {
     std::vector<const BackendInfo*> out;
@@ -65,6 +87,7 @@ std::vector<CaseSpec> plan_cases(const Suite& suite, const std::vector<Scene>& s
             const auto dts = per_dt ? sweep(entry.dt) : sweep<double>({});
             const auto subs = reference ? sweep<int>({}) : sweep(entry.substeps);
             const auto its = reference ? sweep<int>({}) : sweep(entry.iterations);
+            for (const auto& parameters : parameter_points(entry))
             for (const auto& dt : dts)
                 for (const auto& sub : subs)
                     for (const auto& it : its)
@@ -77,6 +100,7 @@ std::vector<CaseSpec> plan_cases(const Suite& suite, const std::vector<Scene>& s
                             c.dt = dt;
                             c.substeps = sub;
                             c.iterations = it;
+                            c.parameters = parameters;
                             c.seed = seed;
                             c.left_out = refused.value_or("");
                             c.id = make_id(c);

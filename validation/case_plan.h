@@ -1,10 +1,12 @@
 // The cases of a suite: every scene x backend x sweep point x replicate seed, each with a
 // stable id (used for file names, --resume and the report). The reference backend (event)
-// has no time step, so it runs once per scene and seed whatever the sweep.
+// has no time step, so it runs once per scene, scene-parameter value and seed whatever the
+// dt sweep.
 #pragma once
 
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -22,6 +24,7 @@ struct CaseSpec {
     std::optional<double> dt;       // overrides of the scene for this sweep point
     std::optional<int> substeps;
     std::optional<int> iterations;
+    std::vector<std::pair<std::string, double>> parameters;  // scene-key sweep point (path, value)
     std::uint64_t seed = 1;
     std::string left_out;           // non-empty: the backend refused the scene, with its reason
 };
@@ -30,9 +33,16 @@ struct CaseSpec {
 // Throws SuiteError naming the suite file and the unknown backend.
 std::vector<const BackendInfo*> select_backends(const Suite& suite, const std::vector<BackendInfo>& available);
 
+// Every combination of the values of a scene's `set` sweeps ({{}} when it has none).
+std::vector<std::vector<std::pair<std::string, double>>> parameter_points(const SuiteScene& entry);
+
 // Expands a suite; `scenes` are the loaded scenes, parallel to suite.scenes.
 std::vector<CaseSpec> plan_cases(const Suite& suite, const std::vector<Scene>& scenes,
                                  const std::vector<const BackendInfo*>& backends);
+
+// "path=value" for each scene parameter of the case, joined by "__" ("" when none): part of
+// the case id and the key that pairs a case with its reference run.
+std::string parameter_label(const CaseSpec& spec);
 
 // The scene as this case runs it: the case's seed, dt, substeps and the suite's overrides.
 Scene case_scene(const Scene& scene, const SuiteScene& entry, const CaseSpec& spec);

@@ -68,6 +68,11 @@ void write_case_result(const CaseResult& r, const std::string& path) {
     if (r.spec.dt) spec.insert("dt", *r.spec.dt);
     if (r.spec.substeps) spec.insert("substeps", *r.spec.substeps);
     if (r.spec.iterations) spec.insert("iterations", *r.spec.iterations);
+    if (!r.spec.parameters.empty()) {
+        toml::array parameters;  // an array keeps the sweep order (a table would sort the paths)
+        for (const auto& [path, value] : r.spec.parameters) parameters.push_back(toml::table{{"path", path}, {"value", value}});
+        spec.insert("parameters", parameters);
+    }
     const MetricSeries& m = r.series;
     toml::table series{{"time", to_array(m.time)}, {"kinetic_energy", to_array(m.kinetic_energy)},
                        {"total_energy", to_array(m.total_energy)}, {"momentum_x", to_array(m.momentum_x)},
@@ -130,6 +135,10 @@ CaseResult read_case_result(const std::string& path) {
     if (auto v = (*spec)["dt"].value<double>()) r.spec.dt = *v;
     if (auto v = (*spec)["substeps"].value<int>()) r.spec.substeps = *v;
     if (auto v = (*spec)["iterations"].value<int>()) r.spec.iterations = *v;
+    if (const toml::array* a = (*spec)["parameters"].as_array())
+        for (const auto& e : *a)
+            if (const toml::table* p = e.as_table())
+                r.spec.parameters.emplace_back((*p)["path"].value_or(std::string()), (*p)["value"].value_or(0.0));
     r.status = run_status_from_string(root["status"].value_or(std::string("error")));
     r.diagnostic = root["diagnostic"].value_or(std::string());
     r.disks = std::size_t(root["disks"].value_or(std::int64_t(0)));

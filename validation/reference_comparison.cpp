@@ -55,6 +55,9 @@ void judge_at_most(CheckResult& c, double value, double tolerance, const std::st
     }
 }
 
+// A case's reference runs share its scene and scene-parameter values.
+std::string reference_key(const CaseSpec& spec) { return spec.scene + "|" + parameter_label(spec); }
+
 std::vector<double> replicate_values(const Group& g, double (*value)(const CaseResult&)) {
     std::vector<double> out;
     for (const CaseResult* r : g.cases)
@@ -111,12 +114,12 @@ Comparisons compare_with_reference(const Suite& suite, const std::vector<CaseRes
     std::map<std::string, Group> reference_groups;
     for (const Group& g : groups) {
         if (!g.cases.front()->spec.reference) continue;
-        Group& merged = reference_groups[g.cases.front()->spec.scene];
+        Group& merged = reference_groups[reference_key(g.cases.front()->spec)];
         if (merged.id.empty()) merged.id = g.id;
         merged.cases.insert(merged.cases.end(), g.cases.begin(), g.cases.end());
     }
-    auto reference_group = [&](const std::string& scene) -> const Group* {
-        auto it = reference_groups.find(scene);
+    auto reference_group = [&](const std::string& key) -> const Group* {
+        auto it = reference_groups.find(key);
         return it == reference_groups.end() ? nullptr : &it->second;
     };
     std::map<std::pair<std::string, std::string>, WorkPrecisionLine> lines;
@@ -127,7 +130,7 @@ Comparisons compare_with_reference(const Suite& suite, const std::vector<CaseRes
         const SuiteScene& entry = suite.scenes[spec.scene_index];
         if (entry.comparison == Comparison::none || spec.reference) continue;
         const Tolerances& tol = tolerances.at(spec.backend);
-        const Group* ref = reference_group(spec.scene);
+        const Group* ref = reference_group(reference_key(spec));
         const bool left_out_case = g.cases.front()->status == RunStatus::left_out;
         const std::vector<std::string> names = entry.comparison == Comparison::trajectory
             ? std::vector<std::string>{"trajectory_error"}

@@ -117,10 +117,38 @@ void read_tolerances(const toml::table& root, const std::string& file, Tolerance
     }
 }
 
+// set = { "particles.0.disks.1.mass" = [1.0, 1e9] }: each key a quoted path into the scene
+// file, each value an array of numbers. An unquoted dotted key would make TOML nest tables,
+// so a table where an array belongs gets a hint to quote the path.
+std::vector<SceneParameter> read_parameter_sweeps(const toml::table& t, const std::string& file,
+                                                  const std::string& where) {
+    std::vector<SceneParameter> out;
+    const toml::node* node = t.get("set");
+    if (!node) return out;
+    TableReader r(t, file, where);
+    const toml::table* table = node->as_table();
+    if (!table || table->empty()) r.fail("set", "a table of \"scene.key.path\" = [values]");
+    for (const auto& [key, value] : *table) {
+        const std::string path(key.str());
+        TableReader inner(*table, file, where + ".set");
+        if (value.is_table())
+            inner.fail(path, "an array of numbers (quote a dotted path: \"" + path + ".…\" = [...])");
+        const toml::array* values = value.as_array();
+        if (!values || values->empty()) inner.fail(path, "a non-empty array of numbers");
+        SceneParameter p{path, {}};
+        for (const auto& v : *values) {
+            if (!v.is_number()) inner.fail(path, "a non-empty array of numbers");
+            p.values.push_back(*v.value<double>());
+        }
+        out.push_back(std::move(p));
+    }
+    return out;
+}
+
 SuiteScene read_scene(const toml::table& t, const std::string& file, int index, const std::string& dir,
                       const std::string& scene_dir) {
     TableReader r(t, file, "[[scene]] #" + std::to_string(index));
-    r.only({"name", "path", "compare", "dt", "substeps", "iterations", "seeds", "duration", "output_interval"});
+    r.only({"name", "path", "compare", "dt", "substeps", "iterations", "seeds", "duration", "output_interval", "set"});
     SuiteScene s;
     const auto name = r.string("name");
     const auto path = r.string("path");
@@ -143,6 +171,7 @@ SuiteScene read_scene(const toml::table& t, const std::string& file, int index, 
     s.seeds = r.positive_array<std::uint64_t>("seeds", "positive integer seeds");
     s.duration = r.positive("duration");
     s.output_interval = r.positive("output_interval");
+    s.set = read_parameter_sweeps(t, file, "[[scene]] #" + std::to_string(index));
     return s;
 }
 
@@ -159,7 +188,7 @@ Suite parse_suite(const std::string& text, const std::string& file, const std::s
     }
     TableReader r(root, file, "");
     r.only({"name", "description", "scene_dir", "backends", "reference", "seeds", "time_limit",
-            "warmup_fraction", "output", "tolerances", "scene"});
+            "warmup_fraction", "stability", "output", "tolerances", "scene"});
     Suite suite;
     suite.source_path = file;
     suite.name = r.string("name").value_or(std::filesystem::path(file).stem().string());
@@ -187,6 +216,7 @@ Suite parse_suite(const std::string& text, const std::string& file, const std::s
         if (!v || *v < 0 || *v > 1) r.fail("warmup_fraction", "a number in [0, 1]");
         suite.warmup_fraction = *v;
     }
+    suite.stability = r.boolean("stability").value_or(false);
     if (const toml::node* o = root.get("output")) {
         if (!o->is_table()) r.fail("output", "a table");
         TableReader out(*o->as_table(), file, "output");

@@ -30,6 +30,13 @@ enum class Comparison {
 };
 const char* to_string(Comparison c);
 
+// A sweep over values of one key of the scene file, e.g. "particles.0.disks.1.mass" = [1, 1e9]:
+// the path names tables by key and arrays by index (scene_parameters.h applies it).
+struct SceneParameter {
+    std::string path;
+    std::vector<double> values;
+};
+
 struct SuiteScene {
     std::string name;                 // scene file stem; also the name used in case ids
     std::string path;                 // resolved scene file path ("" when `scene` is given)
@@ -39,6 +46,7 @@ struct SuiteScene {
     std::vector<int> substeps;        // sweep; empty = the scene's own substeps
     std::vector<int> iterations;      // sweep of a backend's solver iterations (box2d); empty = default
     std::vector<std::uint64_t> seeds; // replicates; empty = the suite's seeds
+    std::vector<SceneParameter> set;  // scene-key sweeps (all combinations, crossed with dt)
     std::optional<double> duration;   // overrides [run].duration of the scene
     std::optional<double> output_interval;
 };
@@ -59,6 +67,7 @@ struct Suite {
     std::vector<std::uint64_t> seeds = {1};
     double time_limit_seconds = 120;  // per case; a case running longer is killed and fails
     double warmup_fraction = 0.1;     // of the duration, run once before the timed run
+    bool stability = false;           // classify every case by failure mode (stability.h)
     OutputOptions output;
     ToleranceTable tolerances;
     std::vector<SuiteScene> scenes;

@@ -17,6 +17,7 @@
 #include "checks.h"
 #include "core/backend_registry.h"
 #include "reference_comparison.h"
+#include "stability.h"
 #include "suite.h"
 
 namespace collide::validation {
@@ -32,6 +33,7 @@ struct RunnerOptions {
 struct SuiteOutcome {
     std::vector<CaseResult> cases;
     std::vector<CheckResult> checks;
+    std::vector<Classification> classifications;  // parallel to cases; empty unless suite.stability
     std::vector<WorkPrecisionLine> work_precision;
     std::size_t cases_run = 0, cases_resumed = 0;
     double wall_seconds = 0;

@@ -76,7 +76,7 @@ std::string string_map(const std::map<std::string, std::string>& m) {
     return o.str();
 }
 
-std::string case_json(const CaseResult& r) {
+std::string case_json(const CaseResult& r, const Classification* c) {
     Object o;
     o.text("id", r.spec.id).text("scene", r.spec.scene).text("backend", r.spec.backend)
         .boolean("reference", r.spec.reference).text("group", group_id(r.spec))
@@ -91,6 +91,10 @@ std::string case_json(const CaseResult& r) {
     Object phases;
     for (const auto& [k, v] : r.phase_seconds) phases.number(k, v);
     o.field("phase_seconds", phases.str());
+    Object parameters;  // path -> value of the scene-parameter sweep point
+    for (const auto& [path, value] : r.spec.parameters) parameters.number(path, value);
+    o.field("parameters", parameters.str());
+    if (c) o.text("outcome", to_string(c->outcome)).text("outcome_reason", c->reason);
     return o.str();
 }
 
@@ -141,6 +145,15 @@ std::string xml_escape(const std::string& s) {
     return out;
 }
 
+std::string cases_json(const SuiteOutcome& outcome) {
+    std::string out = "[";
+    for (std::size_t k = 0; k < outcome.cases.size(); ++k) {
+        const Classification* c = k < outcome.classifications.size() ? &outcome.classifications[k] : nullptr;
+        out += (k ? ",\n  " : "") + case_json(outcome.cases[k], c);
+    }
+    return out + "]";
+}
+
 }  // namespace
 
 void write_summary_json(const Suite& suite, const SuiteOutcome& outcome, const std::string& path) {
@@ -160,13 +173,13 @@ void write_summary_json(const Suite& suite, const SuiteOutcome& outcome, const s
     std::map<std::string, std::string> scene_files;
     for (const auto& s : suite.scenes) scene_files[s.name] = s.path;
     Object root;
-    root.text("suite", suite.name).text("description", suite.description).text("suite_file", suite.source_path)
+    root.text("suite", suite.name).boolean("stability", suite.stability).text("description", suite.description).text("suite_file", suite.source_path)
         .text("reference", suite.reference).boolean("passed", outcome.passed())
         .number("wall_seconds", outcome.wall_seconds).integer("cases_run", (long long)outcome.cases_run)
         .integer("cases_resumed", (long long)outcome.cases_resumed).field("counts", counts.str())
         .field("provenance", string_map(build_provenance())).text("command_line", command_line())
         .field("seeds", string_map(seeds)).field("scene_files", string_map(scene_files))
-        .field("cases", array(outcome.cases, case_json))
+        .field("cases", cases_json(outcome))
         .field("checks", array(outcome.checks, check_json))
         .field("work_precision", array(outcome.work_precision, line_json));
     write_atomically(path, root.str() + "\n");

@@ -14,9 +14,11 @@ from collections import OrderedDict
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import figures  # noqa: E402
+import stability  # noqa: E402
 
 CHECK_ORDER = ["run", "momentum_drift", "energy_drift", "max_overlap", "mean_overlap", "overlapping_pairs",
-               "wall_penetration", "trajectory_error", "pressure", "collision_rate", "speed_distribution"]
+               "wall_penetration", "trajectory_error", "pressure", "collision_rate", "speed_distribution",
+               "stability"]
 
 
 def load_case(directory, case):
@@ -81,6 +83,7 @@ def check_table(summary):
                 out.append(f"<td class='left_out' title='{title}'>left out</td>")
             else:
                 text = "ok" if name == "run" and c["status"] == "pass" else \
+                    c["detail"].split(":")[0] if name == "stability" else \
                     f"{fmt(c['value'])} {html.escape(c['comparison'])} {fmt(c['tolerance'])}"
                 out.append(f"<td class='{c['status']}' title='{title}'>{text}</td>")
         out.append("</tr>")
@@ -231,6 +234,7 @@ def write_html(summary, directory, path):
 {counts['fail']} failed, {counts['left_out']} left out; {len(summary['cases'])} cases in {summary['wall_seconds']:.1f} s
 (commit {html.escape(summary['provenance'].get('git_commit', '?')[:12])}{' dirty' if summary['provenance'].get('git_dirty') == 'true' else ''}).</p>
 <h2>1. Failures</h2>{failures(summary)}
+{stability.section(summary, image)}
 <h2>2. Checks</h2>
 <p>One row per case (statistical comparisons: per sweep group, over its replicates), one column per check.
 A cell shows the measured value, how it must compare with the tolerance, and the tolerance; green passes, red
@@ -260,6 +264,7 @@ def write_markdown(summary, path):
              "## Failures", ""]
     failed = [c for c in summary["checks"] if c["status"] == "fail"]
     lines += [f"- `{c['subject']}` {c['check']}: {c['detail']}" for c in failed] or ["None."]
+    lines += stability.markdown(summary)
     lines += ["", "## Checks", "", "| case | check | status | value | tolerance | note |", "|---|---|---|---|---|---|"]
     for c in summary["checks"]:
         lines.append(f"| `{c['subject']}` | {c['check']} | {c['status']} | {fmt(c['value']) if c['status'] != 'left_out' else ''} "

@@ -1,0 +1,111 @@
+// Stability classification: the outcomes' precedence on synthetic case results (each result
+// broken in several ways at once must report the most severe), and tunnelling detection on a
+// synthetic pair that passes through its partner against one that bounces.
+#include <gtest/gtest.h>
+
+#include "validation/stability.h"
+#include "validation/tunnelling.h"
+
+namespace collide::validation {
+namespace {
+
+// Two disks (radius 0.5) on the x axis at output times 0, 1, 2, 3; disk 1 at rest at x = 5,
+// disk 0 at x_0[k] (and y = 2 + offset).
+CaseResult pair_run(std::vector<double> x0, double offset = 0) {
+    CaseResult r;
+    for (std::size_t k = 0; k < x0.size(); ++k) {
+        r.trajectory_time.push_back(double(k));
+        r.trajectory.push_back(Snapshot{{x0[k], 5.0}, {2.0 + offset, 2.0}, {0, 0}, {0, 0}, {0.5, 0.5}});
+        MetricSeries& m = r.series;
+        m.time.push_back(double(k));
+        m.kinetic_energy.push_back(1.0);
+        m.total_energy.push_back(1.0);
+        m.max_overlap.push_back(0.0);
+        m.nonfinite.push_back(0.0);
+    }
+    return r;
+}
+
+const CaseResult kBounce = pair_run({1.0, 3.0, 2.0, 1.0});      // the exact run: back off after contact
+const CaseResult kPassThrough = pair_run({1.0, 3.0, 7.0, 9.0}); // straight through disk 1
+
+SceneFeatures walls() {
+    SceneFeatures f;
+    f.reflecting_walls = true;
+    return f;
+}
+
+TEST(Tunnelling, APairThatPassesThroughIsCountedOneThatBouncesIsNot) {
+    const auto through = count_tunnelling(kPassThrough, kBounce, false);
+    ASSERT_TRUE(through.evaluated);
+    EXPECT_EQ(through.pairs, 1u);
+    EXPECT_NE(through.first.find("t = 2"), std::string::npos) << through.first;
+    EXPECT_EQ(count_tunnelling(kBounce, kBounce, false).pairs, 0u);
+}
+
+TEST(Tunnelling, PassingBesideOrWhereTheReferenceAlsoCrossesIsNoTunnelling) {
+    // 1.5 apart sideways (> contact distance 1): the disks miss each other.
+    EXPECT_EQ(count_tunnelling(pair_run({1.0, 3.0, 7.0, 9.0}, 1.5), kBounce, false).pairs, 0u);
+    // The reference has them crossed too (a legitimate pass, e.g. after a deflection).
+    EXPECT_EQ(count_tunnelling(kPassThrough, kPassThrough, false).pairs, 0u);
+    // Periodic boxes: not evaluated, and said so.
+    const auto periodic = count_tunnelling(kPassThrough, kBounce, true);
+    EXPECT_FALSE(periodic.evaluated);
+    EXPECT_FALSE(periodic.not_evaluated.empty());
+}
+
+TEST(Stability, OutcomesFollowTheirPrecedence) {
+    Tolerances tol;
+    tol.max_overlap = 0.2;
+    tol.energy_drift = 0.02;
+    // Every fault at once, then remove the most severe one at a time.
+    CaseResult r = kPassThrough;
+    r.series.max_overlap[2] = 0.9;
+    r.series.kinetic_energy[3] = r.series.total_energy[3] = 2.0;
+    r.series.nonfinite[3] = 1;
+    r.status = RunStatus::crashed;
+    EXPECT_EQ(classify(r, &kBounce, walls(), tol).outcome, Outcome::crash);
+    r.status = RunStatus::timed_out;
+    EXPECT_EQ(classify(r, &kBounce, walls(), tol).outcome, Outcome::hang);
+    r.status = RunStatus::error;
+    r.diagnostic = "step: 1 disk(s) with NaN/Inf state at t = 3";
+    EXPECT_EQ(classify(r, &kBounce, walls(), tol).outcome, Outcome::nan);
+    r.diagnostic = "solver gave up";
+    r.series.nonfinite[3] = 0;
+    EXPECT_EQ(classify(r, &kBounce, walls(), tol).outcome, Outcome::crash) << "a solver that throws is a crash";
+    r.status = RunStatus::completed;
+    EXPECT_EQ(classify(r, &kBounce, walls(), tol).outcome, Outcome::tunnelling);
+    EXPECT_EQ(classify(r, nullptr, walls(), tol).outcome, Outcome::excessive_overlap)
+        << "without a reference, tunnelling cannot be judged";
+    r.series.max_overlap[2] = 0.1;
+    EXPECT_EQ(classify(r, nullptr, walls(), tol).outcome, Outcome::energy_growth);
+    r.series.kinetic_energy[3] = r.series.total_energy[3] = 1.01;
+    const auto stable = classify(r, nullptr, walls(), tol);
+    EXPECT_EQ(stable.outcome, Outcome::stable);
+    EXPECT_NE(stable.reason.find("tunnelling not evaluated"), std::string::npos) << stable.reason;
+}
+
+TEST(Stability, EnergyGrowthOnlyWherePhysicsForbidsIt) {
+    Tolerances tol;
+    CaseResult r = kBounce;
+    r.series.kinetic_energy[2] = r.series.total_energy[2] = 1.5;
+    EXPECT_EQ(classify(r, nullptr, walls(), tol).outcome, Outcome::energy_growth);
+    SceneFeatures pushed = walls();
+    pushed.moving_stones = true;  // a moving stone does work on the disks
+    EXPECT_EQ(classify(r, nullptr, pushed, tol).outcome, Outcome::stable);
+    // Under gravity the total energy counts: kinetic energy may rise as a disk falls.
+    SceneFeatures falling = walls();
+    falling.gravity = true;
+    r.series.total_energy[2] = 1.0;
+    EXPECT_EQ(classify(r, nullptr, falling, tol).outcome, Outcome::stable);
+    EXPECT_DOUBLE_EQ(energy_growth(r.series, false), 0.5);
+}
+
+TEST(Stability, LeftOutCasesAreNotClassifiedAsFailures) {
+    CaseResult r;
+    r.status = RunStatus::left_out;
+    EXPECT_EQ(classify(r, nullptr, walls(), Tolerances{}).outcome, Outcome::left_out);
+}
+
+}  // namespace
+}  // namespace collide::validation

@@ -1,0 +1,160 @@
+"""Stability maps and the first-failure table of the report, drawn only when the summary has
+stability outcomes (a suite with `stability = true`; docs/stability.md).
+
+A stability map is drawn for every scene swept over dt and one scene parameter (`set` in the
+suite file): one panel per backend, one cell per (dt, value), coloured by the case's outcome.
+With several seeds per cell the most severe outcome is shown.
+"""
+import html
+from collections import OrderedDict
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.patches import Patch  # noqa: E402
+
+import figures  # noqa: E402
+
+# Most severe first (the classification's precedence); one fixed colour each.
+OUTCOMES = ["crash", "hang", "nan", "tunnelling", "excessive_overlap", "energy_growth", "stable", "left_out"]
+OUTCOME_COLOURS = {"crash": "#000000", "hang": "#8c564b", "nan": "#d62728", "tunnelling": "#9467bd",
+                   "excessive_overlap": "#ff7f0e", "energy_growth": "#e6c200", "stable": "#2ca02c",
+                   "left_out": "#d9d9d9"}
+
+# Axis labels with units for the scene keys the suites sweep (the scene's own units).
+PARAMETER_LABELS = {"mass": "mass (scene mass units)", "vx": "speed v_x (length / time)",
+                    "vy": "speed v_y (length / time)", "radius": "radius (length)",
+                    "spacing": "lattice spacing (length)", "count": "number of disks",
+                    "restitution": "restitution e (dimensionless)", "maxwell": "kT (energy)"}
+
+
+def has_outcomes(summary):
+    return any("outcome" in c for c in summary["cases"])
+
+
+def worse(a, b):
+    return a if b is None or OUTCOMES.index(a) < OUTCOMES.index(b) else b
+
+
+def parameter_label(path):
+    return f"{path}: {PARAMETER_LABELS.get(path.split('.')[-1], 'value')}"
+
+
+def swept_scenes(summary):
+    """scene -> (parameter path, {backend: {(dt, value): outcome}}) for dt x one-parameter sweeps."""
+    maps = OrderedDict()
+    for c in summary["cases"]:
+        params = c.get("parameters", {})
+        if c["reference"] or len(params) != 1 or "outcome" not in c:
+            continue
+        (path, value), = params.items()
+        entry = maps.setdefault(c["scene"], (path, OrderedDict()))
+        cells = entry[1].setdefault(c["backend"], {})
+        key = (c["dt"], value)
+        cells[key] = worse(c["outcome"], cells.get(key))
+    return OrderedDict((s, m) for s, m in maps.items()
+                       if len({k[0] for cells in m[1].values() for k in cells}) > 1)
+
+
+def stability_map(scene, path, backends):
+    dts = sorted({k[0] for cells in backends.values() for k in cells})
+    values = sorted({k[1] for cells in backends.values() for k in cells})
+    fig, axes = plt.subplots(1, len(backends), figsize=(3.2 * len(backends) + 1.5, 3.2), squeeze=False)
+    for ax, (backend, cells) in zip(axes[0], backends.items()):
+        for i, dt in enumerate(dts):
+            for j, v in enumerate(values):
+                outcome = cells.get((dt, v))
+                ax.add_patch(plt.Rectangle((i, j), 1, 1, facecolor=OUTCOME_COLOURS.get(outcome, "white"),
+                                           edgecolor="white"))
+        ax.set_xlim(0, len(dts))
+        ax.set_ylim(0, len(values))
+        # Cells are equally spaced: the sweeps are (roughly) geometric, so this is a log axis.
+        ax.set_xticks([i + 0.5 for i in range(len(dts))], [f"{d:g}" for d in dts], rotation=45)
+        ax.set_yticks([j + 0.5 for j in range(len(values))], [f"{v:g}" for v in values])
+        ax.set_xlabel("time step dt (time)")
+        ax.set_title(backend, color=figures.colour(backend))
+    axes[0][0].set_ylabel(parameter_label(path))
+    present = [o for o in OUTCOMES if any(o in cells.values() for cells in backends.values())]
+    fig.legend(handles=[Patch(facecolor=OUTCOME_COLOURS[o], label=o) for o in present],
+               loc="center left", bbox_to_anchor=(1.0, 0.5), frameon=False)
+    fig.suptitle(f"Stability map: {scene}", y=1.04)
+    return figures._png(fig)
+
+
+def first_failures(summary):
+    """(scene, backend) -> the smallest failing dt and the smallest failing value, with how."""
+    rows = OrderedDict()
+    for c in summary["cases"]:
+        if "outcome" not in c or c["outcome"] == "left_out":
+            continue
+        row = rows.setdefault((c["scene"], c["backend"]), {"cases": 0, "failed": []})
+        row["cases"] += 1
+        if c["outcome"] != "stable":
+            row["failed"].append(c)
+    return rows
+
+
+def describe(case):
+    params = ", ".join(f"{p.split('.')[-1]} = {v:g}" for p, v in case.get("parameters", {}).items())
+    where = f"dt = {case['dt']:g}" + (f", {params}" if params else "")
+    return f"{html.escape(case['outcome'])} at {html.escape(where)}"
+
+
+def first_failure_table(summary):
+    out = ["<table><tr><th>scene</th><th>backend</th><th>cases</th><th>failed</th>"
+           "<th>first failure by dt (smallest failing dt, then smallest value)</th>"
+           "<th>first failure by parameter (smallest failing value, then smallest dt)</th></tr>"]
+    for (scene, backend), row in first_failures(summary).items():
+        failed = row["failed"]
+        if not failed:
+            cells = "<td class='pass'>none</td><td class='pass'>none</td>"
+        else:
+            def value(c):
+                return min(c.get("parameters", {}).values(), default=0.0)
+            by_dt = min(failed, key=lambda c: (c["dt"], value(c)))
+            by_value = min(failed, key=lambda c: (value(c), c["dt"]))
+            title = html.escape(by_dt.get("outcome_reason", ""))
+            cells = (f"<td class='fail' title='{title}'>{describe(by_dt)}</td>"
+                     f"<td class='fail'>{describe(by_value) if by_value.get('parameters') else ''}</td>")
+        out.append(f"<tr><td>{html.escape(scene)}</td><td>{html.escape(backend)}</td><td>{row['cases']}</td>"
+                   f"<td>{len(failed)}</td>{cells}</tr>")
+    out.append("</table>")
+    return "\n".join(out)
+
+
+def section(summary, image):
+    """The report's stability section (HTML), or "" without stability outcomes."""
+    if not has_outcomes(summary):
+        return ""
+    parts = ["<h2>Stability</h2>",
+             "<p>Every case is classified by its first failure mode, most severe first: crash (died or threw), "
+             "hang (time limit), nan, tunnelling (a pair passed through each other where the exact reference "
+             "has them apart), excessive_overlap (largest relative overlap above the backend's max_overlap "
+             "tolerance), energy_growth (energy rose above its start by more than the backend's energy_drift "
+             "tolerance times K(0), where physics lets it only fall), else stable. Definitions: "
+             "docs/stability.md. Hover a table cell for the measured value.</p>"]
+    for scene, (path, backends) in swept_scenes(summary).items():
+        parts.append(image(stability_map(scene, path, backends),
+                           f"<b>Stability map, {html.escape(scene)}.</b> One panel per backend; each cell is one "
+                           f"case at time step dt (horizontal) and scene key {html.escape(path)} (vertical; both "
+                           "axes list the swept values, equally spaced, so a geometric sweep reads as a log axis), "
+                           "coloured by its outcome (legend). The exact reference has no dt and is not drawn; "
+                           "white: no case.", f"stability map of {scene}"))
+    parts.append("<h3>First failure of each backend</h3>")
+    parts.append(first_failure_table(summary))
+    return "\n".join(parts)
+
+
+def markdown(summary):
+    if not has_outcomes(summary):
+        return []
+    lines = ["", "## Stability outcomes", "", "| scene | backend | cases | failed | first failure (smallest dt) |",
+             "|---|---|---|---|---|"]
+    for (scene, backend), row in first_failures(summary).items():
+        failed = row["failed"]
+        first = min(failed, key=lambda c: (c["dt"], min(c.get("parameters", {}).values(), default=0.0))) \
+            if failed else None
+        text = describe(first) + ": " + first.get("outcome_reason", "").replace("|", "/") if first else "none"
+        lines.append(f"| {scene} | {backend} | {row['cases']} | {len(failed)} | {html.unescape(text)} |")
+    return lines

@@ -1,0 +1,96 @@
+#include "stability.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "tunnelling.h"
+
+namespace collide::validation {
+
+const char* to_string(Outcome o) {
+    switch (o) {
+        case Outcome::stable: return "stable";
+        case Outcome::crash: return "crash";
+        case Outcome::hang: return "hang";
+        case Outcome::nan: return "nan";
+        case Outcome::tunnelling: return "tunnelling";
+        case Outcome::excessive_overlap: return "excessive_overlap";
+        case Outcome::energy_growth: return "energy_growth";
+        case Outcome::left_out: return "left_out";
+    }
+    return "crash";
+}
+
+double energy_growth(const MetricSeries& m, bool total) {
+    const auto& e = total ? m.total_energy : m.kinetic_energy;
+    if (e.empty()) return 0;
+    double scale = m.kinetic_energy.front();
+    if (!(scale > 0)) scale = *std::max_element(m.kinetic_energy.begin(), m.kinetic_energy.end());
+    double rise = 0;
+    for (double x : e) rise = std::max(rise, x - e.front());  // NaN never wins; `nan` comes first
+    return scale > 0 ? rise / scale : rise;
+}
+
+namespace {
+
+std::string text(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
+
+bool any_nonfinite(const MetricSeries& m) {
+    for (double x : m.nonfinite)
+        if (x > 0) return true;
+    return false;
+}
+
+}  // namespace
+
+Classification classify(const CaseResult& r, const CaseResult* reference, const SceneFeatures& f,
+                        const Tolerances& tol) {
+    switch (r.status) {
+        case RunStatus::left_out: return {Outcome::left_out, r.diagnostic};
+        case RunStatus::crashed: return {Outcome::crash, r.diagnostic};
+        case RunStatus::timed_out: return {Outcome::hang, r.diagnostic};
+        case RunStatus::error:
+            // run_scene stops with an error at the first NaN/Inf state (run_driver.cpp); any
+            // other exception is the solver giving up, counted with the crashes.
+            if (r.diagnostic.find("NaN/Inf") != std::string::npos || any_nonfinite(r.series))
+                return {Outcome::nan, r.diagnostic};
+            return {Outcome::crash, "threw: " + r.diagnostic};
+        case RunStatus::completed: break;
+    }
+    if (any_nonfinite(r.series)) return {Outcome::nan, "NaN/Inf in the state"};
+
+    std::string notes;
+    if (reference && reference->finished() && !r.spec.reference) {
+        const TunnellingCount t = count_tunnelling(r, *reference, !f.reflecting_walls);
+        if (t.pairs > 0)
+            return {Outcome::tunnelling, std::to_string(t.pairs) + " pair(s) passed through each other (first: " +
+                                             t.first + ") where the reference has them apart"};
+        if (!t.evaluated) notes = "tunnelling not evaluated: " + t.not_evaluated;
+    } else if (!r.spec.reference) {
+        notes = "tunnelling not evaluated: no finished reference run";
+    }
+
+    double overlap = 0;
+    for (double x : r.series.max_overlap) overlap = std::max(overlap, x);
+    if (overlap > tol.max_overlap)
+        return {Outcome::excessive_overlap,
+                "max relative overlap " + text(overlap) + " > tolerance " + text(tol.max_overlap)};
+
+    const bool may_not_grow = f.restitution <= 1 && f.wall_restitution <= 1 && !f.moving_stones;
+    if (may_not_grow) {
+        const double growth = energy_growth(r.series, f.gravity);
+        if (growth > tol.energy_drift)
+            return {Outcome::energy_growth, std::string(f.gravity ? "total" : "kinetic") + " energy rose by " +
+                                                text(growth) + " x K(0) > tolerance " + text(tol.energy_drift)};
+    } else {
+        notes += std::string(notes.empty() ? "" : "; ") + "energy growth not evaluated (energy may grow here)";
+    }
+    return {Outcome::stable, notes.empty() ? "no failure mode found" : "no failure mode found; " + notes};
+}
+
+}  // namespace collide::validation

@@ -1,0 +1,43 @@
+// Stability classification: what happened to one case, as one outcome, for the stability maps.
+// The first outcome that applies wins, in this order (the most severe first):
+//
+//   crash              the process died or the solver threw (runner status crashed / error)
+//   hang               killed after the suite's time limit (runner status timed_out)
+//   nan                a position or velocity became NaN or Inf
+//   tunnelling         a pair passed through each other where the reference has them apart
+//                      (tunnelling.h; few-body scenes in reflecting boxes)
+//   excessive_overlap  the largest relative overlap depth exceeded the backend's max_overlap
+//   energy_growth      energy grew above its start by more than the backend's energy_drift
+//                      tolerance x K(0), where physics lets it only fall or stay (e <= 1, wall
+//                      e <= 1, no moving stones); total energy with gravity, else kinetic
+//   stable             none of the above
+//
+// (left_out: the backend refused the scene; not classified.) Definitions in docs/stability.md.
+#pragma once
+
+#include <string>
+
+#include "applicability.h"
+#include "case_result.h"
+#include "tolerances.h"
+
+namespace collide::validation {
+
+enum class Outcome { stable, crash, hang, nan, tunnelling, excessive_overlap, energy_growth, left_out };
+const char* to_string(Outcome o);
+
+struct Classification {
+    Outcome outcome = Outcome::stable;
+    std::string reason;  // the measured value against its limit, or the runner's diagnostic
+};
+
+// `reference` is the reference backend's run of the same scene, parameters and seed (nullptr
+// when there is none; tunnelling is then not evaluated).
+Classification classify(const CaseResult& result, const CaseResult* reference, const SceneFeatures& features,
+                        const Tolerances& tolerances);
+
+// Largest rise of energy above its initial value divided by K(0) (by max K if K(0) = 0);
+// `total` selects kinetic + potential. 0 when it never rises.
+double energy_growth(const MetricSeries& series, bool total);
+
+}  // namespace collide::validation
