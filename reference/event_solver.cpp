@@ -74,10 +74,9 @@ void EventSolver::load(const Scene& scene, const ParticleState<double>& initial)
             state_.y[i] = WallLaw<double>::wrap(state_.y[i], w.ymin, w.height());
         }
     }
-    flight_.resize(n);
+    disks_.resize(n);
     for (std::size_t i = 0; i < n; ++i)
-        flight_[i] = Flight{state_.x[i], state_.y[i], state_.vx[i], state_.vy[i], 0.0, state_.radius[i]};
-    count_.assign(n, 0);
+        disks_[i] = Disk{state_.x[i], state_.y[i], state_.vx[i], state_.vy[i], 0.0, state_.radius[i], 0, CellLinks{}};
     last_collision_.assign(n, -std::numeric_limits<double>::infinity());
     prediction_.assign(n, Prediction{});
     now_ = progress_mark_ = kinetic_mark_ = 0;
@@ -88,16 +87,16 @@ void EventSolver::load(const Scene& scene, const ParticleState<double>& initial)
 
     double r_max = 0, r_sum = 0, v2_sum = 0;
     for (std::size_t i = 0; i < n; ++i) {
-        r_max = std::max(r_max, flight_[i].radius);
-        r_sum += flight_[i].radius;
-        v2_sum += flight_[i].vx * flight_[i].vx + flight_[i].vy * flight_[i].vy;
+        r_max = std::max(r_max, disks_[i].radius);
+        r_sum += disks_[i].radius;
+        v2_sum += disks_[i].vx * disks_[i].vx + disks_[i].vy * disks_[i].vy;
     }
     cells_.configure(w, n > 0 ? 2 * r_max : 1.0, n);
     if (scene.periodic() && (cells_.cells_x() < 3 || cells_.cells_y() < 3))
         throw std::runtime_error("event: periodic box " + describe(w.width()) + " x " + describe(w.height()) +
                                  " is narrower than 3 contact distances (2 r_max = " + describe(2 * r_max) +
                                  "); the minimum-image convention needs at least 3 cells per axis");
-    for (std::uint32_t i = 0; i < n; ++i) cells_.insert(i, cells_.column_of(flight_[i].x), cells_.row_of(flight_[i].y));
+    for (std::uint32_t i = 0; i < n; ++i) cells_.insert(disks_, i, cells_.column_of(disks_[i].x), cells_.row_of(disks_[i].y));
     reject_overlaps();
 
     // Time scale: the time a typical disk needs to travel one diameter (from the rms speed or,
@@ -173,14 +172,14 @@ void EventSolver::reject_overlaps() const {
     const bool periodic = scene_.periodic();
     const World& w = scene_.world;
     for (std::uint32_t i = 0; i < state_.size(); ++i) {
-        cells_.for_each_neighbour(i, [&](std::uint32_t j) {
+        cells_.for_each_neighbour(disks_, i, [&](std::uint32_t j) {
             if (j <= i) return;
-            double dx = flight_[i].x - flight_[j].x, dy = flight_[i].y - flight_[j].y;
+            double dx = disks_[i].x - disks_[j].x, dy = disks_[i].y - disks_[j].y;
             if (periodic) {
                 dx = WallLaw<double>::minimum_image(dx, w.width());
                 dy = WallLaw<double>::minimum_image(dy, w.height());
             }
-            const double sigma = flight_[i].radius + flight_[j].radius;
+            const double sigma = disks_[i].radius + disks_[j].radius;
             const double distance = std::hypot(dx, dy);
             if (sigma - distance > overlap_tolerance * sigma)
                 throw std::runtime_error("event: initial state overlaps: particles " + std::to_string(i) + " and " +
@@ -211,7 +210,7 @@ void EventSolver::process_event() {
     const Prediction p = prediction_[i];
     switch (p.kind) {
     case EventKind::pair:
-        if (count_[p.partner] != p.partner_count) {
+        if (disks_[p.partner].count != p.partner_count) {
             // The partner changed course after this was predicted: the event is stale.
             ++stale_events_;
             predict(i);
@@ -262,14 +261,14 @@ void EventSolver::check_progress(std::uint32_t i) {
 // ---------------------------------------------------------------------------------------
 
 void EventSolver::bring_to_now(std::uint32_t i) {
-    const double dt = now_ - flight_[i].t;
-    flight_[i].t = now_;
+    const double dt = now_ - disks_[i].t;
+    disks_[i].t = now_;
     if (dt == 0 || state_.is_stone(i)) return;
     // Free flight under uniform gravity: x(t) = x + v dt + g dt^2 / 2, v(t) = v + g dt.
-    flight_[i].x += (flight_[i].vx + 0.5 * gx_ * dt) * dt;
-    flight_[i].y += (flight_[i].vy + 0.5 * gy_ * dt) * dt;
-    flight_[i].vx += gx_ * dt;
-    flight_[i].vy += gy_ * dt;
+    disks_[i].x += (disks_[i].vx + 0.5 * gx_ * dt) * dt;
+    disks_[i].y += (disks_[i].vy + 0.5 * gy_ * dt) * dt;
+    disks_[i].vx += gx_ * dt;
+    disks_[i].vy += gy_ * dt;
 }
 
 void EventSolver::predict(std::uint32_t i) {
@@ -281,10 +280,10 @@ void EventSolver::predict(std::uint32_t i) {
     bring_to_now(i);
     Prediction best;
     double best_dt = earliest_border_or_wall(i, best);
-    const double xi = flight_[i].x, yi = flight_[i].y, vxi = flight_[i].vx, vyi = flight_[i].vy, ri = flight_[i].radius;
+    const double xi = disks_[i].x, yi = disks_[i].y, vxi = disks_[i].vx, vyi = disks_[i].vy, ri = disks_[i].radius;
     const bool periodic = scene_.periodic();
     const double width = scene_.world.width(), height = scene_.world.height();
-    cells_.for_each_neighbour(i, [&](std::uint32_t j) {
+    cells_.for_each_neighbour(disks_, i, [&](std::uint32_t j) {
         if (j == i) return;
         double xj, yj, vxj, vyj;
         position_now(j, xj, yj, vxj, vyj);
@@ -298,10 +297,10 @@ void EventSolver::predict(std::uint32_t i) {
             else if (dy < -0.5 * height) dy += height;
         }
         // Both disks feel the same gravity, so their relative motion is a straight line.
-        const double dt = event_time::pair_collision_time(dx, dy, vxi - vxj, vyi - vyj, ri + flight_[j].radius);
+        const double dt = event_time::pair_collision_time(dx, dy, vxi - vxj, vyi - vyj, ri + disks_[j].radius);
         if (dt < best_dt) {
             best_dt = dt;
-            best = Prediction{EventKind::pair, j, count_[j]};
+            best = Prediction{EventKind::pair, j, disks_[j].count};
         }
     });
     prediction_[i] = best;
@@ -312,8 +311,8 @@ void EventSolver::predict(std::uint32_t i) {
 double EventSolver::earliest_border_or_wall(std::uint32_t i, Prediction& p) const {
     const World& w = scene_.world;
     const bool periodic = scene_.periodic();
-    const double r = flight_[i].radius;
-    const std::int64_t cx = cells_.column(i), cy = cells_.row(i);
+    const double r = disks_[i].radius;
+    const std::int64_t cx = cells_.column(disks_[i].links), cy = cells_.row(disks_[i].links);
     double best = never;
     auto consider = [&](double t, EventKind kind, std::uint32_t which) {
         if (t < best) best = t, p = Prediction{kind, which, 0};
@@ -327,9 +326,9 @@ double EventSolver::earliest_border_or_wall(std::uint32_t i, Prediction& p) cons
         consider(event_time::downward_crossing_time(wall_lo + r - q, v, a), EventKind::wall, lo_id);
         consider(event_time::upward_crossing_time(wall_hi - r - q, v, a), EventKind::wall, lo_id + 1);
     };
-    axis(flight_[i].x, flight_[i].vx, gx_, cx, cells_.cells_x(), cells_.border_x(cx), cells_.border_x(cx + 1), w.xmin,
+    axis(disks_[i].x, disks_[i].vx, gx_, cx, cells_.cells_x(), cells_.border_x(cx), cells_.border_x(cx + 1), w.xmin,
          w.xmax, 0);
-    axis(flight_[i].y, flight_[i].vy, gy_, cy, cells_.cells_y(), cells_.border_y(cy), cells_.border_y(cy + 1), w.ymin,
+    axis(disks_[i].y, disks_[i].vy, gy_, cy, cells_.cells_y(), cells_.border_y(cy), cells_.border_y(cy + 1), w.ymin,
          w.ymax, 2);
     return best;
 }
@@ -350,12 +349,12 @@ double EventSolver::restitution_now(double e, std::uint32_t i, std::uint32_t j) 
 void EventSolver::collide_pair(std::uint32_t i, std::uint32_t j) {
     bring_to_now(i);
     bring_to_now(j);
-    double dx = flight_[i].x - flight_[j].x, dy = flight_[i].y - flight_[j].y;
+    double dx = disks_[i].x - disks_[j].x, dy = disks_[i].y - disks_[j].y;
     if (scene_.periodic()) {
         dx = WallLaw<double>::minimum_image(dx, scene_.world.width());
         dy = WallLaw<double>::minimum_image(dy, scene_.world.height());
     }
-    const double ux = flight_[i].vx - flight_[j].vx, uy = flight_[i].vy - flight_[j].vy;
+    const double ux = disks_[i].vx - disks_[j].vx, uy = disks_[i].vy - disks_[j].vy;
     const double b = dx * ux + dy * uy;  // d.u < 0: approaching
     if (!(b < 0)) return;                // a grazing contact that round-off turned into a miss
     const double d2 = dx * dx + dy * dy;
@@ -365,10 +364,10 @@ void EventSolver::collide_pair(std::uint32_t i, std::uint32_t j) {
     // overlap correction and friction): J = -(1 + e) (u.n) / (w_i + w_j), n = d / |d|.
     // Written as J n = g d with g = -(1 + e) (d.u) / (|d|^2 (w_i + w_j)).
     const double g = -(1 + e) * b / (d2 * (wi + wj));
-    flight_[i].vx += wi * g * dx;
-    flight_[i].vy += wi * g * dy;
-    flight_[j].vx -= wj * g * dx;
-    flight_[j].vy -= wj * g * dy;
+    disks_[i].vx += wi * g * dx;
+    disks_[i].vy += wi * g * dy;
+    disks_[j].vx -= wj * g * dx;
+    disks_[j].vy -= wj * g * dy;
     // Collision virial d.(J n) = g |d|^2 (the pressure, see stats()).
     virial_.add(g * d2);
     // Energy lost: (1 - e^2)/2 * mu (u.n)^2 with the reduced mass mu = 1/(w_i + w_j).
@@ -377,8 +376,8 @@ void EventSolver::collide_pair(std::uint32_t i, std::uint32_t j) {
         kinetic_mark_ = now_;
         kinetic_ -= 0.5 * (1 - e * e) * b * b / (d2 * (wi + wj));
     }
-    ++count_[i];
-    ++count_[j];
+    ++disks_[i].count;
+    ++disks_[j].count;
     last_collision_[i] = last_collision_[j] = now_;
     ++pair_events_;
 }
@@ -386,10 +385,10 @@ void EventSolver::collide_pair(std::uint32_t i, std::uint32_t j) {
 void EventSolver::collide_wall(std::uint32_t i, std::uint32_t wall) {
     bring_to_now(i);
     const World& w = scene_.world;
-    const double r = flight_[i].radius;
+    const double r = disks_[i].radius;
     const bool x_axis = wall < 2, low = wall % 2 == 0;
-    double& q = x_axis ? flight_[i].x : flight_[i].y;
-    double& v = x_axis ? flight_[i].vx : flight_[i].vy;
+    double& q = x_axis ? disks_[i].x : disks_[i].y;
+    double& v = x_axis ? disks_[i].vx : disks_[i].vy;
     // Round-off rule: the centre is put back exactly on the contact line, never beyond it.
     const double contact = x_axis ? (low ? w.xmin + r : w.xmax - r) : (low ? w.ymin + r : w.ymax - r);
     q = low ? std::max(q, contact) : std::min(q, contact);
@@ -404,13 +403,13 @@ void EventSolver::collide_wall(std::uint32_t i, std::uint32_t wall) {
         kinetic_ -= 0.5 * m * (1 - e * e) * v * v;
     }
     v = -e * v;
-    ++count_[i];
+    ++disks_[i].count;
     last_collision_[i] = now_;
 }
 
 void EventSolver::cross_cell(std::uint32_t i, std::uint32_t border) {
     bring_to_now(i);
-    std::int64_t cx = cells_.column(i), cy = cells_.row(i);
+    std::int64_t cx = cells_.column(disks_[i].links), cy = cells_.row(disks_[i].links);
     switch (border) {
     case 0: --cx; break;
     case 1: ++cx; break;
@@ -419,12 +418,12 @@ void EventSolver::cross_cell(std::uint32_t i, std::uint32_t border) {
     }
     // Periodic box: leaving through one side is entering through the other.
     const World& w = scene_.world;
-    if (cx < 0) cx += cells_.cells_x(), flight_[i].x += w.width();
-    if (cx >= cells_.cells_x()) cx -= cells_.cells_x(), flight_[i].x -= w.width();
-    if (cy < 0) cy += cells_.cells_y(), flight_[i].y += w.height();
-    if (cy >= cells_.cells_y()) cy -= cells_.cells_y(), flight_[i].y -= w.height();
-    cells_.remove(i);
-    cells_.insert(i, cx, cy);
+    if (cx < 0) cx += cells_.cells_x(), disks_[i].x += w.width();
+    if (cx >= cells_.cells_x()) cx -= cells_.cells_x(), disks_[i].x -= w.width();
+    if (cy < 0) cy += cells_.cells_y(), disks_[i].y += w.height();
+    if (cy >= cells_.cells_y()) cy -= cells_.cells_y(), disks_[i].y -= w.height();
+    cells_.remove(disks_, i);
+    cells_.insert(disks_, i, cx, cy);
     ++cell_events_;
 }
 
@@ -447,7 +446,7 @@ void EventSolver::read_state(ParticleState<double>& out) const {
 double EventSolver::kinetic_energy_now() const {
     CompensatedSum k;
     for (std::size_t i = 0; i < state_.size(); ++i)
-        if (!state_.is_stone(i)) k.add(0.5 * state_.mass[i] * (flight_[i].vx * flight_[i].vx + flight_[i].vy * flight_[i].vy));
+        if (!state_.is_stone(i)) k.add(0.5 * state_.mass[i] * (disks_[i].vx * disks_[i].vx + disks_[i].vy * disks_[i].vy));
     return k.value();
 }
 

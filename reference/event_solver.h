@@ -57,7 +57,7 @@ private:
     // Position/velocity disk j would have at `now_`, without touching its state.
     void position_now(std::uint32_t j, double& x, double& y, double& vx, double& vy) const {
         // Stones have zero velocity and scenes with stones have no gravity: no special case.
-        const Flight& f = flight_[j];
+        const Disk& f = disks_[j];
         const double dt = now_ - f.t;
         x = f.x + (f.vx + 0.5 * gx_ * dt) * dt;
         y = f.y + (f.vy + 0.5 * gy_ * dt) * dt;
@@ -76,18 +76,21 @@ private:
     double tc_duration() const;
     double kinetic_energy_now() const;
 
-    // One disk's free flight: position and velocity valid at the disk's own clock t. Kept
-    // together (one cache line) because predicting reads all of them for every neighbour.
-    struct Flight {
+    // One disk: its free flight (position and velocity valid at the disk's own clock t), its
+    // event counter and its place in the cell list, in one 64-byte record. Predicting reads
+    // all of these for every neighbour, so a neighbour costs one cache line.
+    struct alignas(64) Disk {
         double x, y, vx, vy;
-        double t;       // the disk's clock
+        double t;             // the disk's clock
         double radius;
+        std::uint32_t count;  // event counter: bumped whenever the disk changes course
+        CellLinks links;      // cell and neighbours in the cell (cell_list.h)
     };
+    static_assert(sizeof(Disk) == 64);
 
     Scene scene_;
     ParticleState<double> state_;      // masses and stone flags; positions only on load
-    std::vector<Flight> flight_;
-    std::vector<std::uint32_t> count_; // event counter: bumped whenever disk i changes course
+    std::vector<Disk> disks_;
     std::vector<double> last_collision_;
     std::vector<Prediction> prediction_;
     CellList cells_;
