@@ -221,12 +221,12 @@ void EventSolver::process_event() {
         predict(p.partner);
         return;
     case EventKind::wall:
-        collide_wall(i, p.partner);
+        collide_wall(i, p.border);
         predict(i);
         return;
     case EventKind::cell:
-        cross_cell(i, p.partner);
-        predict(i);
+        cross_cell(i, p.border);
+        predict_after_crossing(i, p.border);
         return;
     case EventKind::none:
         return;  // unreachable: such a disk's time is infinite
@@ -247,7 +247,7 @@ void EventSolver::check_progress(std::uint32_t i) {
     if (++events_since_mark_ <= limit) return;
     const Prediction& p = prediction_[i];
     const std::string with = p.kind == EventKind::pair ? "particle " + std::to_string(p.partner)
-                             : p.kind == EventKind::wall ? "wall " + std::to_string(p.partner)
+                             : p.kind == EventKind::wall ? "wall " + std::to_string(p.border)
                                                          : "a cell border";
     throw std::runtime_error("event: no progress in simulated time: " + std::to_string(events_since_mark_) +
                              " events at t = " + describe(now_) + " within " + describe(resolution) +
@@ -278,12 +278,35 @@ void EventSolver::predict(std::uint32_t i) {
         return;
     }
     bring_to_now(i);
-    Prediction best;
-    double best_dt = earliest_border_or_wall(i, best);
+    Prediction p;
+    earliest_pair(i, p, [&](auto&& visit) { cells_.for_each_neighbour(disks_, i, visit); });
+    file_prediction(i, p);
+}
+
+// After a cell crossing (cross_cell has brought disk i to now) the disk's course is the same,
+// so its earliest pair collision with the disks of its old neighbourhood is still the one found
+// before: of the 3x3 cells around the new cell, six were neighbours already, and only the
+// three entered ones need a look. A neighbour that changed course since then was re-predicted
+// itself, against i among others, so the pair (i, j) is covered by j's prediction. If the kept
+// collision's partner has changed course, the kept time is no longer a collision: predict
+// afresh against the whole neighbourhood.
+void EventSolver::predict_after_crossing(std::uint32_t i, std::uint32_t border) {
+    Prediction p = prediction_[i];
+    if (p.pair_time != never && disks_[p.partner].count != p.partner_count) {
+        predict(i);
+        return;
+    }
+    earliest_pair(i, p, [&](auto&& visit) { cells_.for_each_entered(disks_, i, border, visit); });
+    file_prediction(i, p);
+}
+
+template <typename VisitCells>
+void EventSolver::earliest_pair(std::uint32_t i, Prediction& p, VisitCells&& visit_cells) const {
     const double xi = disks_[i].x, yi = disks_[i].y, vxi = disks_[i].vx, vyi = disks_[i].vy, ri = disks_[i].radius;
     const bool periodic = scene_.periodic();
     const double width = scene_.world.width(), height = scene_.world.height();
-    cells_.for_each_neighbour(disks_, i, [&](std::uint32_t j) {
+    double best_dt = p.pair_time - now_;
+    visit_cells([&](std::uint32_t j) {
         if (j == i) return;
         double xj, yj, vxj, vyj;
         position_now(j, xj, yj, vxj, vyj);
@@ -300,22 +323,32 @@ void EventSolver::predict(std::uint32_t i) {
         const double dt = event_time::pair_collision_time(dx, dy, vxi - vxj, vyi - vyj, ri + disks_[j].radius);
         if (dt < best_dt) {
             best_dt = dt;
-            best = Prediction{EventKind::pair, j, disks_[j].count};
+            p.partner = j;
+            p.partner_count = disks_[j].count;
+            p.pair_time = now_ + dt;
         }
     });
-    prediction_[i] = best;
-    queue_.update(i, now_ + best_dt);
 }
 
-// The earliest crossing of one of the four borders of disk i's cell, or of a wall.
-double EventSolver::earliest_border_or_wall(std::uint32_t i, Prediction& p) const {
+void EventSolver::file_prediction(std::uint32_t i, Prediction& p) {
+    const double border_time = now_ + earliest_border_or_wall(i, p.border, p.kind);
+    double t = border_time;
+    if (p.pair_time < border_time) p.kind = EventKind::pair, t = p.pair_time;
+    prediction_[i] = p;
+    queue_.update(i, t);
+}
+
+// The earliest crossing of one of the four borders of disk i's cell, or of a wall (its time
+// from now; `which` and `kind` say which one, kind none if there is none).
+double EventSolver::earliest_border_or_wall(std::uint32_t i, std::uint32_t& which, EventKind& kind) const {
     const World& w = scene_.world;
     const bool periodic = scene_.periodic();
     const double r = disks_[i].radius;
     const std::int64_t cx = cells_.column(disks_[i].links), cy = cells_.row(disks_[i].links);
     double best = never;
-    auto consider = [&](double t, EventKind kind, std::uint32_t which) {
-        if (t < best) best = t, p = Prediction{kind, which, 0};
+    kind = EventKind::none;
+    auto consider = [&](double t, EventKind k, std::uint32_t id) {
+        if (t < best) best = t, kind = k, which = id;
     };
     // One axis: position q, velocity v, acceleration a, cell index c of n cells.
     auto axis = [&](double q, double v, double a, std::int64_t c, std::int64_t n, double border_lo, double border_hi,
