@@ -95,7 +95,7 @@ private:
         if (current_ >= bucket_count_) return overflow();  // buckets not built yet
         if (!(t < std::numeric_limits<double>::infinity())) return overflow();
         const double k = std::floor((t - t0_) / width_);
-        if (k <= double(current_)) return front;
+        if (!(k > double(current_))) return front;  // (a NaN, which no prediction gives, too)
         if (k >= double(bucket_count_)) return overflow();
         return std::size_t(k);
     }
@@ -139,7 +139,7 @@ private:
             t0_ = *std::min_element(scratch_.begin(), scratch_.begin() + std::ptrdiff_t(half) + 1);
             double spread = scratch_[half] - t0_, per = double(std::max<std::size_t>(1, half));
             if (!(spread > 0)) spread = *std::max_element(scratch_.begin(), scratch_.end()) - t0_, per = double(scratch_.size());
-            if (spread > 0) width_ = spread / per;
+            if (spread / per > 0) width_ = spread / per;
         }
         current_ = 0;
         std::uint32_t p = head_[overflow()];
