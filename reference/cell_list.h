@@ -5,20 +5,33 @@
 // only at a "cell crossing" event, an O(1) unlink/link of an intrusive doubly linked list.
 // That is what makes the cost per event independent of N (Rapaport, "The Art of Molecular
 // Dynamics Simulation", 2nd ed., section 14.2).
+//
+// The list is intrusive: the links (`CellLinks`) live inside the caller's per-disk record,
+// next to the disk's position and velocity. Walking a cell then reads one record per
+// neighbour, and that record already holds everything a collision prediction needs, so a
+// neighbour costs one cache line (event_solver.h, `Disk`). The list itself only owns the
+// first disk of every cell. Every method that follows links takes the records as `disks`,
+// any indexable container whose elements have a member `links`.
 #pragma once
 
 #include <algorithm>
 #include <cstdint>
-#include <stdexcept>
 #include <vector>
 
 #include "core/scene.h"
 
 namespace collide {
 
+// A disk's place in the cell list: its cell and its neighbours in that cell's list.
+struct CellLinks {
+    static constexpr std::uint32_t none = 0xffffffffu;
+    std::uint32_t cell = 0;
+    std::uint32_t next = none, prev = none;
+};
+
 class CellList {
 public:
-    static constexpr std::uint32_t none = 0xffffffffu;
+    static constexpr std::uint32_t none = CellLinks::none;
 
     // min_cell_size: the largest contact distance. The cell count is capped (a huge, nearly
     // empty box) by making cells larger, which stays correct and only costs speed.
@@ -35,9 +48,6 @@ public:
         cell_w_ = world.width() / double(cells_x_);
         cell_h_ = world.height() / double(cells_y_);
         head_.assign(std::size_t(cells_x_ * cells_y_), none);
-        next_.assign(particles, none);
-        prev_.assign(particles, none);
-        cell_.assign(particles, 0);
     }
 
     std::int64_t cells_x() const { return cells_x_; }
@@ -46,46 +56,74 @@ public:
     // The cell column/row containing coordinate x/y (clamped to the box).
     std::int64_t column_of(double x) const { return clamp(std::int64_t((x - world_.xmin) / cell_w_), cells_x_); }
     std::int64_t row_of(double y) const { return clamp(std::int64_t((y - world_.ymin) / cell_h_), cells_y_); }
+    std::uint32_t cell_of(double x, double y) const { return std::uint32_t(row_of(y) * cells_x_ + column_of(x)); }
 
     // Left/lower border of column/row c. The same expression is used for every crossing so
     // that a disk that crossed a border sits exactly on the border of its new cell.
     double border_x(std::int64_t c) const { return world_.xmin + double(c) * cell_w_; }
     double border_y(std::int64_t c) const { return world_.ymin + double(c) * cell_h_; }
 
-    std::int64_t column(std::uint32_t i) const { return cell_[i] % cells_x_; }
-    std::int64_t row(std::uint32_t i) const { return cell_[i] / cells_x_; }
+    std::int64_t column(const CellLinks& l) const { return l.cell % cells_x_; }
+    std::int64_t row(const CellLinks& l) const { return l.cell / cells_x_; }
 
-    void insert(std::uint32_t i, std::int64_t column, std::int64_t row) {
+    template <typename Disks>
+    void insert(Disks& disks, std::uint32_t i, std::int64_t column, std::int64_t row) {
         const std::uint32_t c = std::uint32_t(row * cells_x_ + column);
-        cell_[i] = c;
-        prev_[i] = none;
-        next_[i] = head_[c];
-        if (head_[c] != none) prev_[head_[c]] = i;
+        CellLinks& l = disks[i].links;
+        l.cell = c;
+        l.prev = none;
+        l.next = head_[c];
+        if (head_[c] != none) disks[head_[c]].links.prev = i;
         head_[c] = i;
     }
 
-    void remove(std::uint32_t i) {
-        if (prev_[i] != none) next_[prev_[i]] = next_[i];
-        else head_[cell_[i]] = next_[i];
-        if (next_[i] != none) prev_[next_[i]] = prev_[i];
+    template <typename Disks>
+    void remove(Disks& disks, std::uint32_t i) {
+        const CellLinks& l = disks[i].links;
+        if (l.prev != none) disks[l.prev].links.next = l.next;
+        else head_[l.cell] = l.next;
+        if (l.next != none) disks[l.next].links.prev = l.prev;
     }
 
     // Calls visit(j) for every disk j in the 3x3 neighbourhood of disk i's cell (i included).
-    template <typename Visit>
-    void for_each_neighbour(std::uint32_t i, Visit&& visit) const {
-        const std::int64_t cx = column(i), cy = row(i);
-        for (std::int64_t oy = -1; oy <= 1; ++oy) {
-            std::int64_t ny = cy + oy;
-            if (!wrap_or_skip(ny, cells_y_)) continue;
-            for (std::int64_t ox = -1; ox <= 1; ++ox) {
-                std::int64_t nx = cx + ox;
-                if (!wrap_or_skip(nx, cells_x_)) continue;
-                for (std::uint32_t j = head_[std::size_t(ny * cells_x_ + nx)]; j != none; j = next_[j]) visit(j);
-            }
+    template <typename Disks, typename Visit>
+    void for_each_neighbour(const Disks& disks, std::uint32_t i, Visit&& visit) const {
+        const std::int64_t cx = column(disks[i].links), cy = row(disks[i].links);
+        for_each_in_block(disks, cx - 1, cx + 1, cy - 1, cy + 1, visit);
+    }
+
+    // Calls visit(j) for every disk j in the cells that disk i's neighbourhood gained when i
+    // crossed `border` into its current cell (0/1: it moved to lower/higher x, 2/3: lower/higher
+    // y): the far column (or row) of three cells. The other six cells were neighbours before.
+    template <typename Disks, typename Visit>
+    void for_each_entered(const Disks& disks, std::uint32_t i, std::uint32_t border, Visit&& visit) const {
+        const std::int64_t cx = column(disks[i].links), cy = row(disks[i].links);
+        switch (border) {
+        case 0: for_each_in_block(disks, cx - 1, cx - 1, cy - 1, cy + 1, visit); break;
+        case 1: for_each_in_block(disks, cx + 1, cx + 1, cy - 1, cy + 1, visit); break;
+        case 2: for_each_in_block(disks, cx - 1, cx + 1, cy - 1, cy - 1, visit); break;
+        default: for_each_in_block(disks, cx - 1, cx + 1, cy + 1, cy + 1, visit); break;
         }
     }
 
 private:
+    // Visits the disks of the cells with columns x0..x1 and rows y0..y1 (wrapped in a periodic
+    // box, skipped outside a reflecting one).
+    template <typename Disks, typename Visit>
+    void for_each_in_block(const Disks& disks, std::int64_t x0, std::int64_t x1, std::int64_t y0, std::int64_t y1,
+                           Visit& visit) const {
+        for (std::int64_t y = y0; y <= y1; ++y) {
+            std::int64_t ny = y;
+            if (!wrap_or_skip(ny, cells_y_)) continue;
+            const std::uint32_t* row_heads = &head_[std::size_t(ny * cells_x_)];
+            for (std::int64_t x = x0; x <= x1; ++x) {
+                std::int64_t nx = x;
+                if (!wrap_or_skip(nx, cells_x_)) continue;
+                for (std::uint32_t j = row_heads[nx]; j != none; j = disks[j].links.next) visit(j);
+            }
+        }
+    }
+
     static std::int64_t clamp(std::int64_t c, std::int64_t cells) { return std::clamp<std::int64_t>(c, 0, cells - 1); }
     // Periodic boxes have at least 3 cells per axis (checked on load), so a wrapped
     // neighbourhood never visits a cell twice.
@@ -100,9 +138,7 @@ private:
     bool periodic_ = false;
     std::int64_t cells_x_ = 1, cells_y_ = 1;
     double cell_w_ = 1, cell_h_ = 1;
-    std::vector<std::uint32_t> head_;        // first disk of each cell
-    std::vector<std::uint32_t> next_, prev_; // intrusive doubly linked list per cell
-    std::vector<std::uint32_t> cell_;        // cell index of each disk
+    std::vector<std::uint32_t> head_;  // first disk of each cell (the links live in the disks)
 };
 
 }  // namespace collide

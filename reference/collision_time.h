@@ -43,6 +43,14 @@ inline double pair_collision_time(double dx, double dy, double ux, double uy, do
 // With D = v^2 + 2 a d the upward root has q'(t) = +sqrt(D), so t = (sqrt(D) - v) / a,
 // evaluated as 2 d / (v + sqrt(D)) when v >= 0 (no cancellation, and valid for a = 0).
 inline double upward_crossing_time(double d, double v, double a) {
+    if (a == 0) {
+        // No acceleration (the common case): only a disk moving up crosses, at t = d / v. This
+        // is the formula below with sqrt(v^2) = |v| (exact in floating point), without the
+        // square root.
+        if (!(v > 0)) return never;
+        const double t = d / v;
+        return t > 0 ? t : 0.0;
+    }
     const double discriminant = v * v + 2 * a * d;
     if (discriminant < 0) return never;  // turns around below the level
     const double root = std::sqrt(discriminant);

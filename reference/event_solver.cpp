@@ -74,10 +74,9 @@ void EventSolver::load(const Scene& scene, const ParticleState<double>& initial)
             state_.y[i] = WallLaw<double>::wrap(state_.y[i], w.ymin, w.height());
         }
     }
-    flight_.resize(n);
+    disks_.resize(n);
     for (std::size_t i = 0; i < n; ++i)
-        flight_[i] = Flight{state_.x[i], state_.y[i], state_.vx[i], state_.vy[i], 0.0, state_.radius[i]};
-    count_.assign(n, 0);
+        disks_[i] = Disk{state_.x[i], state_.y[i], state_.vx[i], state_.vy[i], 0.0, state_.radius[i], 0, CellLinks{}};
     last_collision_.assign(n, -std::numeric_limits<double>::infinity());
     prediction_.assign(n, Prediction{});
     now_ = progress_mark_ = kinetic_mark_ = 0;
@@ -88,16 +87,30 @@ void EventSolver::load(const Scene& scene, const ParticleState<double>& initial)
 
     double r_max = 0, r_sum = 0, v2_sum = 0;
     for (std::size_t i = 0; i < n; ++i) {
-        r_max = std::max(r_max, flight_[i].radius);
-        r_sum += flight_[i].radius;
-        v2_sum += flight_[i].vx * flight_[i].vx + flight_[i].vy * flight_[i].vy;
+        r_max = std::max(r_max, disks_[i].radius);
+        r_sum += disks_[i].radius;
+        v2_sum += disks_[i].vx * disks_[i].vx + disks_[i].vy * disks_[i].vy;
     }
-    cells_.configure(w, n > 0 ? 2 * r_max : 1.0, n);
+    // Cell size: at least the largest contact distance 2 r_max, so that the 3x3 cells around a
+    // disk hold every disk it can touch. In a dilute gas such cells are nearly empty and a disk
+    // crosses several of them between two collisions (at area fraction 0.1, 6 of the 7 events
+    // per collision are crossings). There cells holding one disk on average (side sqrt(A / N))
+    // halve the events per collision and save instructions and cache misses; in a denser gas
+    // they only add neighbours (+18 % instructions at area fraction 0.5). So they are used when
+    // cells of 2 r_max would hold fewer than 1/4 disk on average (area fraction below ~0.2 for
+    // equal disks). docs/event-driven.md, "Performance", has the measurements.
+    double cell_size = n > 0 ? 2 * r_max : 1.0;
+    const double area_per_disk = n > 0 ? w.width() * w.height() / double(n) : 0.0;
+    const double dilute_size = std::sqrt(area_per_disk);
+    // (Only in a box at least 4 such cells wide: a periodic box needs 3 cells per axis.)
+    if (n > 0 && cell_size < 0.5 * dilute_size && 4 * dilute_size < std::min(w.width(), w.height()))
+        cell_size = dilute_size;
+    cells_.configure(w, cell_size, n);
     if (scene.periodic() && (cells_.cells_x() < 3 || cells_.cells_y() < 3))
         throw std::runtime_error("event: periodic box " + describe(w.width()) + " x " + describe(w.height()) +
                                  " is narrower than 3 contact distances (2 r_max = " + describe(2 * r_max) +
                                  "); the minimum-image convention needs at least 3 cells per axis");
-    for (std::uint32_t i = 0; i < n; ++i) cells_.insert(i, cells_.column_of(flight_[i].x), cells_.row_of(flight_[i].y));
+    for (std::uint32_t i = 0; i < n; ++i) cells_.insert(disks_, i, cells_.column_of(disks_[i].x), cells_.row_of(disks_[i].y));
     reject_overlaps();
 
     // Time scale: the time a typical disk needs to travel one diameter (from the rms speed or,
@@ -173,14 +186,14 @@ void EventSolver::reject_overlaps() const {
     const bool periodic = scene_.periodic();
     const World& w = scene_.world;
     for (std::uint32_t i = 0; i < state_.size(); ++i) {
-        cells_.for_each_neighbour(i, [&](std::uint32_t j) {
+        cells_.for_each_neighbour(disks_, i, [&](std::uint32_t j) {
             if (j <= i) return;
-            double dx = flight_[i].x - flight_[j].x, dy = flight_[i].y - flight_[j].y;
+            double dx = disks_[i].x - disks_[j].x, dy = disks_[i].y - disks_[j].y;
             if (periodic) {
                 dx = WallLaw<double>::minimum_image(dx, w.width());
                 dy = WallLaw<double>::minimum_image(dy, w.height());
             }
-            const double sigma = flight_[i].radius + flight_[j].radius;
+            const double sigma = disks_[i].radius + disks_[j].radius;
             const double distance = std::hypot(dx, dy);
             if (sigma - distance > overlap_tolerance * sigma)
                 throw std::runtime_error("event: initial state overlaps: particles " + std::to_string(i) + " and " +
@@ -211,7 +224,7 @@ void EventSolver::process_event() {
     const Prediction p = prediction_[i];
     switch (p.kind) {
     case EventKind::pair:
-        if (count_[p.partner] != p.partner_count) {
+        if (disks_[p.partner].count != p.partner_count) {
             // The partner changed course after this was predicted: the event is stale.
             ++stale_events_;
             predict(i);
@@ -222,12 +235,12 @@ void EventSolver::process_event() {
         predict(p.partner);
         return;
     case EventKind::wall:
-        collide_wall(i, p.partner);
+        collide_wall(i, p.border);
         predict(i);
         return;
     case EventKind::cell:
-        cross_cell(i, p.partner);
-        predict(i);
+        cross_cell(i, p.border);
+        predict_after_crossing(i, p.border);
         return;
     case EventKind::none:
         return;  // unreachable: such a disk's time is infinite
@@ -248,7 +261,7 @@ void EventSolver::check_progress(std::uint32_t i) {
     if (++events_since_mark_ <= limit) return;
     const Prediction& p = prediction_[i];
     const std::string with = p.kind == EventKind::pair ? "particle " + std::to_string(p.partner)
-                             : p.kind == EventKind::wall ? "wall " + std::to_string(p.partner)
+                             : p.kind == EventKind::wall ? "wall " + std::to_string(p.border)
                                                          : "a cell border";
     throw std::runtime_error("event: no progress in simulated time: " + std::to_string(events_since_mark_) +
                              " events at t = " + describe(now_) + " within " + describe(resolution) +
@@ -262,14 +275,14 @@ void EventSolver::check_progress(std::uint32_t i) {
 // ---------------------------------------------------------------------------------------
 
 void EventSolver::bring_to_now(std::uint32_t i) {
-    const double dt = now_ - flight_[i].t;
-    flight_[i].t = now_;
+    const double dt = now_ - disks_[i].t;
+    disks_[i].t = now_;
     if (dt == 0 || state_.is_stone(i)) return;
     // Free flight under uniform gravity: x(t) = x + v dt + g dt^2 / 2, v(t) = v + g dt.
-    flight_[i].x += (flight_[i].vx + 0.5 * gx_ * dt) * dt;
-    flight_[i].y += (flight_[i].vy + 0.5 * gy_ * dt) * dt;
-    flight_[i].vx += gx_ * dt;
-    flight_[i].vy += gy_ * dt;
+    disks_[i].x += (disks_[i].vx + 0.5 * gx_ * dt) * dt;
+    disks_[i].y += (disks_[i].vy + 0.5 * gy_ * dt) * dt;
+    disks_[i].vx += gx_ * dt;
+    disks_[i].vy += gy_ * dt;
 }
 
 void EventSolver::predict(std::uint32_t i) {
@@ -279,12 +292,35 @@ void EventSolver::predict(std::uint32_t i) {
         return;
     }
     bring_to_now(i);
-    Prediction best;
-    double best_dt = earliest_border_or_wall(i, best);
-    const double xi = flight_[i].x, yi = flight_[i].y, vxi = flight_[i].vx, vyi = flight_[i].vy, ri = flight_[i].radius;
+    Prediction p;
+    earliest_pair(i, p, [&](auto&& visit) { cells_.for_each_neighbour(disks_, i, visit); });
+    file_prediction(i, p);
+}
+
+// After a cell crossing (cross_cell has brought disk i to now) the disk's course is the same,
+// so its earliest pair collision with the disks of its old neighbourhood is still the one found
+// before: of the 3x3 cells around the new cell, six were neighbours already, and only the
+// three entered ones need a look. A neighbour that changed course since then was re-predicted
+// itself, against i among others, so the pair (i, j) is covered by j's prediction. If the kept
+// collision's partner has changed course, the kept time is no longer a collision: predict
+// afresh against the whole neighbourhood.
+void EventSolver::predict_after_crossing(std::uint32_t i, std::uint32_t border) {
+    Prediction p = prediction_[i];
+    if (p.pair_time != never && disks_[p.partner].count != p.partner_count) {
+        predict(i);
+        return;
+    }
+    earliest_pair(i, p, [&](auto&& visit) { cells_.for_each_entered(disks_, i, border, visit); });
+    file_prediction(i, p);
+}
+
+template <typename VisitCells>
+void EventSolver::earliest_pair(std::uint32_t i, Prediction& p, VisitCells&& visit_cells) const {
+    const double xi = disks_[i].x, yi = disks_[i].y, vxi = disks_[i].vx, vyi = disks_[i].vy, ri = disks_[i].radius;
     const bool periodic = scene_.periodic();
     const double width = scene_.world.width(), height = scene_.world.height();
-    cells_.for_each_neighbour(i, [&](std::uint32_t j) {
+    double best_dt = p.pair_time - now_;
+    visit_cells([&](std::uint32_t j) {
         if (j == i) return;
         double xj, yj, vxj, vyj;
         position_now(j, xj, yj, vxj, vyj);
@@ -298,25 +334,35 @@ void EventSolver::predict(std::uint32_t i) {
             else if (dy < -0.5 * height) dy += height;
         }
         // Both disks feel the same gravity, so their relative motion is a straight line.
-        const double dt = event_time::pair_collision_time(dx, dy, vxi - vxj, vyi - vyj, ri + flight_[j].radius);
+        const double dt = event_time::pair_collision_time(dx, dy, vxi - vxj, vyi - vyj, ri + disks_[j].radius);
         if (dt < best_dt) {
             best_dt = dt;
-            best = Prediction{EventKind::pair, j, count_[j]};
+            p.partner = j;
+            p.partner_count = disks_[j].count;
+            p.pair_time = now_ + dt;
         }
     });
-    prediction_[i] = best;
-    queue_.update(i, now_ + best_dt);
 }
 
-// The earliest crossing of one of the four borders of disk i's cell, or of a wall.
-double EventSolver::earliest_border_or_wall(std::uint32_t i, Prediction& p) const {
+void EventSolver::file_prediction(std::uint32_t i, Prediction& p) {
+    const double border_time = now_ + earliest_border_or_wall(i, p.border, p.kind);
+    double t = border_time;
+    if (p.pair_time < border_time) p.kind = EventKind::pair, t = p.pair_time;
+    prediction_[i] = p;
+    queue_.update(i, t);
+}
+
+// The earliest crossing of one of the four borders of disk i's cell, or of a wall (its time
+// from now; `which` and `kind` say which one, kind none if there is none).
+double EventSolver::earliest_border_or_wall(std::uint32_t i, std::uint32_t& which, EventKind& kind) const {
     const World& w = scene_.world;
     const bool periodic = scene_.periodic();
-    const double r = flight_[i].radius;
-    const std::int64_t cx = cells_.column(i), cy = cells_.row(i);
+    const double r = disks_[i].radius;
+    const std::int64_t cx = cells_.column(disks_[i].links), cy = cells_.row(disks_[i].links);
     double best = never;
-    auto consider = [&](double t, EventKind kind, std::uint32_t which) {
-        if (t < best) best = t, p = Prediction{kind, which, 0};
+    kind = EventKind::none;
+    auto consider = [&](double t, EventKind k, std::uint32_t id) {
+        if (t < best) best = t, kind = k, which = id;
     };
     // One axis: position q, velocity v, acceleration a, cell index c of n cells.
     auto axis = [&](double q, double v, double a, std::int64_t c, std::int64_t n, double border_lo, double border_hi,
@@ -327,9 +373,9 @@ double EventSolver::earliest_border_or_wall(std::uint32_t i, Prediction& p) cons
         consider(event_time::downward_crossing_time(wall_lo + r - q, v, a), EventKind::wall, lo_id);
         consider(event_time::upward_crossing_time(wall_hi - r - q, v, a), EventKind::wall, lo_id + 1);
     };
-    axis(flight_[i].x, flight_[i].vx, gx_, cx, cells_.cells_x(), cells_.border_x(cx), cells_.border_x(cx + 1), w.xmin,
+    axis(disks_[i].x, disks_[i].vx, gx_, cx, cells_.cells_x(), cells_.border_x(cx), cells_.border_x(cx + 1), w.xmin,
          w.xmax, 0);
-    axis(flight_[i].y, flight_[i].vy, gy_, cy, cells_.cells_y(), cells_.border_y(cy), cells_.border_y(cy + 1), w.ymin,
+    axis(disks_[i].y, disks_[i].vy, gy_, cy, cells_.cells_y(), cells_.border_y(cy), cells_.border_y(cy + 1), w.ymin,
          w.ymax, 2);
     return best;
 }
@@ -350,12 +396,12 @@ double EventSolver::restitution_now(double e, std::uint32_t i, std::uint32_t j) 
 void EventSolver::collide_pair(std::uint32_t i, std::uint32_t j) {
     bring_to_now(i);
     bring_to_now(j);
-    double dx = flight_[i].x - flight_[j].x, dy = flight_[i].y - flight_[j].y;
+    double dx = disks_[i].x - disks_[j].x, dy = disks_[i].y - disks_[j].y;
     if (scene_.periodic()) {
         dx = WallLaw<double>::minimum_image(dx, scene_.world.width());
         dy = WallLaw<double>::minimum_image(dy, scene_.world.height());
     }
-    const double ux = flight_[i].vx - flight_[j].vx, uy = flight_[i].vy - flight_[j].vy;
+    const double ux = disks_[i].vx - disks_[j].vx, uy = disks_[i].vy - disks_[j].vy;
     const double b = dx * ux + dy * uy;  // d.u < 0: approaching
     if (!(b < 0)) return;                // a grazing contact that round-off turned into a miss
     const double d2 = dx * dx + dy * dy;
@@ -365,10 +411,10 @@ void EventSolver::collide_pair(std::uint32_t i, std::uint32_t j) {
     // overlap correction and friction): J = -(1 + e) (u.n) / (w_i + w_j), n = d / |d|.
     // Written as J n = g d with g = -(1 + e) (d.u) / (|d|^2 (w_i + w_j)).
     const double g = -(1 + e) * b / (d2 * (wi + wj));
-    flight_[i].vx += wi * g * dx;
-    flight_[i].vy += wi * g * dy;
-    flight_[j].vx -= wj * g * dx;
-    flight_[j].vy -= wj * g * dy;
+    disks_[i].vx += wi * g * dx;
+    disks_[i].vy += wi * g * dy;
+    disks_[j].vx -= wj * g * dx;
+    disks_[j].vy -= wj * g * dy;
     // Collision virial d.(J n) = g |d|^2 (the pressure, see stats()).
     virial_.add(g * d2);
     // Energy lost: (1 - e^2)/2 * mu (u.n)^2 with the reduced mass mu = 1/(w_i + w_j).
@@ -377,8 +423,8 @@ void EventSolver::collide_pair(std::uint32_t i, std::uint32_t j) {
         kinetic_mark_ = now_;
         kinetic_ -= 0.5 * (1 - e * e) * b * b / (d2 * (wi + wj));
     }
-    ++count_[i];
-    ++count_[j];
+    ++disks_[i].count;
+    ++disks_[j].count;
     last_collision_[i] = last_collision_[j] = now_;
     ++pair_events_;
 }
@@ -386,10 +432,10 @@ void EventSolver::collide_pair(std::uint32_t i, std::uint32_t j) {
 void EventSolver::collide_wall(std::uint32_t i, std::uint32_t wall) {
     bring_to_now(i);
     const World& w = scene_.world;
-    const double r = flight_[i].radius;
+    const double r = disks_[i].radius;
     const bool x_axis = wall < 2, low = wall % 2 == 0;
-    double& q = x_axis ? flight_[i].x : flight_[i].y;
-    double& v = x_axis ? flight_[i].vx : flight_[i].vy;
+    double& q = x_axis ? disks_[i].x : disks_[i].y;
+    double& v = x_axis ? disks_[i].vx : disks_[i].vy;
     // Round-off rule: the centre is put back exactly on the contact line, never beyond it.
     const double contact = x_axis ? (low ? w.xmin + r : w.xmax - r) : (low ? w.ymin + r : w.ymax - r);
     q = low ? std::max(q, contact) : std::min(q, contact);
@@ -404,13 +450,13 @@ void EventSolver::collide_wall(std::uint32_t i, std::uint32_t wall) {
         kinetic_ -= 0.5 * m * (1 - e * e) * v * v;
     }
     v = -e * v;
-    ++count_[i];
+    ++disks_[i].count;
     last_collision_[i] = now_;
 }
 
 void EventSolver::cross_cell(std::uint32_t i, std::uint32_t border) {
     bring_to_now(i);
-    std::int64_t cx = cells_.column(i), cy = cells_.row(i);
+    std::int64_t cx = cells_.column(disks_[i].links), cy = cells_.row(disks_[i].links);
     switch (border) {
     case 0: --cx; break;
     case 1: ++cx; break;
@@ -419,12 +465,12 @@ void EventSolver::cross_cell(std::uint32_t i, std::uint32_t border) {
     }
     // Periodic box: leaving through one side is entering through the other.
     const World& w = scene_.world;
-    if (cx < 0) cx += cells_.cells_x(), flight_[i].x += w.width();
-    if (cx >= cells_.cells_x()) cx -= cells_.cells_x(), flight_[i].x -= w.width();
-    if (cy < 0) cy += cells_.cells_y(), flight_[i].y += w.height();
-    if (cy >= cells_.cells_y()) cy -= cells_.cells_y(), flight_[i].y -= w.height();
-    cells_.remove(i);
-    cells_.insert(i, cx, cy);
+    if (cx < 0) cx += cells_.cells_x(), disks_[i].x += w.width();
+    if (cx >= cells_.cells_x()) cx -= cells_.cells_x(), disks_[i].x -= w.width();
+    if (cy < 0) cy += cells_.cells_y(), disks_[i].y += w.height();
+    if (cy >= cells_.cells_y()) cy -= cells_.cells_y(), disks_[i].y -= w.height();
+    cells_.remove(disks_, i);
+    cells_.insert(disks_, i, cx, cy);
     ++cell_events_;
 }
 
@@ -447,7 +493,7 @@ void EventSolver::read_state(ParticleState<double>& out) const {
 double EventSolver::kinetic_energy_now() const {
     CompensatedSum k;
     for (std::size_t i = 0; i < state_.size(); ++i)
-        if (!state_.is_stone(i)) k.add(0.5 * state_.mass[i] * (flight_[i].vx * flight_[i].vx + flight_[i].vy * flight_[i].vy));
+        if (!state_.is_stone(i)) k.add(0.5 * state_.mass[i] * (disks_[i].vx * disks_[i].vx + disks_[i].vy * disks_[i].vy));
     return k.value();
 }
 

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "cell_list.h"
+#include "collision_time.h"
 #include "core/compensated_sum.h"
 #include "core/solver.h"
 #include "event_queue.h"
@@ -41,10 +42,15 @@ public:
 private:
     enum class EventKind : std::uint8_t { none, pair, wall, cell };
     // Walls and cell borders are numbered: 0 = x low, 1 = x high, 2 = y low, 3 = y high.
+    // A disk's prediction keeps its earliest pair collision apart from its earliest wall or
+    // border event: a cell crossing does not change the disk's course, so the pair collision
+    // found before stays valid and only the newly entered cells need a look (predict_after_crossing).
     struct Prediction {
-        EventKind kind = EventKind::none;
-        std::uint32_t partner = 0;        // the other disk (pair) or the wall/border number
-        std::uint32_t partner_count = 0;  // the partner's event counter when predicted
+        EventKind kind = EventKind::none;  // the earlier of the two events below
+        std::uint32_t border = 0;          // the wall/border number (kind wall or cell)
+        std::uint32_t partner = 0;         // the earliest pair collision: the other disk,
+        std::uint32_t partner_count = 0;   // its event counter when predicted,
+        double pair_time = event_time::never;         // and the (absolute) time of the collision
     };
 
     void validate_input(const ParticleState<double>& initial) const;
@@ -57,7 +63,7 @@ private:
     // Position/velocity disk j would have at `now_`, without touching its state.
     void position_now(std::uint32_t j, double& x, double& y, double& vx, double& vy) const {
         // Stones have zero velocity and scenes with stones have no gravity: no special case.
-        const Flight& f = flight_[j];
+        const Disk& f = disks_[j];
         const double dt = now_ - f.t;
         x = f.x + (f.vx + 0.5 * gx_ * dt) * dt;
         y = f.y + (f.vy + 0.5 * gy_ * dt) * dt;
@@ -66,7 +72,14 @@ private:
     }
     // Re-predicts disk i's earliest event from `now_` and files it in the queue.
     void predict(std::uint32_t i);
-    double earliest_border_or_wall(std::uint32_t i, Prediction& p) const;
+    // The same after disk i crossed `border` into a new cell without changing course.
+    void predict_after_crossing(std::uint32_t i, std::uint32_t border);
+    // Lowers p's pair collision to the earliest one with a disk j that visit_cells(visit) visits.
+    template <typename VisitCells>
+    void earliest_pair(std::uint32_t i, Prediction& p, VisitCells&& visit_cells) const;
+    // Adds disk i's earliest wall or border event to p and files the earlier event in the queue.
+    void file_prediction(std::uint32_t i, Prediction& p);
+    double earliest_border_or_wall(std::uint32_t i, std::uint32_t& which, EventKind& kind) const;
 
     void collide_pair(std::uint32_t i, std::uint32_t j);
     void collide_wall(std::uint32_t i, std::uint32_t wall);
@@ -76,18 +89,21 @@ private:
     double tc_duration() const;
     double kinetic_energy_now() const;
 
-    // One disk's free flight: position and velocity valid at the disk's own clock t. Kept
-    // together (one cache line) because predicting reads all of them for every neighbour.
-    struct Flight {
+    // One disk: its free flight (position and velocity valid at the disk's own clock t), its
+    // event counter and its place in the cell list, in one 64-byte record. Predicting reads
+    // all of these for every neighbour, so a neighbour costs one cache line.
+    struct alignas(64) Disk {
         double x, y, vx, vy;
-        double t;       // the disk's clock
+        double t;             // the disk's clock
         double radius;
+        std::uint32_t count;  // event counter: bumped whenever the disk changes course
+        CellLinks links;      // cell and neighbours in the cell (cell_list.h)
     };
+    static_assert(sizeof(Disk) == 64);
 
     Scene scene_;
     ParticleState<double> state_;      // masses and stone flags; positions only on load
-    std::vector<Flight> flight_;
-    std::vector<std::uint32_t> count_; // event counter: bumped whenever disk i changes course
+    std::vector<Disk> disks_;
     std::vector<double> last_collision_;
     std::vector<Prediction> prediction_;
     CellList cells_;
