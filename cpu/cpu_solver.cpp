@@ -75,6 +75,12 @@ void CpuSolver::load(const Scene& scene, const ParticleState<double>& initial) {
     stats_ = SolverStats{};
 
     features_ = specialise_ ? FeatureSet::of(scene, state_) : FeatureSet::generic(scene);
+    auto all_equal = [](const std::vector<float>& a) {
+        return std::all_of(a.begin(), a.end(), [&](float v) { return v == a.front(); });
+    };
+    equal_radii_ = all_equal(state_.radius);
+    equal_masses_ = all_equal(state_.mass) && all_equal(state_.inv_mass);
+    reordered_ = ParticleState<float>{};  // no stale arrays: the constant ones are swapped in below
     const Physics& ph = scene.physics;
     const World& w = scene.world;
     params_ = PhaseParams{float(ph.restitution), float(ph.friction), float(ph.wall_restitution),
@@ -151,16 +157,27 @@ void CpuSolver::build_grid() {
     float *to_vy = reordered_.vy.data(), *to_radius = reordered_.radius.data(), *to_mass = reordered_.mass.data();
     float* to_inv_mass = reordered_.inv_mass.data();
     std::uint32_t* to_index = reordered_index_.data();
-    grid_.build(x, y, n, threads_, [=](std::uint32_t i, std::uint32_t k) {
-        to_x[k] = x[i];
-        to_y[k] = y[i];
-        to_vx[k] = vx[i];
-        to_vy[k] = vy[i];
-        to_radius[k] = radius[i];
-        to_mass[k] = mass[i];
-        to_inv_mass[k] = inv_mass[i];
-        to_index[k] = index[i];
-    });
+    // An array holding one value for every disk (equal radii, equal masses) reads the same in
+    // any order: it is not moved, which saves 8 bytes of traffic per disk and array.
+    dispatch([&]<bool MoveRadius, bool MoveMass>() {
+        grid_.build(x, y, n, threads_, [=](std::uint32_t i, std::uint32_t k) {
+            to_x[k] = x[i];
+            to_y[k] = y[i];
+            to_vx[k] = vx[i];
+            to_vy[k] = vy[i];
+            if constexpr (MoveRadius) to_radius[k] = radius[i];
+            if constexpr (MoveMass) {
+                to_mass[k] = mass[i];
+                to_inv_mass[k] = inv_mass[i];
+            }
+            to_index[k] = index[i];
+        });
+    }, !equal_radii_, !equal_masses_);
+    if (equal_radii_) state_.radius.swap(reordered_.radius);
+    if (equal_masses_) {
+        state_.mass.swap(reordered_.mass);
+        state_.inv_mass.swap(reordered_.inv_mass);
+    }
     std::swap(state_, reordered_);
     original_index_.swap(reordered_index_);
     in_cell_order_ = true;

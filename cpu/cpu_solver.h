@@ -70,6 +70,7 @@ private:
     ParticleState<float> reordered_;          // the reorder's destination, swapped with state_
     std::vector<std::uint32_t> reordered_index_;
     bool in_cell_order_ = false;              // state_ is in the cell order of grid_
+    bool equal_radii_ = false, equal_masses_ = false;  // arrays the reorder need not move
     std::vector<float> dx_, dy_, dvx_, dvy_;
     CellList grid_;
     std::int64_t step_count_ = 0;
