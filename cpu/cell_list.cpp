@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "parallel_for.h"
-
 namespace collide::cpu {
 
 void CellList::configure(const World& world, double min_cell_size) {
@@ -22,34 +20,80 @@ void CellList::configure(const World& world, double min_cell_size) {
     inv_cell_w_ = float(double(cells_x_) / world.width());
     inv_cell_h_ = float(double(cells_y_) / world.height());
     cell_start_.assign(std::size_t(cell_count()) + 1, 0);
+    no_cells_.assign(std::size_t(cells_x_) + 1, 0);
 }
 
-void CellList::build(const float* x, const float* y, std::size_t n, int threads) {
-    cell_of_.resize(n);
-    sorted_index_.resize(n);
-    // 1. The cell of every disk (parallel: the only floating-point work of the build).
-    parallel_for(n, threads, [&](std::size_t begin, std::size_t end) -> std::int64_t {
-        for (std::size_t i = begin; i < end; ++i)
-            cell_of_[i] = std::uint32_t(cell_y(y[i]) * cells_x_ + cell_x(x[i]));
-        return 0;
-    });
-    // 2. Count per cell, shifted by one so that the prefix sum below gives start offsets.
-    std::fill(cell_start_.begin(), cell_start_.end(), 0u);
-    for (std::size_t i = 0; i < n; ++i) ++cell_start_[cell_of_[i] + 1];
-    // 3. Exclusive prefix sum: cell_start_[c] = number of disks in cells before c.
-    for (std::size_t c = 1; c < cell_start_.size(); ++c) cell_start_[c] += cell_start_[c - 1];
-    // 4. Stable scatter: cell_start_[c] is advanced while filling cell c and afterwards
-    //    equals the start of cell c + 1; shifting back by one cell restores the starts.
-    for (std::size_t i = 0; i < n; ++i) sorted_index_[cell_start_[cell_of_[i]]++] = std::uint32_t(i);
-    for (std::size_t c = cell_start_.size() - 1; c > 0; --c) cell_start_[c] = cell_start_[c - 1];
-    cell_start_[0] = 0;
+void CellList::count_block(Block& b, const float* x, const float* y) {
+    if (b.begin == b.end) {
+        b.lo = 0;
+        b.count.clear();
+        return;
+    }
+    // The cells (a loop the compiler vectorises) and the range of cells they fall in.
+    std::uint32_t* cell = cell_of_.data();
+    for (std::size_t i = b.begin; i < b.end; ++i) cell[i] = cell_of(x[i], y[i]);
+    std::uint32_t lo = cell[b.begin], hi = lo;
+    for (std::size_t i = b.begin; i < b.end; ++i) {
+        lo = std::min(lo, cell[i]);
+        hi = std::max(hi, cell[i]);
+    }
+    b.lo = lo;
+    b.count.assign(hi - lo + 1, 0);
+    std::uint32_t* count = b.count.data() - lo;
+    for (std::size_t i = b.begin; i < b.end; ++i) ++count[cell[i]];
 }
 
-void CellList::mark_sorted(int threads) {
-    parallel_for(sorted_index_.size(), threads, [&](std::size_t begin, std::size_t end) -> std::int64_t {
-        for (std::size_t k = begin; k < end; ++k) sorted_index_[k] = std::uint32_t(k);
-        return 0;
-    });
+std::uint32_t CellList::slice_total(std::size_t c0, std::size_t c1) const {
+    std::uint32_t total = 0;
+    for (const Block& b : blocks_) {
+        const std::size_t lo = std::max<std::size_t>(c0, b.lo), hi = std::min(c1, b.lo + b.count.size());
+        for (std::size_t c = lo; c < hi; ++c) total += b.count[c - b.lo];
+    }
+    return total;
+}
+
+// cell_start[c] = first_slot + disks in cells c0 .. c-1; each block's count for cell c
+// becomes the slot its first disk in c goes to (blocks in order: the sort is stable).
+// The slice is cut where a block's cell range begins or ends, so that within each piece the
+// blocks covering it are fixed and the inner loop is a plain prefix sum over them.
+void CellList::slice_offsets(std::size_t c0, std::size_t c1, std::uint32_t first_slot) {
+    std::vector<std::size_t> cuts{c0, c1};
+    for (const Block& b : blocks_) {
+        for (std::size_t edge : {std::size_t(b.lo), b.lo + b.count.size()})
+            if (edge > c0 && edge < c1) cuts.push_back(edge);
+    }
+    std::sort(cuts.begin(), cuts.end());
+    cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+
+    std::uint32_t* start = cell_start_.data();
+    std::uint32_t slot = first_slot;
+    std::vector<std::uint32_t*> covering;  // next[c] of each block covering the piece, in block order
+    for (std::size_t piece = 0; piece + 1 < cuts.size(); ++piece) {
+        const std::size_t u = cuts[piece], v = cuts[piece + 1];
+        covering.clear();
+        for (Block& b : blocks_)
+            if (b.lo <= u && u < b.lo + b.count.size()) covering.push_back(b.count.data() - b.lo);
+        if (covering.empty()) {  // no disk in these cells
+            std::fill(start + u, start + v, slot);
+        } else if (covering.size() == 1) {  // one block: a plain exclusive prefix sum
+            std::uint32_t* next = covering.front();
+            for (std::size_t c = u; c < v; ++c) {
+                start[c] = slot;
+                const std::uint32_t n = next[c];
+                next[c] = slot;
+                slot += n;
+            }
+        } else {
+            for (std::size_t c = u; c < v; ++c) {
+                start[c] = slot;
+                for (std::uint32_t* next : covering) {
+                    const std::uint32_t n = next[c];
+                    next[c] = slot;
+                    slot += n;
+                }
+            }
+        }
+    }
 }
 
 }  // namespace collide::cpu

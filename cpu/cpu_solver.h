@@ -25,7 +25,9 @@ public:
     // scene's [backend.cpu] table, which options override):
     //   "specialise" = "on" (default) | "off": loops specialised to the scene's features, or
     //                  the generic loop with every feature compiled in (for the benchmark);
-    //   "sort_interval" = K >= 0: reorder particles by cell every K steps (0: never).
+    //   "sort_interval" = K >= 0: move particles into cell order at every K-th grid build
+    //                  (one build per sub-step; 0: never, the contact pass then reads
+    //                  through the cell list's index).
     explicit CpuSolver(const BackendOptions& options);
 
     std::string name() const override { return "cpu"; }
@@ -41,7 +43,7 @@ public:
     void step();
 
     // Default of "sort_interval": chosen by the `features` benchmark (docs/cpu-backend.md).
-    static constexpr int kDefaultSortInterval = 16;
+    static constexpr int kDefaultSortInterval = 1;
 
 private:
     void apply_settings(const std::map<std::string, std::string>& settings, const std::string& where);
@@ -49,11 +51,10 @@ private:
     void substep_integrate_first(float h);
 
     void integrate(float h);          // phases 1-3 of integrate-first
-    void build_grid();                // phase 4 (and the periodic reorder by cell)
+    void build_grid();                // phase 4, with the reorder by cell
     void collide();                   // phase 5: one-sided Jacobi contact pass
     void correct();                   // phase 6 of integrate-first
     void correct_and_integrate(float dt);  // collide-first after its contact pass
-    void sort_by_cell();
     Corrections corrections() { return {dx_.data(), dy_.data(), dvx_.data(), dvy_.data()}; }
 
     BackendOptions options_;
@@ -66,10 +67,14 @@ private:
     PhaseParams params_;
     ParticleState<float> state_;              // in the current internal order
     std::vector<std::uint32_t> original_index_;  // scene index of the particle in each slot
+    ParticleState<float> reordered_;          // the reorder's destination, swapped with state_
+    std::vector<std::uint32_t> reordered_index_;
+    bool in_cell_order_ = false;              // state_ is in the cell order of grid_
+    bool equal_radii_ = false, equal_masses_ = false;  // arrays the reorder need not move
     std::vector<float> dx_, dy_, dvx_, dvy_;
     CellList grid_;
     std::int64_t step_count_ = 0;
-    std::int64_t sorted_at_step_ = -1;
+    std::int64_t grid_builds_ = 0;
     SolverStats stats_;
 };
 

@@ -28,12 +28,15 @@ inline constexpr std::size_t kMinChunk = 1024;
 // Seed 001's choice: about four chunks per worker.
 inline constexpr std::size_t kChunksPerThread = 4;
 
+// Runs body over [0, n) in chunks. `particles` is the number of particles the loop covers,
+// which decides whether it is worth waking the pool (by default the items are particles);
+// `min_chunk` is the smallest chunk handed out (in items).
 template <typename Body>
-std::int64_t parallel_for(std::size_t n, int threads, Body&& body) {
+std::int64_t parallel_for(std::size_t n, int threads, Body&& body, std::size_t particles, std::size_t min_chunk) {
     const std::size_t workers = std::size_t(std::max(threads, 1));
-    const std::size_t chunk = std::max(kMinChunk, (n + kChunksPerThread * workers - 1) / (kChunksPerThread * workers));
+    const std::size_t chunk = std::max(min_chunk, (n + kChunksPerThread * workers - 1) / (kChunksPerThread * workers));
     const std::int64_t chunks = std::int64_t((n + chunk - 1) / chunk);
-    const bool run_parallel = workers > 1 && n >= kInlineBelow;
+    const bool run_parallel = workers > 1 && particles >= kInlineBelow;
     std::int64_t total = 0;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads) if (run_parallel) reduction(+ : total)
     for (std::int64_t c = 0; c < chunks; ++c) {
@@ -41,6 +44,11 @@ std::int64_t parallel_for(std::size_t n, int threads, Body&& body) {
         total += body(begin, std::min(n, begin + chunk));
     }
     return total;
+}
+
+template <typename Body>
+std::int64_t parallel_for(std::size_t n, int threads, Body&& body) {
+    return parallel_for(n, threads, body, n, kMinChunk);
 }
 
 }  // namespace collide::cpu

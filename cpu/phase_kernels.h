@@ -81,69 +81,93 @@ std::int64_t integrate_range(ParticleState<float>& s, const PhaseParams& p, floa
     return 0;
 }
 
-// The one-sided Jacobi contact pass (phase 5 of integrate-first, first phase of collide-first).
-// For each disk i of the range: sum the contact law's share of disk i over every neighbour j
-// in the fixed order of the cell list, and store the sum in i's correction slots. Reads the
-// state, writes only corrections[i]: disk j computes the mirror image for itself. Returns the
-// number of contacts, each pair counted once (by its lower index, or by the moving disk when
-// the other is a stone, which never runs the loop).
-template <bool Friction, bool Stones, bool UniformRadius, bool Periodic>
-std::int64_t collide_range(const ParticleState<float>& s, const CellList& grid, const PhaseParams& p,
-                           Corrections out, std::size_t begin, std::size_t end) {
+// The one-sided Jacobi contact pass (phase 5 of integrate-first, first phase of collide-first),
+// over the rows [row_begin, row_end) of grid cells. For each disk i: sum the contact law's
+// share of disk i over every neighbour j in the fixed order of the cell list, and store the
+// sum in i's correction slots. Reads the state, writes only corrections[i]: disk j computes
+// the mirror image for itself. Returns the number of contacts, each pair counted once (by
+// its lower slot, or by the moving disk when the other is a stone, which never runs the loop).
+//
+// The work is organised per cell: all disks of a cell share one 3x3 neighbourhood, so its
+// (at most six) candidate slot ranges are computed once per cell, not per disk. InCellOrder:
+// the state itself is in cell order (CpuSolver's reorder), so slot k is disk k and the
+// candidates are contiguous in every array; otherwise slots map to disks through the index.
+template <bool Friction, bool Stones, bool UniformRadius, bool Periodic, bool InCellOrder>
+std::int64_t collide_rows(const ParticleState<float>& s, const CellList& grid, const PhaseParams& p,
+                          Corrections out, std::size_t row_begin, std::size_t row_end) {
     const float *x = s.x.data(), *y = s.y.data(), *vx = s.vx.data(), *vy = s.vy.data();
     const float *radius = s.radius.data(), *inv_mass = s.inv_mass.data();
     const std::uint32_t* index = grid.sorted_index();
+    auto disk = [index](std::uint32_t slot) { return InCellOrder ? slot : index[slot]; };
+    const std::uint32_t* cell_start = grid.cell_start();
+    const std::int64_t cells_x = grid.cells_x();
     // Constant zero friction lets the compiler drop the law's friction branch entirely.
     const float mu = Friction ? p.friction : 0.0f;
+    const float uniform_contact2 = (p.radius + p.radius) * (p.radius + p.radius);
     std::int64_t contacts = 0;
-    for (std::size_t i = begin; i < end; ++i) {
-        float dx = 0, dy = 0, dvx = 0, dvy = 0;
-        const float wi = inv_mass[i];
-        if (!Stones || wi != 0.0f) {  // a stone's share is always zero
-            const float xi = x[i], yi = y[i], vxi = vx[i], vyi = vy[i];
-            const float ri = UniformRadius ? p.radius : radius[i];
-            grid.for_each_neighbour_range<Periodic>(xi, yi, [&](std::uint32_t k0, std::uint32_t k1) {
-                for (std::uint32_t k = k0; k < k1; ++k) {
-                    const std::uint32_t j = index[k];
-                    float sep_x = xi - x[j], sep_y = yi - y[j];
-                    if constexpr (Periodic) {
-                        sep_x = WallLaw<float>::minimum_image(sep_x, p.width);
-                        sep_y = WallLaw<float>::minimum_image(sep_y, p.height);
+    for (std::int64_t cy = std::int64_t(row_begin); cy < std::int64_t(row_end); ++cy) {
+        for (std::int64_t cx = 0; cx < cells_x; ++cx) {
+            const std::uint32_t first = cell_start[cy * cells_x + cx], last = cell_start[cy * cells_x + cx + 1];
+            if (first == last) continue;  // most cells are empty at low density
+            SlotRange ranges[6];
+            const int range_count = grid.neighbour_ranges<Periodic>(cx, cy, ranges);
+            for (std::uint32_t a = first; a < last; ++a) {
+                const std::uint32_t i = disk(a);
+                float dx = 0, dy = 0, dvx = 0, dvy = 0;
+                const float wi = inv_mass[i];
+                if (!Stones || wi != 0.0f) {  // a stone's share is always zero
+                    const float xi = x[i], yi = y[i], vxi = vx[i], vyi = vy[i];
+                    const float ri = UniformRadius ? p.radius : radius[i];
+                    for (int r = 0; r < range_count; ++r) {
+                        for (std::uint32_t b = ranges[r].begin; b < ranges[r].end; ++b) {
+                            const std::uint32_t j = disk(b);
+                            float sep_x = xi - x[j], sep_y = yi - y[j];
+                            if constexpr (Periodic) {
+                                sep_x = WallLaw<float>::minimum_image(sep_x, p.width);
+                                sep_y = WallLaw<float>::minimum_image(sep_y, p.height);
+                            }
+                            // Squared-distance reject first (seed 001): no square root, no
+                            // other load, no law call. Disk i itself (distance 0) passes it
+                            // and is skipped by the slot test.
+                            const float contact2 = UniformRadius ? uniform_contact2 : (ri + radius[j]) * (ri + radius[j]);
+                            if (sep_x * sep_x + sep_y * sep_y >= contact2 || b == a) continue;
+                            const float contact = UniformRadius ? ri + ri : ri + radius[j];
+                            const auto d = ContactLaw<float>::delta(sep_x, sep_y, vxi - vx[j], vyi - vy[j], contact,
+                                                                    wi, inv_mass[j], p.restitution, mu);
+                            dx += d.dx;
+                            dy += d.dy;
+                            dvx += d.dvx;
+                            dvy += d.dvy;
+                            if (a < b || (Stones && inv_mass[j] == 0.0f)) ++contacts;
+                        }
                     }
-                    const float contact = UniformRadius ? ri + ri : ri + radius[j];
-                    // Squared-distance reject first (seed 001): no square root, no law call.
-                    // Disk i itself (distance 0) passes it and is skipped by the index test.
-                    if (sep_x * sep_x + sep_y * sep_y >= contact * contact || j == i) continue;
-                    const auto d = ContactLaw<float>::delta(sep_x, sep_y, vxi - vx[j], vyi - vy[j], contact,
-                                                            wi, inv_mass[j], p.restitution, mu);
-                    dx += d.dx;
-                    dy += d.dy;
-                    dvx += d.dvx;
-                    dvy += d.dvy;
-                    if (i < j || (Stones && inv_mass[j] == 0.0f)) ++contacts;
                 }
-            });
+                out.dx[i] = dx;
+                out.dy[i] = dy;
+                out.dvx[i] = dvx;
+                out.dvy[i] = dvy;
+            }
         }
-        out.dx[i] = dx;
-        out.dy[i] = dy;
-        out.dvx[i] = dvx;
-        out.dvy[i] = dvy;
     }
     return contacts;
 }
 
 // Integrate-first, phase 6: apply the corrections, then the world bounds.
+// Both update loops work on local copies and store every value back unconditionally: the
+// wall law's branches then become selects and the loop vectorises (a conditional store to
+// the arrays would keep it scalar).
 template <bool Stones, bool Periodic>
 std::int64_t correct_range(ParticleState<float>& s, Corrections c, const PhaseParams& p, std::size_t begin,
                            std::size_t end) {
     float *x = s.x.data(), *y = s.y.data(), *vx = s.vx.data(), *vy = s.vy.data();
     const float *radius = s.radius.data(), *inv_mass = s.inv_mass.data();
     for (std::size_t i = begin; i < end; ++i) {
-        x[i] += c.dx[i];
-        y[i] += c.dy[i];
-        vx[i] += c.dvx[i];
-        vy[i] += c.dvy[i];
-        apply_bounds<Stones, Periodic>(x[i], y[i], vx[i], vy[i], radius[i], inv_mass[i], p);
+        float xi = x[i] + c.dx[i], yi = y[i] + c.dy[i], vxi = vx[i] + c.dvx[i], vyi = vy[i] + c.dvy[i];
+        apply_bounds<Stones, Periodic>(xi, yi, vxi, vyi, radius[i], inv_mass[i], p);
+        x[i] = xi;
+        y[i] = yi;
+        vx[i] = vxi;
+        vy[i] = vyi;
     }
     return 0;
 }
@@ -157,16 +181,17 @@ std::int64_t correct_and_integrate_range(ParticleState<float>& s, Corrections c,
     float *x = s.x.data(), *y = s.y.data(), *vx = s.vx.data(), *vy = s.vy.data();
     const float *radius = s.radius.data(), *inv_mass = s.inv_mass.data();
     for (std::size_t i = begin; i < end; ++i) {
-        x[i] += c.dx[i];
-        y[i] += c.dy[i];
-        vx[i] += c.dvx[i];
-        vy[i] += c.dvy[i];
-        if constexpr (Stones)
-            if (inv_mass[i] == 0.0f) continue;
-        x[i] += vx[i] * dt;
-        y[i] += vy[i] * dt;
-        kick<Gravity, Damping, false>(vx[i], vy[i], 1.0f, p, dt);
-        apply_bounds<false, Periodic>(x[i], y[i], vx[i], vy[i], radius[i], 1.0f, p);
+        float xi = x[i] + c.dx[i], yi = y[i] + c.dy[i], vxi = vx[i] + c.dvx[i], vyi = vy[i] + c.dvy[i];
+        if (!Stones || inv_mass[i] != 0.0f) {  // stones are kinematic
+            xi += vxi * dt;
+            yi += vyi * dt;
+            kick<Gravity, Damping, false>(vxi, vyi, 1.0f, p, dt);
+            apply_bounds<false, Periodic>(xi, yi, vxi, vyi, radius[i], 1.0f, p);
+        }
+        x[i] = xi;
+        y[i] = yi;
+        vx[i] = vxi;
+        vy[i] = vyi;
     }
     return 0;
 }
