@@ -38,6 +38,21 @@ std::map<std::string, std::string> build_provenance() {
     return info;
 }
 
+std::map<std::string, std::string> run_provenance(const Scene& scene, const std::string& backend,
+                                                  const Solver& solver) {
+    auto attributes = build_provenance();
+    for (const auto& [key, value] : solver.provenance()) attributes["backend_" + key] = value;
+    attributes["backend"] = backend;
+    attributes["scene_name"] = scene.name;
+    attributes["scene_path"] = scene.source_path;
+    attributes["scene_text"] = scene.source_text;
+    attributes["seed"] = std::to_string(scene.seed);
+    attributes["dt"] = std::to_string(scene.run.dt);
+    attributes["substeps"] = std::to_string(scene.run.substeps);
+    attributes["command_line"] = command_line();
+    return attributes;
+}
+
 void set_command_line(int argc, char** argv) {
     g_command_line.clear();
     for (int i = 0; i < argc; ++i) {

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/step_schedule.h"
 #include "parallel_for.h"
 
 namespace collide::cpu {
@@ -99,12 +100,8 @@ void CpuSolver::advance_to(double t) {
 }
 
 void CpuSolver::step() {
-    if (scene_.run.order == StepOrder::collide_first) {
-        step_collide_first(float(scene_.run.dt));
-    } else {
-        const float h = float(scene_.run.dt / scene_.run.substeps);
-        for (int k = 0; k < scene_.run.substeps; ++k) substep_integrate_first(h);
-    }
+    step_by_rule<float>(scene_.run, [this](float dt) { step_collide_first(dt); },
+                        [this](float h) { substep_integrate_first(h); });
     ++step_count_;
     ++stats_.steps;
 }

@@ -5,6 +5,7 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "core/step_schedule.h"
 #include "core/uniform_grid.h"
 #include "device_grid.h"
 #include "step_params.hpp"
@@ -218,16 +219,18 @@ private:
 
     void step() {
         if (n_ > 0) {
-            if (scene_.run.order == StepOrder::collide_first) {
-                build_grid();
-                resolve();
-            } else {
-                for (int k = 0; k < scene_.run.substeps; ++k) {
+            // The step length lives in the kernels' parameters; only the order is scheduled here.
+            step_by_rule<double>(
+                scene_.run,
+                [this](double) {
+                    build_grid();
+                    resolve();
+                },
+                [this](double) {
                     run_kernel_integrate();
                     build_grid();
                     resolve();
-                }
-            }
+                });
         }
         ++step_count_;
         ++stats_.steps;

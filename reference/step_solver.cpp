@@ -4,6 +4,7 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "core/step_schedule.h"
 #include "core/stepping_laws.hpp"
 
 namespace collide {
@@ -48,13 +49,8 @@ void StepSolver::advance_to(double t) {
 }
 
 void StepSolver::step() {
-    const double dt = scene_.run.dt;
-    if (scene_.run.order == StepOrder::collide_first) {
-        step_collide_first(dt);
-    } else {
-        const double h = dt / scene_.run.substeps;
-        for (int k = 0; k < scene_.run.substeps; ++k) substep_integrate_first(h);
-    }
+    step_by_rule<double>(scene_.run, [this](double dt) { step_collide_first(dt); },
+                         [this](double h) { substep_integrate_first(h); });
     ++step_count_;
     ++stats_.steps;
 }

@@ -53,17 +53,8 @@ double warm_up(const Scene& scene, const BackendInfo& backend, const CaseSpec& s
 
 std::map<std::string, std::string> file_attributes(const Scene& scene, const CaseSpec& spec,
                                                    const Solver& solver) {
-    auto attributes = build_provenance();
-    for (const auto& [k, v] : solver.provenance()) attributes["backend_" + k] = v;
-    attributes["backend"] = spec.backend;
+    auto attributes = run_provenance(scene, spec.backend, solver);
     attributes["case_id"] = spec.id;
-    attributes["scene_name"] = scene.name;
-    attributes["scene_path"] = scene.source_path;
-    attributes["scene_text"] = scene.source_text;
-    attributes["seed"] = std::to_string(scene.seed);
-    attributes["dt"] = std::to_string(scene.run.dt);
-    attributes["substeps"] = std::to_string(scene.run.substeps);
-    attributes["command_line"] = command_line();
     return attributes;
 }
 

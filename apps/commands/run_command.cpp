@@ -50,21 +50,6 @@ void print_summary(const Scene& scene, const std::string& backend, const RunResu
     std::printf("walls     final max penetration %.3e (relative to radius)\n", b.max_wall_penetration);
 }
 
-// The root attributes of the output file (docs/output-format.md): the build, the backend,
-// the scene text and seed, and the command line.
-std::map<std::string, std::string> run_provenance(const Scene& scene, const BackendInfo& backend,
-                                                  const Solver& solver) {
-    auto attributes = build_provenance();
-    for (const auto& [key, value] : solver.provenance()) attributes["backend_" + key] = value;
-    attributes["backend"] = backend.name;
-    attributes["scene_name"] = scene.name;
-    attributes["scene_path"] = scene.source_path;
-    attributes["scene_text"] = scene.source_text;
-    attributes["seed"] = std::to_string(scene.seed);
-    attributes["command_line"] = command_line();
-    return attributes;
-}
-
 // Every check that can fail fast comes before the simulation: the backend name (no file read
 // needed), the scene, whether the backend supports it, and whether the output can be written.
 // A failure at any point leaves no output file and an existing one untouched (RunWriter).
@@ -86,7 +71,7 @@ void execute(const RunArgs& args) {
     progress.finish();
 
     if (writer) {
-        writer->write_attributes(run_provenance(scene, backend, *solver));
+        writer->write_attributes(run_provenance(scene, backend.name, *solver));
         writer->commit();
     }
     print_summary(scene, backend.name, result);
