@@ -5,6 +5,7 @@
 #include <random>
 
 #include "validation/statistics.h"
+#include "validation/tolerances.h"
 
 namespace collide::validation {
 namespace {
@@ -57,6 +58,23 @@ TEST(Statistics, KolmogorovSmirnovTellsSameFromDifferentDistributions) {
     EXPECT_LT(ks_two_sample(x, z).p_value, 1e-6);
     EXPECT_NEAR(ks_two_sample({1, 2, 3}, {1, 2, 3}).statistic, 0.0, 0);
     EXPECT_NEAR(ks_two_sample({1, 2}, {3, 4}).statistic, 1.0, 0);
+}
+
+}  // namespace
+}  // namespace collide::validation
+
+namespace collide::validation {
+namespace {
+
+// A backend that offers both precisions ("float|double", e.g. opencl) is validated in its
+// default, first-listed precision, so it gets the float tolerances; a pure double backend
+// keeps the rounding-level ones.
+TEST(DefaultTolerances, DualPrecisionBackendIsJudgedAsItsDefaultFloat) {
+    const Tolerances dual = default_tolerances("opencl", "float|double");
+    const Tolerances single = default_tolerances("cpu", "float");
+    const Tolerances twice = default_tolerances("step", "double");
+    EXPECT_EQ(dual.momentum_drift, single.momentum_drift);
+    EXPECT_LT(twice.momentum_drift, dual.momentum_drift);
 }
 
 }  // namespace
