@@ -106,6 +106,31 @@ public:
         }
     }
 
+    // Renumbering for memory locality (EventSolver::renumber). cell_order lists the disks cell
+    // by cell in the order of the cell index, each cell in the order of its list: order[k] is
+    // the disk that becomes number k.
+    template <typename Disks>
+    void cell_order(const Disks& disks, std::vector<std::uint32_t>& order) const {
+        order.clear();
+        for (std::uint32_t head : head_)
+            for (std::uint32_t j = head; j != none; j = disks[j].links.next) order.push_back(j);
+    }
+    // After the disks were renumbered in that order (their `cell` moved with them, the other
+    // links are stale): relinks every cell as the run of consecutive disks it now holds, in
+    // the same order as before, so that walking a cell visits the same disks in the same order.
+    template <typename Disks>
+    void relink_consecutive(Disks& disks, std::size_t n) {
+        std::fill(head_.begin(), head_.end(), none);
+        for (std::uint32_t i = 0; i < n; ++i) {
+            CellLinks& l = disks[i].links;
+            const bool first = i == 0 || disks[i - 1].links.cell != l.cell;
+            const bool last = i + 1 == n || disks[i + 1].links.cell != l.cell;
+            if (first) head_[l.cell] = i;
+            l.prev = first ? none : i - 1;
+            l.next = last ? none : i + 1;
+        }
+    }
+
 private:
     // Visits the disks of the cells with columns x0..x1 and rows y0..y1 (wrapped in a periodic
     // box, skipped outside a reflecting one).

@@ -19,8 +19,10 @@
 //
 // The order is exactly that of one heap over all entries: a bucket's index
 // floor((t - t0) / w) never decreases with t, so every entry in the front is earlier than every
-// entry in a later bucket, and inside the front ties are broken by particle index, so the order
-// of simultaneous events is deterministic.
+// entry in a later bucket, and inside the front ties are broken by a key per particle (its
+// index unless the caller gives keys), so the order of simultaneous events is deterministic.
+// The solver renumbers its particles now and then for memory locality and passes each
+// particle's original index as the key, so the renumbering does not change the order.
 #pragma once
 
 #include <algorithm>
@@ -33,8 +35,11 @@ namespace collide {
 
 class EventQueue {
 public:
-    void reset(std::size_t n) {
+    // Empties the queue for n particles with keys 0..n-1 (or keys[p], distinct, if given); every
+    // time is unset until update() sets it.
+    void reset(std::size_t n, const std::uint32_t* keys = nullptr) {
         node_.assign(n, Node{});
+        for (std::uint32_t p = 0; p < n; ++p) node_[p].key = keys ? keys[p] : p;
         heap_.clear();
         bucket_count_ = std::max<std::size_t>(16, n);
         head_.assign(bucket_count_ + 1, none);  // the last list is the overflow
@@ -79,12 +84,14 @@ private:
         std::size_t bucket = 0;        // front, a bucket number, or overflow()
         std::uint32_t index = none;    // position in the front heap (bucket == front)
         std::uint32_t next = none, prev = none;  // neighbours in the bucket's list
+        std::uint32_t key = 0;         // breaks ties between equal times
     };
     // The time is stored in the heap next to the particle, so that comparing two children
     // reads one cache line instead of two random places.
     struct Entry {
         double time;
         std::uint32_t particle;
+        std::uint32_t key;
     };
 
     std::size_t overflow() const { return bucket_count_; }
@@ -168,9 +175,9 @@ private:
         if (node.next != none) node_[node.next].prev = node.prev;
     }
 
-    // The front: a binary min-heap ordered by (time, particle).
+    // The front: a binary min-heap ordered by (time, key).
     static bool earlier(const Entry& a, const Entry& b) {
-        return a.time < b.time || (a.time == b.time && a.particle < b.particle);
+        return a.time < b.time || (a.time == b.time && a.key < b.key);
     }
     void place(std::size_t k, const Entry& e) {
         heap_[k] = e;
@@ -178,7 +185,7 @@ private:
     }
     void heap_push(std::uint32_t p) {
         node_[p].bucket = front;
-        heap_.push_back(Entry{node_[p].time, p});
+        heap_.push_back(Entry{node_[p].time, p, node_[p].key});
         sift_up(heap_.size() - 1);
     }
     void heap_remove(std::size_t k) {

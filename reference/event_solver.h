@@ -56,6 +56,8 @@ private:
     void validate_input(const ParticleState<double>& initial) const;
     void reject_overlaps() const;
     void process_event();
+    // Renumbers the disks cell by cell (see renumber_interval_ and docs/event-driven.md).
+    void renumber();
     void check_progress(std::uint32_t i);
 
     // Free flight of disk i from its own clock to `now_` (written back: the clock moves).
@@ -101,8 +103,17 @@ private:
     };
     static_assert(sizeof(Disk) == 64);
 
+    // Disks are numbered internally in cell order, not in the scene's order: every array below
+    // indexed by disk uses the internal number. original_[i] is disk i's index in the scene.
+    // renumber() restores the order every renumber_interval_ events, after the disks have
+    // diffused, so that disks near each other in space stay near each other in memory.
     Scene scene_;
     ParticleState<double> state_;      // masses and stone flags; positions only on load
+    std::vector<std::uint32_t> original_;
+    std::int64_t renumber_interval_ = 0;
+    std::int64_t events_since_renumber_ = 0;
+    std::vector<Disk> disks_scratch_;  // for renumber()
+    std::vector<std::uint32_t> order_;
     std::vector<Disk> disks_;
     std::vector<double> last_collision_;
     std::vector<Prediction> prediction_;
