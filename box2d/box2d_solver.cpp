@@ -2,6 +2,8 @@
 
 #include <box2d/box2d.h>
 
+#include "core/step_schedule.h"
+
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -132,10 +134,8 @@ void Box2dSolver::create_disks() {
 }
 
 void Box2dSolver::advance_to(double t) {
-    const std::int64_t target = scene_.steps_for(t);
     if (!world_) throw std::logic_error("box2d: advance_to() before load()");
-    if (target < step_count_)
-        throw std::invalid_argument("box2d: advance_to(" + std::to_string(t) + ") is in the past");
+    const std::int64_t target = target_step(scene_, t, step_count_, "box2d");
     while (step_count_ < target) step();
 }
 

@@ -94,8 +94,7 @@ void CpuSolver::load(const Scene& scene, const ParticleState<double>& initial) {
 }
 
 void CpuSolver::advance_to(double t) {
-    const std::int64_t target = scene_.steps_for(t);
-    if (target < step_count_) throw std::invalid_argument("cpu: advance_to(" + std::to_string(t) + ") is in the past");
+    const std::int64_t target = target_step(scene_, t, step_count_, "cpu");
     while (step_count_ < target) step();
 }
 

@@ -48,9 +48,7 @@ public:
     }
 
     void advance_to(double t) override {
-        const std::int64_t target = scene_.steps_for(t);
-        if (target < step_count_)
-            throw std::invalid_argument("opencl: advance_to(" + std::to_string(t) + ") is in the past");
+        const std::int64_t target = target_step(scene_, t, step_count_, "opencl");
         try {
             while (step_count_ < target) step();
         } catch (const cl::Error& e) {

@@ -42,9 +42,7 @@ void StepSolver::load(const Scene& scene, const ParticleState<double>& initial) 
 }
 
 void StepSolver::advance_to(double t) {
-    const std::int64_t target = scene_.steps_for(t);
-    if (target < step_count_)
-        throw std::invalid_argument("step: advance_to(" + std::to_string(t) + ") is in the past");
+    const std::int64_t target = target_step(scene_, t, step_count_, "step");
     while (step_count_ < target) step();
 }
 

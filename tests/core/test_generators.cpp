@@ -32,22 +32,6 @@ Scene scene_with(double width, double height, std::vector<ParticleGenerator> blo
     return s;
 }
 
-// Brute-force count of overlapping pairs, with minimum images in a periodic world.
-int overlapping_pairs(const Scene& scene, const ParticleState<double>& s) {
-    int count = 0;
-    for (std::size_t i = 0; i < s.size(); ++i)
-        for (std::size_t j = i + 1; j < s.size(); ++j) {
-            double dx = s.x[i] - s.x[j], dy = s.y[i] - s.y[j];
-            if (scene.periodic()) {
-                dx -= scene.world.width() * std::round(dx / scene.world.width());
-                dy -= scene.world.height() * std::round(dy / scene.world.height());
-            }
-            const double contact = (s.radius[i] + s.radius[j]) * (1 - 1e-12);
-            count += dx * dx + dy * dy < contact * contact;
-        }
-    return count;
-}
-
 TEST(GasGenerator, PlacesCountDisksInsideTheRegionWithoutOverlaps) {
     // 375 disks of radius 0.4 in a 30 x 30 region: phi = 375 pi 0.16 / 900 = 0.21.
     ParticleGenerator g = gas_block(375, 0.4, 1.0);
@@ -63,7 +47,7 @@ TEST(GasGenerator, PlacesCountDisksInsideTheRegionWithoutOverlaps) {
         EXPECT_EQ(s.mass[i], 1.0);
         EXPECT_EQ(s.inv_mass[i], 1.0);
     }
-    EXPECT_EQ(overlapping_pairs(scene, s), 0);
+    EXPECT_EQ(test::brute_force_overlapping_pairs(scene, s), 0);
 }
 
 TEST(GasGenerator, PeriodicGasUsesTheWholeBoxWithMinimumImages) {
@@ -77,7 +61,7 @@ TEST(GasGenerator, PeriodicGasUsesTheWholeBoxWithMinimumImages) {
         straddles = straddles || s.x[i] < 0.5 || s.x[i] > 59.5;
     }
     EXPECT_TRUE(straddles);
-    EXPECT_EQ(overlapping_pairs(scene, s), 0);
+    EXPECT_EQ(test::brute_force_overlapping_pairs(scene, s), 0);
 }
 
 TEST(GasGenerator, MaxwellGasHasItsTemperatureWithinTheStandardError) {
@@ -156,7 +140,7 @@ TEST(GasGenerator, BidisperseHasTheExactFractionAndDensityMasses) {
         EXPECT_DOUBLE_EQ(s.mass[i], 3.0 * pi * s.radius[i] * s.radius[i]);  // areal density
     }
     EXPECT_EQ(large, 300);  // round(0.3 * 1001)
-    EXPECT_EQ(overlapping_pairs(scene, s), 0);
+    EXPECT_EQ(test::brute_force_overlapping_pairs(scene, s), 0);
 }
 
 TEST(GasGenerator, AvoidsExplicitDisksAndEarlierBlocks) {
@@ -168,7 +152,7 @@ TEST(GasGenerator, AvoidsExplicitDisksAndEarlierBlocks) {
     ASSERT_EQ(s.size(), 501u);
     EXPECT_EQ(s.inv_mass[0], 0.0);  // a stone has inverse mass 0
     EXPECT_EQ(s.mass[0], 1.0);
-    EXPECT_EQ(overlapping_pairs(scene, s), 0);
+    EXPECT_EQ(test::brute_force_overlapping_pairs(scene, s), 0);
 }
 
 TEST(GasGenerator, MassFromDensityMustBeFiniteAndPositive) {

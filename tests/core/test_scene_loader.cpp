@@ -267,22 +267,6 @@ std::vector<std::string> library_scenes() {
     return files;
 }
 
-// Brute-force count of overlapping pairs (minimum image in a periodic world).
-int overlapping_pairs(const Scene& scene, const ParticleState<double>& s) {
-    int count = 0;
-    for (std::size_t i = 0; i < s.size(); ++i)
-        for (std::size_t j = i + 1; j < s.size(); ++j) {
-            double dx = s.x[i] - s.x[j], dy = s.y[i] - s.y[j];
-            if (scene.periodic()) {
-                dx -= scene.world.width() * std::round(dx / scene.world.width());
-                dy -= scene.world.height() * std::round(dy / scene.world.height());
-            }
-            const double contact = (s.radius[i] + s.radius[j]) * (1 - 1e-12);
-            count += dx * dx + dy * dy < contact * contact;
-        }
-    return count;
-}
-
 TEST(SceneLibrary, EveryScenLoadsAndGeneratesWithoutOverlaps) {
     const auto files = library_scenes();
     ASSERT_GE(files.size(), 5u);
@@ -295,7 +279,7 @@ TEST(SceneLibrary, EveryScenLoadsAndGeneratesWithoutOverlaps) {
         std::size_t expected = 0;
         for (const auto& g : scene.generators) expected += g.kind == "list" ? g.disks.size() : std::size_t(g.count);
         EXPECT_EQ(state.size(), expected);
-        EXPECT_EQ(overlapping_pairs(scene, state), 0);
+        EXPECT_EQ(test::brute_force_overlapping_pairs(scene, state), 0);
         const Metrics m = compute_metrics(scene, state, 0);
         EXPECT_EQ(m.nonfinite, 0);
         EXPECT_EQ(m.max_wall_penetration, 0.0);

@@ -47,6 +47,21 @@ ParticleState<double> random_gas(const Scene& scene, std::size_t n, double radiu
     return make_state(disks);
 }
 
+int brute_force_overlapping_pairs(const Scene& scene, const ParticleState<double>& s) {
+    int count = 0;
+    for (std::size_t i = 0; i < s.size(); ++i)
+        for (std::size_t j = i + 1; j < s.size(); ++j) {
+            double dx = s.x[i] - s.x[j], dy = s.y[i] - s.y[j];
+            if (scene.periodic()) {
+                dx -= scene.world.width() * std::round(dx / scene.world.width());
+                dy -= scene.world.height() * std::round(dy / scene.world.height());
+            }
+            const double contact = (s.radius[i] + s.radius[j]) * (1 - 1e-12);
+            count += dx * dx + dy * dy < contact * contact;
+        }
+    return count;
+}
+
 std::string scene_file(const std::string& relative) {
     return std::string(COLLIDE_SOURCE_DIR) + "/data/scenes/" + relative;
 }

@@ -26,6 +26,10 @@ ParticleState<double> make_state(const std::vector<DiskSpec>& disks);
 ParticleState<double> random_gas(const Scene& scene, std::size_t n, double radius, std::uint64_t seed,
                                  bool allow_overlap = false);
 
+// Number of overlapping pairs by brute force over all pairs (minimum image in a periodic
+// world). Pairs closer than (r_i + r_j)(1 - 1e-12) count: disks placed exactly touching do not.
+int brute_force_overlapping_pairs(const Scene& scene, const ParticleState<double>& s);
+
 // Absolute path of a file in the source tree's data/scenes/.
 std::string scene_file(const std::string& relative);
 
