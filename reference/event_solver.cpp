@@ -124,7 +124,12 @@ void EventSolver::load(const Scene& scene, const ParticleState<double>& initial)
     tc_ = tc_duration();
 
     queue_.reset(n);
-    for (std::uint32_t i = 0; i < n; ++i) predict(i);
+    // Stones never move and have no events of their own (the movers find their collisions
+    // with them): their queue time stays infinite.
+    for (std::uint32_t i = 0; i < n; ++i) {
+        if (state_.is_stone(i)) queue_.update(i, never);
+        else predict(i);
+    }
     kinetic_ = kinetic_energy_now();
 
     original_.resize(n);
@@ -281,8 +286,8 @@ void EventSolver::process_event() {
             return;
         }
         collide_pair(i, p.partner);
-        predict(i);
-        predict(p.partner);
+        predict(i);  // (the disk of an event is never a stone: stones have no events)
+        if (!state_.is_stone(p.partner)) predict(p.partner);
         return;
     case EventKind::wall:
         collide_wall(i, p.border);
@@ -327,7 +332,9 @@ void EventSolver::check_progress(std::uint32_t i) {
 void EventSolver::bring_to_now(std::uint32_t i) {
     const double dt = now_ - disks_[i].t;
     disks_[i].t = now_;
-    if (dt == 0 || state_.is_stone(i)) return;
+    // (A stone needs no exception: it has zero velocity and scenes with stones have no gravity,
+    // so the lines below leave it where it is.)
+    if (dt == 0) return;
     // Free flight under uniform gravity: x(t) = x + v dt + g dt^2 / 2, v(t) = v + g dt.
     disks_[i].x += (disks_[i].vx + 0.5 * gx_ * dt) * dt;
     disks_[i].y += (disks_[i].vy + 0.5 * gy_ * dt) * dt;
@@ -336,11 +343,6 @@ void EventSolver::bring_to_now(std::uint32_t i) {
 }
 
 void EventSolver::predict(std::uint32_t i) {
-    if (state_.is_stone(i)) {  // stones never move: their events are found by the movers
-        prediction_[i] = Prediction{};
-        queue_.update(i, never);
-        return;
-    }
     bring_to_now(i);
     Prediction p;
     earliest_pair(i, p, [&](auto&& visit) { cells_.for_each_neighbour(disks_, i, visit); });

@@ -72,7 +72,7 @@ private:
         vx = f.vx + gx_ * dt;
         vy = f.vy + gy_ * dt;
     }
-    // Re-predicts disk i's earliest event from `now_` and files it in the queue.
+    // Re-predicts disk i's earliest event from `now_` and files it in the queue (i is not a stone).
     void predict(std::uint32_t i);
     // The same after disk i crossed `border` into a new cell without changing course.
     void predict_after_crossing(std::uint32_t i, std::uint32_t border);

@@ -1,5 +1,8 @@
 // `collide bench [SUITE...] [--sizes ...] [--threads ...] [--out PREFIX]`
 #include <algorithm>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
 #include <cstdio>
 #include <memory>
 
@@ -29,6 +32,17 @@ void add_bench_command(CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("-o,--out", args->out, "Output prefix: PREFIX-SUITE.csv and .json")->capture_default_str();
     cmd->callback([args] {
+        // Every name and size is checked before anything runs: a typo in the last of several
+        // suites must not be found after the first ones have run for minutes.
+        std::string known;
+        for (const auto& suite : bench::all_bench_suites()) known += (known.empty() ? "" : ", ") + suite.name;
+        for (const auto& name : args->suites) {
+            const auto& all = bench::all_bench_suites();
+            if (std::none_of(all.begin(), all.end(), [&](const auto& s) { return s.name == name; }))
+                throw std::runtime_error("unknown benchmark suite '" + name + "' (known: " + known + ")");
+        }
+        for (std::int64_t n : args->bench.sizes)
+            if (n <= 0) throw std::runtime_error("--sizes " + std::to_string(n) + ": a particle count must be positive");
         bool ran = false;
         for (const auto& suite : bench::all_bench_suites()) {
             if (!args->suites.empty() &&

@@ -1,0 +1,101 @@
+// `collide bench` as a user runs it: the event-driven suite on small sizes writes a table whose
+// columns hang together (median within the windows' range, ratio 1 at the smallest N, every
+// timed collision counted), and bad arguments fail before anything runs.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "tests/support/program_runner.h"
+#include "tests/support/scratch_directory.h"
+
+namespace collide {
+namespace {
+
+using test::contains;
+using test::run_program;
+using test::ScratchDirectory;
+
+using CsvRow = std::map<std::string, std::string>;
+
+std::vector<std::string> split(const std::string& line) {
+    std::vector<std::string> fields;
+    std::stringstream s(line);
+    for (std::string field; std::getline(s, field, ',');) fields.push_back(field);
+    return fields;
+}
+
+std::vector<CsvRow> read_csv(const std::string& path) {
+    std::ifstream in(path);
+    std::string line;
+    std::vector<CsvRow> rows;
+    if (!std::getline(in, line)) return rows;
+    const std::vector<std::string> header = split(line);
+    while (std::getline(in, line)) {
+        const std::vector<std::string> fields = split(line);
+        CsvRow row;
+        for (std::size_t k = 0; k < header.size() && k < fields.size(); ++k) row[header[k]] = fields[k];
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+double number(const CsvRow& row, const std::string& column) {
+    auto it = row.find(column);
+    if (it == row.end()) {
+        ADD_FAILURE() << "missing column " << column;
+        return 0;
+    }
+    return std::stod(it->second);
+}
+
+TEST(BenchCommand, EventSuiteWritesAConsistentTablePerAreaFractionAndSize) {
+    ScratchDirectory dir;
+    const auto result = run_program(COLLIDE_EXECUTABLE, {"bench", "event", "--quick", "--sizes", "600", "300", "-o", dir.file("b")}, dir);
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    EXPECT_TRUE(contains(result.err, "melting")) << "progress is reported: " << result.err;
+    const std::vector<CsvRow> rows = read_csv(dir.file("b-event.csv"));
+    ASSERT_EQ(rows.size(), 6u) << "3 area fractions x 2 sizes";
+    for (const CsvRow& row : rows) {
+        const double n = number(row, "n"), ns = number(row, "ns_per_collision");
+        SCOPED_TRACE("n = " + row.at("n") + ", area fraction " + row.at("area_fraction"));
+        EXPECT_GE(number(row, "collisions"), 100000) << "--quick times at least 1e5 collisions";
+        EXPECT_GT(ns, 0);
+        EXPECT_LE(number(row, "ns_per_collision_min"), ns);
+        EXPECT_GE(number(row, "ns_per_collision_max"), ns);
+        EXPECT_NEAR(number(row, "collisions_per_second") * ns, 1e9, 1e9 * 1e-5);
+        EXPECT_GE(number(row, "events_per_collision"), 1.0) << "every collision is an event";
+        // Sizes are sorted: the ratio column is relative to the smallest N of the same area fraction.
+        if (n == 300) {
+            EXPECT_DOUBLE_EQ(number(row, "cost_vs_smallest_n"), 1.0);
+        }
+    }
+    std::ifstream json(dir.file("b-event.json"));
+    std::stringstream text;
+    text << json.rdbuf();
+    EXPECT_TRUE(contains(text.str(), "\"git_commit\"")) << "the JSON carries the build's provenance";
+}
+
+TEST(BenchCommand, UnknownSuiteFailsNamingItAndTheKnownOnesBeforeRunningAny) {
+    ScratchDirectory dir;
+    const auto result = run_program(COLLIDE_EXECUTABLE, {"bench", "event", "no_such_suite", "--quick", "-o", dir.file("b")}, dir);
+    EXPECT_NE(result.exit_code, 0);
+    EXPECT_TRUE(contains(result.err, "no_such_suite")) << result.err;
+    EXPECT_TRUE(contains(result.err, "event")) << "the message lists the suites: " << result.err;
+    EXPECT_EQ(dir.entry_count(), 0u) << "the valid suite named first did not run";
+}
+
+TEST(BenchCommand, NonPositiveSizeIsRejected) {
+    ScratchDirectory dir;
+    const auto result = run_program(COLLIDE_EXECUTABLE, {"bench", "event", "--sizes", "0", "-o", dir.file("b")}, dir);
+    EXPECT_NE(result.exit_code, 0);
+    EXPECT_TRUE(contains(result.err, "--sizes 0")) << result.err;
+    EXPECT_EQ(dir.entry_count(), 0u);
+}
+
+}  // namespace
+}  // namespace collide
