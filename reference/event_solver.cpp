@@ -80,6 +80,9 @@ void EventSolver::load(const Scene& scene, const ParticleState<double>& initial)
     disks_.resize(n);
     for (std::size_t i = 0; i < n; ++i)
         disks_[i] = Disk{state_.x[i], state_.y[i], state_.vx[i], state_.vy[i], 0.0, state_.radius[i], 0, CellLinks{}};
+    // The TC clocks are read only when a collision can be inelastic; in an elastic scene they
+    // are not written either (a random memory access per disk and collision saved).
+    inelastic_ = scene.physics.restitution < 1 || scene.physics.wall_restitution < 1;
     last_collision_.assign(n, -std::numeric_limits<double>::infinity());
     prediction_.assign(n, Prediction{});
     now_ = progress_mark_ = kinetic_mark_ = 0;
@@ -477,7 +480,7 @@ void EventSolver::collide_pair(std::uint32_t i, std::uint32_t j) {
     }
     ++disks_[i].count;
     ++disks_[j].count;
-    last_collision_[i] = last_collision_[j] = now_;
+    if (inelastic_) last_collision_[i] = last_collision_[j] = now_;
     ++pair_events_;
 }
 
@@ -503,7 +506,7 @@ void EventSolver::collide_wall(std::uint32_t i, std::uint32_t wall) {
     }
     v = -e * v;
     ++disks_[i].count;
-    last_collision_[i] = now_;
+    if (inelastic_) last_collision_[i] = now_;
 }
 
 void EventSolver::cross_cell(std::uint32_t i, std::uint32_t border) {

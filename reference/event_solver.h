@@ -115,7 +115,8 @@ private:
     std::vector<Disk> disks_scratch_;  // for renumber()
     std::vector<std::uint32_t> order_;
     std::vector<Disk> disks_;
-    std::vector<double> last_collision_;
+    std::vector<double> last_collision_;  // TC model: each disk's last collision (kept if inelastic_)
+    bool inelastic_ = false;               // pair or wall restitution below 1
     std::vector<Prediction> prediction_;
     CellList cells_;
     EventQueue queue_;
