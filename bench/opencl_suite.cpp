@@ -3,47 +3,17 @@
 // and the time of each phase: host grid build, upload, read-back, device grid, kernels.
 // The `cpu` backend, when compiled in, runs the same scenes for comparison.
 //
-// Scene: a gas of equal disks (r = 0.5) on a jittered square lattice of spacing 1.6
-// (area fraction pi 0.25 / 2.56 = 0.31) in a reflecting square box, speeds in [-1, 1]^2,
-// collide-first rule, dt = 0.01 (a disk moves at most 1/50 of its diameter per step).
+// Scene: the benchmark gas of gas_scene.h at area fraction 0.3, the same as the `throughput`
+// suite's, so that the two suites' figures compare directly.
 #include <algorithm>
 #include <cmath>
-#include <random>
 
 #include "bench_suite.h"
+#include "gas_scene.h"
 #include "core/backend_registry.h"
 
 namespace collide::bench {
 namespace {
-
-constexpr double disk_radius = 0.5, lattice_spacing = 1.6;
-
-Scene gas_scene(std::int64_t n) {
-    const double side = lattice_spacing * std::ceil(std::sqrt(double(n)));
-    Scene scene;
-    scene.name = "bench_gas_" + std::to_string(n);
-    scene.world = World{0, 0, side, side, Boundary::reflect};
-    scene.run.dt = 0.01;
-    return scene;
-}
-
-ParticleState<double> gas_state(const Scene& scene, std::int64_t n) {
-    const auto columns = std::int64_t(std::ceil(std::sqrt(double(n))));
-    std::mt19937_64 rng{static_cast<std::uint64_t>(n)};
-    std::uniform_real_distribution<double> jitter(-0.2, 0.2), velocity(-1.0, 1.0);
-    ParticleState<double> s;
-    s.resize(std::size_t(n));
-    for (std::int64_t i = 0; i < n; ++i) {
-        s.x[i] = scene.world.xmin + lattice_spacing * (double(i % columns) + 0.5) + jitter(rng);
-        s.y[i] = scene.world.ymin + lattice_spacing * (double(i / columns) + 0.5) + jitter(rng);
-        s.vx[i] = velocity(rng);
-        s.vy[i] = velocity(rng);
-        s.radius[i] = disk_radius;
-        s.mass[i] = 1;
-        s.inv_mass[i] = 1;
-    }
-    return s;
-}
 
 const BackendInfo* registered(const std::string& name) {
     for (const auto& b : all_backends())
@@ -63,8 +33,9 @@ double phase(const SolverStats& s, const char* name) {
 // Runs one case and adds its row; returns the seconds per step.
 double measure(const BackendInfo& backend, const BackendOptions& options, const std::string& grid, std::int64_t n,
                const BenchArgs& args, BenchReport& report) {
-    const Scene scene = gas_scene(n);
-    const ParticleState<double> initial = gas_state(scene, n);
+    const GasCase gas = gas_case(n);
+    const Scene& scene = gas.scene;
+    const ParticleState<double>& initial = gas.initial;
     auto solver = backend.create(options);
     solver->load(scene, initial);
     // Warm-up: the first steps pay for lazy allocation and first-touch of the buffers.
