@@ -4,6 +4,9 @@
 //   crash              the process died or the solver threw (runner status crashed / error)
 //   hang               killed after the suite's time limit (runner status timed_out)
 //   nan                a position or velocity became NaN or Inf
+//   stalled            the disks barely moved where the reference moved them: the median
+//                      displacement from start to end is below 1/10 of the reference's
+//                      (e.g. float coordinates so large that a step's motion rounds away)
 //   tunnelling         a pair passed through each other where the reference has them apart
 //                      (tunnelling.h; few-body scenes in reflecting boxes)
 //   excessive_overlap  the largest relative overlap depth exceeded the backend's max_overlap
@@ -23,7 +26,7 @@
 
 namespace collide::validation {
 
-enum class Outcome { stable, crash, hang, nan, tunnelling, excessive_overlap, energy_growth, left_out };
+enum class Outcome { stable, crash, hang, nan, stalled, tunnelling, excessive_overlap, energy_growth, left_out };
 const char* to_string(Outcome o);
 
 struct Classification {
@@ -35,6 +38,10 @@ struct Classification {
 // when there is none; tunnelling is then not evaluated).
 Classification classify(const CaseResult& result, const CaseResult* reference, const SceneFeatures& features,
                         const Tolerances& tolerances);
+
+// Median over the disks of the distance between their initial and final positions (a disk
+// that wrapped around a periodic box counts as having moved across it). 0 without disks.
+double median_displacement(const CaseResult& result);
 
 // Largest rise of energy above its initial value divided by K(0) (by max K if K(0) = 0);
 // `total` selects kinetic + potential. 0 when it never rises.

@@ -107,5 +107,39 @@ TEST(Stability, LeftOutCasesAreNotClassifiedAsFailures) {
     EXPECT_EQ(classify(r, nullptr, walls(), Tolerances{}).outcome, Outcome::left_out);
 }
 
+// Three disks of radius 0.5 that start at x = 0, 10, 20 and end shifted by `moved` along x.
+CaseResult moved_by(double moved) {
+    CaseResult r;
+    r.initial = Snapshot{{0.0, 10.0, 20.0}, {1.0, 1.0, 1.0}, {1, 1, 1}, {0, 0, 0}, {0.5, 0.5, 0.5}};
+    r.final_state = r.initial;
+    for (double& x : r.final_state.x) x += moved;
+    r.series.time = {0.0, 1.0};
+    r.series.kinetic_energy = r.series.total_energy = {1.0, 1.0};
+    r.series.max_overlap = r.series.nonfinite = {0.0, 0.0};
+    return r;
+}
+
+TEST(Stability, StalledWhenTheDisksBarelyMoveWhereTheReferenceMovesThem) {
+    Tolerances tol;
+    tol.max_overlap = 0.2;
+    tol.energy_drift = 0.02;
+    const CaseResult reference = moved_by(1.0);
+    EXPECT_DOUBLE_EQ(median_displacement(reference), 1.0);
+    const Classification frozen = classify(moved_by(0.0), &reference, walls(), tol);
+    EXPECT_EQ(frozen.outcome, Outcome::stalled);
+    EXPECT_NE(frozen.reason.find("median displacement 0"), std::string::npos) << frozen.reason;
+    // A tenth of the reference's motion is the limit: below it stalled, above it not.
+    EXPECT_EQ(classify(moved_by(0.09), &reference, walls(), tol).outcome, Outcome::stalled);
+    EXPECT_EQ(classify(moved_by(0.11), &reference, walls(), tol).outcome, Outcome::stable);
+    // Nothing to judge when the reference itself stays put (a packing at rest) or is missing.
+    const CaseResult at_rest = moved_by(0.0);
+    EXPECT_EQ(classify(moved_by(0.0), &at_rest, walls(), tol).outcome, Outcome::stable);
+    EXPECT_EQ(classify(moved_by(0.0), nullptr, walls(), tol).outcome, Outcome::stable);
+    // NaN is more severe than a stall.
+    CaseResult broken = moved_by(0.0);
+    broken.series.nonfinite[1] = 1;
+    EXPECT_EQ(classify(broken, &reference, walls(), tol).outcome, Outcome::nan);
+}
+
 }  // namespace
 }  // namespace collide::validation

@@ -17,8 +17,9 @@ from matplotlib.patches import Patch  # noqa: E402
 import figures  # noqa: E402
 
 # Most severe first (the classification's precedence); one fixed colour each.
-OUTCOMES = ["crash", "hang", "nan", "tunnelling", "excessive_overlap", "energy_growth", "stable", "left_out"]
-OUTCOME_COLOURS = {"crash": "#000000", "hang": "#8c564b", "nan": "#d62728", "tunnelling": "#9467bd",
+OUTCOMES = ["crash", "hang", "nan", "stalled", "tunnelling", "excessive_overlap", "energy_growth", "stable", "left_out"]
+OUTCOME_COLOURS = {"crash": "#000000", "hang": "#8c564b", "nan": "#d62728", "stalled": "#1f77b4",
+                   "tunnelling": "#9467bd",
                    "excessive_overlap": "#ff7f0e", "energy_growth": "#e6c200", "stable": "#2ca02c",
                    "left_out": "#d9d9d9"}
 
@@ -129,7 +130,8 @@ def section(summary, image):
         return ""
     parts = ["<h2>Stability</h2>",
              "<p>Every case is classified by its first failure mode, most severe first: crash (died or threw), "
-             "hang (time limit), nan, tunnelling (a pair passed through each other where the exact reference "
+             "hang (time limit), nan, stalled (the median disk moved less than a tenth as far as in the exact "
+             "reference: motion lost, e.g. to float rounding), tunnelling (a pair passed through each other where the exact reference "
              "has them apart), excessive_overlap (largest relative overlap above the backend's max_overlap "
              "tolerance), energy_growth (energy rose above its start by more than the backend's energy_drift "
              "tolerance times K(0), where physics lets it only fall), else stable. Definitions: "
