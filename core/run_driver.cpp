@@ -20,9 +20,11 @@ std::vector<double> output_times(const Scene& scene) {
 
 namespace {
 
-// "step: 3 disk(s) with NaN/Inf state at t = 0.5 (first: disk 17, x = (...), v = (...))"
+// "step: 3 disk(s) with NaN/Inf state at t = 0.5 (first: disk 17, x = (...), v = (...)); every
+// disk was finite at t = 0.4: the state broke in between (a smaller [run] output_interval
+// narrows it down)"
 std::string describe_nonfinite(const std::string& solver_name, const ParticleState<double>& state,
-                               std::int64_t count, double t) {
+                               std::int64_t count, double t, double last_finite_t) {
     std::ostringstream msg;
     msg << solver_name << ": " << count << " disk(s) with NaN/Inf state at t = " << t;
     for (std::size_t i = 0; i < state.size(); ++i) {
@@ -33,6 +35,8 @@ std::string describe_nonfinite(const std::string& solver_name, const ParticleSta
             << state.vx[i] << ", " << state.vy[i] << "))";
         break;
     }
+    msg << "; every disk was finite at t = " << last_finite_t
+        << ": the state broke in between (a smaller [run] output_interval narrows it down)";
     return msg.str();
 }
 
@@ -44,6 +48,7 @@ RunResult run_scene(const Scene& scene, Solver& solver, const ParticleState<doub
     solver.load(scene, initial);
     if (options.writer) options.writer->write_particles(initial);
     ParticleState<double> state;
+    double last_finite_t = 0;  // the initial state is checked by the scene loader and the solver
     for (double t : output_times(scene)) {
         const auto start = std::chrono::steady_clock::now();
         solver.advance_to(t);
@@ -55,7 +60,8 @@ RunResult run_scene(const Scene& scene, Solver& solver, const ParticleState<doub
         if (options.on_state) options.on_state(state, m);
         if (options.on_output) options.on_output(t, scene.run.duration);
         if (options.stop_on_nonfinite && m.nonfinite > 0)
-            throw std::runtime_error(describe_nonfinite(solver.name(), state, m.nonfinite, t));
+            throw std::runtime_error(describe_nonfinite(solver.name(), state, m.nonfinite, t, last_finite_t));
+        if (m.nonfinite == 0) last_finite_t = t;
     }
     result.final_state = std::move(state);
     result.stats = solver.stats();
