@@ -1,7 +1,9 @@
 // Benchmark suite `opencl`: throughput of the OpenCL backend in particle-steps per second for
 // N = 10^3 .. 10^6, with the grid built on the host (seed 000's design) and on the device,
-// and the time of each phase: host grid build, upload, read-back, device grid, kernels.
-// The `cpu` backend, when compiled in, runs the same scenes for comparison.
+// each with the disks moved into cell order at the default interval and never
+// (sort_interval 0), and the time of each phase: host grid build, upload, read-back, device
+// grid, reorder, kernels. The `cpu` backend, when compiled in, runs the same scenes for
+// comparison.
 //
 // Scene: the benchmark gas of gas_scene.h at area fraction 0.3, the same as the `throughput`
 // suite's, so that the two suites' figures compare directly.
@@ -30,6 +32,15 @@ double phase(const SolverStats& s, const char* name) {
     return it == s.phase_seconds.end() ? 0.0 : it->second;
 }
 
+// The reorder interval the solver runs with, from the provenance of the two backends this
+// suite runs ("-" if it names none).
+std::string sort_interval_of(const Solver& solver) {
+    const auto provenance = solver.provenance();
+    for (const char* key : {"sort_interval", "cpu.sort_interval"})
+        if (const auto it = provenance.find(key); it != provenance.end()) return it->second;
+    return "-";
+}
+
 // Runs one case and adds its row; returns the seconds per step.
 double measure(const BackendInfo& backend, const BackendOptions& options, const std::string& grid, std::int64_t n,
                const BenchArgs& args, BenchReport& report) {
@@ -50,6 +61,7 @@ double measure(const BackendInfo& backend, const BackendOptions& options, const 
     auto per_step_ms = [&](const char* name) { return 1e3 * (phase(after, name) - phase(before, name)) / steps; };
     report.add({{"backend", backend.name},
                 {"grid", grid},
+                {"sort_interval", sort_interval_of(*solver)},
                 {"N", n},
                 {"steps", std::int64_t(steps)},
                 {"particle_steps_per_s", double(n) * steps / seconds},
@@ -58,6 +70,7 @@ double measure(const BackendInfo& backend, const BackendOptions& options, const 
                 {"upload_ms", per_step_ms("upload")},
                 {"readback_ms", per_step_ms("read-back")},
                 {"device_grid_ms", per_step_ms("grid (device)")},
+                {"reorder_ms", per_step_ms("reorder")},
                 {"kernels_ms", per_step_ms("kernels")}});
     return seconds / steps;
 }
@@ -74,15 +87,17 @@ void run_suite(const BenchArgs& args, BenchReport& report) {
     }
     bool stopped = false;
     for (std::int64_t n : sizes) {
-        for (const char* grid : {"host", "device"}) {
-            if (stopped || !wanted(args, "opencl")) break;
-            BackendOptions options;
-            options.extra["grid"] = grid;
-            if (measure(*opencl, options, grid, n, args, report) > args.max_seconds_per_case) {
-                report.note("opencl stopped after N = " + std::to_string(n) + ": one step exceeded --max-seconds");
-                stopped = true;
+        for (const char* grid : {"host", "device"})
+            for (const bool reorder : {true, false}) {
+                if (stopped || !wanted(args, "opencl")) break;
+                BackendOptions options;
+                options.extra["grid"] = grid;
+                if (!reorder) options.extra.emplace("sort_interval", "0");  // else the backend's default
+                if (measure(*opencl, options, grid, n, args, report) > args.max_seconds_per_case) {
+                    report.note("opencl stopped after N = " + std::to_string(n) + ": one step exceeded --max-seconds");
+                    stopped = true;
+                }
             }
-        }
         if (cpu && wanted(args, "cpu"))
             for (int threads : args.threads.empty() ? std::vector<int>{0} : args.threads) {
                 BackendOptions options;

@@ -13,6 +13,7 @@ DeviceGrid::DeviceGrid(ClSession& session, std::int64_t n, std::int64_t cells)
     add_offsets_ = cl::Kernel(session.program, "add_block_offsets");
     scatter_ = cl::Kernel(session.program, "grid_scatter");
     sort_cells_ = cl::Kernel(session.program, "grid_sort_cells");
+    sort_cells_by_scene_index_ = cl::Kernel(session.program, "grid_sort_cells_by_scene_index");
     // The scan's work-group: 256 items, or what the device and the compiled kernel allow.
     const std::size_t kernel_max = scan_.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(session.device.device);
     block_ = std::min<std::size_t>(256, kernel_max);
@@ -47,7 +48,7 @@ void DeviceGrid::exclusive_scan(const cl::Buffer& values, std::uint32_t count, s
 }
 
 void DeviceGrid::build(const cl::Buffer& particles, const void* params, std::size_t params_size,
-                       const cl::Buffer& cell_start, const cl::Buffer& sorted_index) {
+                       const cl::Buffer& cell_start, const cl::Buffer& sorted_index, const cl::Buffer* scene_index) {
     cl::CommandQueue& q = session_.queue;
     const std::size_t n = std::size_t(n_), cells = std::size_t(cells_);
     if (n == 0) return;
@@ -66,10 +67,19 @@ void DeviceGrid::build(const cl::Buffer& particles, const void* params, std::siz
     scatter_.setArg(3, sorted_index);
     scatter_.setArg(4, cl_int(n));
     q.enqueueNDRangeKernel(scatter_, cl::NullRange, cl::NDRange(n));
-    sort_cells_.setArg(0, cell_start);
-    sort_cells_.setArg(1, sorted_index);
-    sort_cells_.setArg(2, cl_int(cells));
-    q.enqueueNDRangeKernel(sort_cells_, cl::NullRange, cl::NDRange(cells));
+    sort_cells(cell_start, sorted_index, scene_index);
+}
+
+// The atomics of grid_count ranked each cell's disks in timing-dependent order; sorting each
+// cell by scene index makes the order deterministic and the same as the host grid's.
+void DeviceGrid::sort_cells(const cl::Buffer& cell_start, const cl::Buffer& sorted_index, const cl::Buffer* scene_index) {
+    cl::Kernel& kernel = scene_index ? sort_cells_by_scene_index_ : sort_cells_;
+    cl_uint arg = 0;
+    kernel.setArg(arg++, cell_start);
+    kernel.setArg(arg++, sorted_index);
+    if (scene_index) kernel.setArg(arg++, *scene_index);
+    kernel.setArg(arg++, cl_int(cells_));
+    session_.queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(std::size_t(cells_)));
 }
 
 }  // namespace collide::opencl

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <climits>
 #include <numeric>
 #include <stdexcept>
 
@@ -26,6 +27,28 @@ std::string default_grid_mode(const DeviceEntry& device, std::size_t n) {
     constexpr std::size_t cpu_device_grid_from = 50'000;
     if (device.type == "CPU" && n < cpu_device_grid_from) return "host";
     return "device";
+}
+
+// Move the disks into cell order at every grid build (docs/opencl-backend.md measures 0, 1
+// and larger intervals).
+constexpr int default_sort_interval = 1;
+
+// The option sort_interval: an integer >= 0, 0 = never reorder.
+int parse_sort_interval(const std::map<std::string, std::string>& extra) {
+    const auto it = extra.find("sort_interval");
+    if (it == extra.end()) return default_sort_interval;
+    const std::string& text = it->second;
+    std::size_t used = 0;
+    long k = -1;
+    try {
+        k = std::stol(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used != text.size() || k < 0 || k > INT_MAX)
+        throw std::invalid_argument("opencl: option sort_interval = '" + text +
+                                    "': expected an integer >= 0 (0: never reorder)");
+    return int(k);
 }
 
 template <typename Real>
@@ -56,22 +79,29 @@ public:
         }
     }
 
+    // In the scene's order: slot k holds scene disk scene_index[k] (k itself until a reorder).
     void read_state(ParticleState<double>& out) const override {
         std::vector<Particle> host(n_);
+        std::vector<cl_uint> scene_index(n_);
         try {
-            if (n_ > 0) session_.queue.enqueueReadBuffer(particles_[current_], CL_TRUE, 0, sizeof(Particle) * n_, host.data());
+            if (n_ > 0) {
+                session_.queue.enqueueReadBuffer(particles_[current_], CL_TRUE, 0, sizeof(Particle) * n_, host.data());
+                session_.queue.enqueueReadBuffer(scene_index_[current_order_], CL_TRUE, 0, sizeof(cl_uint) * n_,
+                                                 scene_index.data());
+            }
         } catch (const cl::Error& e) {
             throw_cl_error(e, "reading the state back");
         }
         out.resize(n_);
-        for (std::size_t i = 0; i < n_; ++i) {
-            out.x[i] = host[i].x;
-            out.y[i] = host[i].y;
-            out.vx[i] = host[i].vx;
-            out.vy[i] = host[i].vy;
-            out.radius[i] = host[i].radius;
-            out.mass[i] = host[i].mass;
-            out.inv_mass[i] = host[i].inv_mass;
+        for (std::size_t k = 0; k < n_; ++k) {
+            const std::size_t i = scene_index[k];
+            out.x[i] = host[k].x;
+            out.y[i] = host[k].y;
+            out.vx[i] = host[k].vx;
+            out.vy[i] = host[k].vy;
+            out.radius[i] = host[k].radius;
+            out.mass[i] = host[k].mass;
+            out.inv_mass[i] = host[k].inv_mass;
         }
     }
 
@@ -88,7 +118,7 @@ public:
         return {{"opencl_platform", d.platform_name}, {"opencl_device", d.device_name},
                 {"opencl_device_version", d.device_version}, {"opencl_driver", d.driver_version},
                 {"opencl_build_options", session_.build_options}, {"grid", grid_mode_},
-                {"real", sizeof(Real) == 8 ? "double" : "float"}};
+                {"sort_interval", std::to_string(sort_interval_)}, {"real", sizeof(Real) == 8 ? "double" : "float"}};
     }
 
 private:
@@ -97,7 +127,9 @@ private:
         options_ = requested_;
         merge_scene_options(scene);
         n_ = initial.size();
+        if (n_ >= std::size_t(UINT32_MAX)) throw std::invalid_argument("opencl: at most 2^32 - 1 disks (32-bit indices)");
         step_count_ = 0;
+        grid_builds_ = 0;
         stats_ = SolverStats{};
         const bool real_double = sizeof(Real) == 8;
         const DeviceEntry device = select_device(options_.device);
@@ -109,6 +141,7 @@ private:
         grid_mode_ = options_.extra.count("grid") ? options_.extra.at("grid") : default_grid_mode(session_.device, n_);
         if (grid_mode_ != "host" && grid_mode_ != "device")
             throw std::invalid_argument("opencl: option grid = '" + grid_mode_ + "': expected \"host\" or \"device\"");
+        sort_interval_ = parse_sort_interval(options_.extra);
 
         const double r_max = n_ ? *std::max_element(initial.radius.begin(), initial.radius.end()) : 1.0;
         host_grid_.configure(scene.world, 2 * r_max);
@@ -124,9 +157,9 @@ private:
         const auto table = scene.backend_options.find("opencl");
         if (table == scene.backend_options.end()) return;
         for (const auto& [key, value] : table->second) {
-            if (key != "grid" && key != "local_size")
+            if (key != "grid" && key != "local_size" && key != "sort_interval")
                 throw std::invalid_argument("opencl: scene '" + scene.name + "', [backend.opencl]: unknown key '" + key +
-                                            "' (expected grid or local_size)");
+                                            "' (expected grid, local_size or sort_interval)");
             options_.extra.emplace(key, value);  // does not replace an explicit option
         }
     }
@@ -153,7 +186,7 @@ private:
         const std::uint64_t cells = std::uint64_t(host_grid_.cell_count());
         const std::uint64_t n = std::max<std::uint64_t>(n_, 1);
         const std::uint64_t particle_bytes = sizeof(Particle) * n;
-        const std::uint64_t total = 2 * particle_bytes + sizeof(cl_uint) * (cells + 1 + 2 * n) +
+        const std::uint64_t total = 2 * particle_bytes + sizeof(cl_uint) * (cells + 1 + 4 * n) +
                                     (grid_mode_ == "device" ? DeviceGrid::work_bytes(n_, host_grid_.cell_count()) : 0);
         const DeviceEntry& d = session_.device;
         constexpr double mib = 1024.0 * 1024.0;
@@ -163,6 +196,7 @@ private:
                                      d.device_name + "' has " + std::to_string(d.global_memory / mib) +
                                      " MiB (largest buffer " + std::to_string(d.max_allocation / mib) + " MiB)");
         for (auto& b : particles_) b = cl::Buffer(session_.context, CL_MEM_READ_WRITE, particle_bytes);
+        for (auto& b : scene_index_) b = cl::Buffer(session_.context, CL_MEM_READ_WRITE, sizeof(cl_uint) * n);
         cell_start_ = cl::Buffer(session_.context, CL_MEM_READ_WRITE, sizeof(cl_uint) * (cells + 1));
         sorted_index_ = cl::Buffer(session_.context, CL_MEM_READ_WRITE, sizeof(cl_uint) * n);
         contact_count_ = cl::Buffer(session_.context, CL_MEM_READ_WRITE, sizeof(cl_uint) * n);
@@ -171,6 +205,7 @@ private:
         if (grid_mode_ == "device") device_grid_ = std::make_unique<DeviceGrid>(session_, std::int64_t(n_), host_grid_.cell_count());
         integrate_ = cl::Kernel(session_.program, "integrate_motion");
         resolve_ = cl::Kernel(session_.program, "resolve_collisions");
+        gather_ = cl::Kernel(session_.program, "gather_cell_order");
     }
 
     void upload(const ParticleState<double>& s) {
@@ -186,8 +221,13 @@ private:
             p.mass = Real(s.mass[i]);
         }
         current_ = 0;
-        if (n_ > 0)
+        current_order_ = 0;
+        host_scene_index_.resize(n_);
+        std::iota(host_scene_index_.begin(), host_scene_index_.end(), cl_uint(0));
+        if (n_ > 0) {
             session_.queue.enqueueWriteBuffer(particles_[0], CL_TRUE, 0, sizeof(Particle) * n_, host_particles_.data());
+            session_.queue.enqueueWriteBuffer(scene_index_[0], CL_TRUE, 0, sizeof(cl_uint) * n_, host_scene_index_.data());
+        }
     }
 
     // A user-chosen work-group size must fit the device and the compiled kernels.
@@ -201,8 +241,9 @@ private:
         } catch (const std::exception&) {
         }
         const cl::Device& dev = session_.device.device;
-        const std::size_t limit = std::min(resolve_.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(dev),
-                                           integrate_.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(dev));
+        const std::size_t limit = std::min({resolve_.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(dev),
+                                            integrate_.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(dev),
+                                            gather_.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(dev)});
         if (size == 0 || size > limit)
             throw std::invalid_argument("opencl: invalid work-group size local_size = '" + text + "' for device '" +
                                         session_.device.device_name + "': expected 1.." + std::to_string(limit));
@@ -234,15 +275,31 @@ private:
         ++stats_.steps;
     }
 
+    // The grid of this build, then, every sort_interval-th build, the disks moved into its order.
     void build_grid() {
-        if (grid_mode_ == "device") {
-            const auto start = std::chrono::steady_clock::now();
-            device_grid_->build(particles_[current_], &params_, sizeof(params_), cell_start_, sorted_index_);
-            session_.queue.finish();
-            stats_.phase_seconds["grid (device)"] += seconds_since(start);
-            return;
-        }
-        // Seed 000's design: read the positions back, counting-sort on the host, upload.
+        if (grid_mode_ == "device") build_grid_on_device();
+        else build_grid_on_host();
+        const bool reorder = sort_interval_ > 0 && grid_builds_ % sort_interval_ == 0;
+        ++grid_builds_;
+        if (reorder) gather_cell_order();
+    }
+
+    // When the disks may leave the scene's order, each cell's slots are sorted by scene index,
+    // so that neighbours are visited in the order of `step` whether or not the disks moved:
+    // reordering changes where a disk lives in memory, never a result. Without reordering the
+    // slot is the scene index and the plain sort of seed 000's grid does.
+    bool cells_sorted_by_scene_index() const { return sort_interval_ > 0; }
+
+    void build_grid_on_device() {
+        const auto start = std::chrono::steady_clock::now();
+        const cl::Buffer* scene_index = cells_sorted_by_scene_index() ? &scene_index_[current_order_] : nullptr;
+        device_grid_->build(particles_[current_], &params_, sizeof(params_), cell_start_, sorted_index_, scene_index);
+        session_.queue.finish();
+        stats_.phase_seconds["grid (device)"] += seconds_since(start);
+    }
+
+    // Seed 000's design: read the positions back, counting-sort on the host, upload.
+    void build_grid_on_host() {
         auto start = std::chrono::steady_clock::now();
         session_.queue.enqueueReadBuffer(particles_[current_], CL_TRUE, 0, sizeof(Particle) * n_, host_particles_.data());
         stats_.phase_seconds["read-back"] += seconds_since(start);
@@ -254,13 +311,65 @@ private:
             ys_[i] = host_particles_[i].y;
         }
         host_grid_.build(xs_.data(), ys_.data(), n_);
+        const std::vector<std::uint32_t>* slots = &host_grid_.sorted_index();
+        if (cells_sorted_by_scene_index()) {
+            sort_cells_by_scene_index();
+            slots = &host_sorted_index_;
+        }
         stats_.phase_seconds["grid (host)"] += seconds_since(start);
         start = std::chrono::steady_clock::now();
         const auto& cs = host_grid_.cell_start();
         session_.queue.enqueueWriteBuffer(cell_start_, CL_FALSE, 0, sizeof(cl_uint) * cs.size(), cs.data());
-        session_.queue.enqueueWriteBuffer(sorted_index_, CL_FALSE, 0, sizeof(cl_uint) * n_, host_grid_.sorted_index().data());
+        session_.queue.enqueueWriteBuffer(sorted_index_, CL_FALSE, 0, sizeof(cl_uint) * n_, slots->data());
         session_.queue.finish();
         stats_.phase_seconds["upload"] += seconds_since(start);
+    }
+
+    // The host grid's cells list their slots in increasing slot order; the order wanted is
+    // increasing scene index (grid_sort_cells_by_scene_index in kernels/grid.cl, on the host).
+    void sort_cells_by_scene_index() {
+        host_sorted_index_ = host_grid_.sorted_index();
+        std::uint32_t* slots = host_sorted_index_.data();
+        const cl_uint* scene_index = host_scene_index_.data();
+        const auto& cell_start = host_grid_.cell_start();
+        for (std::size_t c = 0; c + 1 < cell_start.size(); ++c) {
+            const std::uint32_t begin = cell_start[c], end = cell_start[c + 1];
+            for (std::uint32_t k = begin + 1; k < end; ++k) {  // insertion sort: a cell holds a few disks
+                const std::uint32_t slot = slots[k];
+                std::uint32_t m = k;
+                for (; m > begin && scene_index[slots[m - 1]] > scene_index[slot]; --m) slots[m] = slots[m - 1];
+                slots[m] = slot;
+            }
+        }
+    }
+
+    // Moves the particles and their scene indices into the grid's slot order (into the spare
+    // ping-pong buffers), and makes sorted_index the identity so that the grid describes them.
+    void gather_cell_order() {
+        const auto start = std::chrono::steady_clock::now();
+        gather_.setArg(0, particles_[current_]);
+        gather_.setArg(1, particles_[1 - current_]);
+        gather_.setArg(2, scene_index_[current_order_]);
+        gather_.setArg(3, scene_index_[1 - current_order_]);
+        gather_.setArg(4, sorted_index_);
+        gather_.setArg(5, cl_int(n_));
+        session_.queue.enqueueNDRangeKernel(gather_, cl::NullRange, global_range(), local_);
+        session_.queue.finish();
+        current_ = 1 - current_;
+        current_order_ = 1 - current_order_;
+        stats_.phase_seconds["reorder"] += seconds_since(start);
+        if (grid_mode_ == "host") follow_reorder_on_host();
+    }
+
+    // The host build sorts cells by scene index, so it keeps its own copy of the slots' scene
+    // indices, moved as the kernel moved the device's.
+    void follow_reorder_on_host() {
+        const auto start = std::chrono::steady_clock::now();
+        const std::vector<std::uint32_t>& from = host_sorted_index_;
+        reordered_scene_index_.resize(n_);
+        for (std::size_t k = 0; k < n_; ++k) reordered_scene_index_[k] = host_scene_index_[from[k]];
+        host_scene_index_.swap(reordered_scene_index_);
+        stats_.phase_seconds["reorder"] += seconds_since(start);
     }
 
     void run_kernel_integrate() {
@@ -295,15 +404,21 @@ private:
     SolverStats stats_;
     ClSession session_;
     std::string grid_mode_;
+    int sort_interval_ = default_sort_interval;
+    std::int64_t grid_builds_ = 0;
     StepParams params_{};
     UniformGrid<Real> host_grid_;
     std::vector<Particle> host_particles_;
     std::vector<Real> xs_, ys_;
-    cl::Buffer particles_[2];  // ping-pong: the pass reads one and writes the other
+    std::vector<std::uint32_t> host_sorted_index_;                     // host grid, cells sorted by scene index
+    std::vector<cl_uint> host_scene_index_, reordered_scene_index_;    // host grid: the slots' scene indices
+    cl::Buffer particles_[2];    // ping-pong: the pass (or the reorder) reads one and writes the other
     int current_ = 0;
+    cl::Buffer scene_index_[2];  // scene index of the disk in each slot; ping-pong with the reorder
+    int current_order_ = 0;
     cl::Buffer cell_start_, sorted_index_, contact_count_;
     std::unique_ptr<DeviceGrid> device_grid_;
-    cl::Kernel integrate_, resolve_;
+    cl::Kernel integrate_, resolve_, gather_;
     cl::NDRange local_ = cl::NullRange;
 };
 

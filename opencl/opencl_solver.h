@@ -9,8 +9,14 @@
 //                   Default: the one measured faster for the device type and N
 //                   (docs/opencl-backend.md): device, except host below N = 5e4 on a CPU.
 //   extra["local_size"]  work-group size of the per-disk kernels (default: the driver's choice)
-// A scene file can set `grid` and `local_size` too, in its [backend.opencl] table; options
-// given here take precedence.
+//   extra["sort_interval"]  K >= 0: at every K-th grid build (one per step, or per sub-step of
+//                   the integrate-first rule) move the disks into cell order on the device
+//                   (kernels/reorder.cl), so that the neighbours a contact pass reads lie next
+//                   to each other in memory; 0 = never. Default 1. Results do not depend on K:
+//                   cells list their disks by scene index either way, and read_state returns
+//                   the scene's order.
+// A scene file can set `grid`, `local_size` and `sort_interval` too, in its [backend.opencl]
+// table; options given here take precedence.
 #pragma once
 
 #include <memory>

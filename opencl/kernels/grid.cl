@@ -8,6 +8,9 @@
  *   grid_sort_cells the atomics made the order inside a cell depend on thread timing;
  *                   sorting each cell's few indices restores increasing index order, so the
  *                   neighbour order, and every sum over neighbours, is deterministic.
+ *   grid_sort_cells_by_scene_index  the same once the disks have been moved into cell order
+ *                   (reorder.cl): a disk's slot is then no longer its index in the scene, so
+ *                   the sort goes by scene index, the order in which `step` visits them.
  */
 
 /* Cell coordinate along one axis, clamped to the border cells (NaN goes to cell 0), exactly
@@ -80,19 +83,42 @@ __kernel void grid_scatter(__global const uint* cell_of, __global const uint* ra
     sorted_index[cell_start[cell_of[i]] + rank[i]] = (uint)i;
 }
 
-/* Insertion sort of each cell's indices (a cell holds a handful of disks). */
+/* The key a cell's disks are sorted by: the disk's index in the scene. While the disks sit in
+ * the scene's order (scene_index == 0) that is the slot itself; after a reorder by cell it is
+ * scene_index[slot]. */
+static inline uint scene_index_of(uint slot, __global const uint* scene_index)
+{
+    return scene_index ? scene_index[slot] : slot;
+}
+
+/* Insertion sort of one cell's slots by scene index (a cell holds a handful of disks). */
+static inline void sort_cell(__global uint* sorted_index, uint begin, uint end, __global const uint* scene_index)
+{
+    for (uint k = begin + 1; k < end; ++k) {
+        const uint slot = sorted_index[k];
+        const uint key = scene_index_of(slot, scene_index);
+        uint m = k;
+        while (m > begin && scene_index_of(sorted_index[m - 1], scene_index) > key) {
+            sorted_index[m] = sorted_index[m - 1];
+            --m;
+        }
+        sorted_index[m] = slot;
+    }
+}
+
+/* Disks still in the scene's order: slot = scene index. */
 __kernel void grid_sort_cells(__global const uint* cell_start, __global uint* sorted_index, const int cell_count)
 {
     const int c = get_global_id(0);
     if (c >= cell_count) return;
-    const uint begin = cell_start[c], end = cell_start[c + 1];
-    for (uint k = begin + 1; k < end; ++k) {
-        const uint key = sorted_index[k];
-        uint m = k;
-        while (m > begin && sorted_index[m - 1] > key) {
-            sorted_index[m] = sorted_index[m - 1];
-            --m;
-        }
-        sorted_index[m] = key;
-    }
+    sort_cell(sorted_index, cell_start[c], cell_start[c + 1], 0);
+}
+
+/* Disks moved into cell order: slot k holds scene disk scene_index[k]. */
+__kernel void grid_sort_cells_by_scene_index(__global const uint* cell_start, __global uint* sorted_index,
+                                             __global const uint* scene_index, const int cell_count)
+{
+    const int c = get_global_id(0);
+    if (c >= cell_count) return;
+    sort_cell(sorted_index, cell_start[c], cell_start[c + 1], scene_index);
 }

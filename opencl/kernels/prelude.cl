@@ -1,6 +1,6 @@
 /* First piece of every `opencl` program. The host concatenates, in this order:
  *   prelude.cl, core/contact_law.h, core/wall_law.h, opencl/particle_layout.h,
- *   layout_probe.cl, grid.cl, step.cl
+ *   layout_probe.cl, grid.cl, reorder.cl, step.cl
  * (the headers are the very files the C++ backends compile, embedded at build time), and
  * builds the result with -D flags for the scene's features:
  *   COLLIDE_REAL_DOUBLE      Real = double (needs cl_khr_fp64), else Real = float

@@ -73,7 +73,9 @@ static inline int neighbour_cell(int c, int cells)
 }
 
 /* Adds disk i's contacts with the disks in slots [begin, end) of sorted_index to `sum`.
- * Counts the contacts with j > i, so each pair is counted once. */
+ * Counts each pair once, as `step` does: by the lower slot, or by the moving disk when the
+ * other is a stone (a stone never runs this loop). The total does not depend on which slot
+ * holds which disk. */
 static inline void add_contacts(int i, const Particle* pi, __global const Particle* in,
                                 __global const uint* sorted_index, uint begin, uint end,
                                 const StepParams* p, ContactDelta* sum, uint* contacts)
@@ -105,7 +107,7 @@ static inline void add_contacts(int i, const Particle* pi, __global const Partic
         sum->dy += d.dy;
         sum->dvx += d.dvx;
         sum->dvy += d.dvy;
-        if (i < j) ++*contacts;
+        if (i < j || IS_STONE(pj)) ++*contacts;
     }
 }
 

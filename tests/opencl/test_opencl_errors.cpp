@@ -85,6 +85,23 @@ TEST(OpenclErrors, SceneGridKeyIsValidated) {
     EXPECT_NE(message.find("grid = 'sideways'"), std::string::npos) << message;
 }
 
+TEST(OpenclErrors, InvalidSortIntervalIsNamed) {
+    for (const char* value : {"-1", "often", "1.5", "", "3x", "99999999999"}) {
+        BackendOptions options;
+        options.extra["sort_interval"] = value;
+        const std::string message = load_error(options);
+        EXPECT_NE(message.find("sort_interval = '" + std::string(value) + "'"), std::string::npos) << message;
+        EXPECT_NE(message.find("expected an integer >= 0"), std::string::npos) << message;
+    }
+}
+
+TEST(OpenclErrors, SceneSortIntervalIsValidated) {
+    auto c = opencl_cases(1).front();
+    c.scene.backend_options["opencl"]["sort_interval"] = "-2";
+    const std::string message = error_of([&] { backend("opencl").create({})->load(c.scene, c.initial); });
+    EXPECT_NE(message.find("sort_interval = '-2'"), std::string::npos) << message;
+}
+
 TEST(OpenclErrors, ValidWorkGroupSizeRuns) {
     BackendOptions options;
     options.extra["local_size"] = "16";  // every OpenCL 1.2 device allows 16 work-items
