@@ -71,17 +71,20 @@ TEST(OpenclErrors, BuildFailurePrintsTheBuildLog) {
     EXPECT_NE(message.find("error"), std::string::npos) << "the compiler's own diagnostics: " << message;
 }
 
-TEST(OpenclErrors, UnknownSceneKeyIsNamed) {
+// The error of loading a small scene whose [backend.opencl] table sets key = value.
+std::string scene_option_error(const std::string& key, const std::string& value) {
     auto c = opencl_cases(1).front();
-    c.scene.backend_options["opencl"]["gird"] = "host";
-    const std::string message = error_of([&] { backend("opencl").create({})->load(c.scene, c.initial); });
+    c.scene.backend_options["opencl"][key] = value;
+    return error_of([&] { backend("opencl").create({})->load(c.scene, c.initial); });
+}
+
+TEST(OpenclErrors, UnknownSceneKeyIsNamed) {
+    const std::string message = scene_option_error("gird", "host");
     EXPECT_NE(message.find("unknown key 'gird'"), std::string::npos) << message;
 }
 
 TEST(OpenclErrors, SceneGridKeyIsValidated) {
-    auto c = opencl_cases(1).front();
-    c.scene.backend_options["opencl"]["grid"] = "sideways";
-    const std::string message = error_of([&] { backend("opencl").create({})->load(c.scene, c.initial); });
+    const std::string message = scene_option_error("grid", "sideways");
     EXPECT_NE(message.find("grid = 'sideways'"), std::string::npos) << message;
 }
 
@@ -96,9 +99,7 @@ TEST(OpenclErrors, InvalidSortIntervalIsNamed) {
 }
 
 TEST(OpenclErrors, SceneSortIntervalIsValidated) {
-    auto c = opencl_cases(1).front();
-    c.scene.backend_options["opencl"]["sort_interval"] = "-2";
-    const std::string message = error_of([&] { backend("opencl").create({})->load(c.scene, c.initial); });
+    const std::string message = scene_option_error("sort_interval", "-2");
     EXPECT_NE(message.find("sort_interval = '-2'"), std::string::npos) << message;
 }
 
