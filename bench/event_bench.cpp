@@ -15,6 +15,7 @@
 #include <string>
 
 #include "bench_suite.h"
+#include "core/median.h"
 #include "reference/event_solver.h"
 
 namespace collide::bench {
@@ -91,12 +92,6 @@ Timing run_collisions(EventSolver& solver, std::int64_t target) {
 // machine (other programs, a shared cache) is visible next to the figure.
 constexpr int timing_windows = 5;
 
-double median_of(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 void run_event_suite(const BenchArgs& args, BenchReport& report) {
     if (!args.backends.empty() && std::find(args.backends.begin(), args.backends.end(), "event") == args.backends.end())
         return;
@@ -130,7 +125,7 @@ void run_event_suite(const BenchArgs& args, BenchReport& report) {
             const double collisions = double(after.contacts - before.contacts);
             const double events = double(after.steps - before.steps);
             const double stale = after.counters.at("events_stale") - before.counters.at("events_stale");
-            const double ns = median_of(window_ns);
+            const double ns = median(window_ns);
             if (first_cost == 0) first_cost = ns;
             report.add({{"backend", std::string("event")},
                         {"threads", std::int64_t(1)},

@@ -268,13 +268,7 @@ ParticleState<double> generate_initial_state(const Scene& scene) {
         for (std::size_t i = 0; i < disks.size(); ++i) {
             const Disk& d = disks[i];
             const bool stone = g.kind == "list" ? g.disks[i].stone : g.stone;
-            state.x.push_back(d.x);
-            state.y.push_back(d.y);
-            state.vx.push_back(d.vx);
-            state.vy.push_back(d.vy);
-            state.radius.push_back(d.radius);
-            state.mass.push_back(d.mass);
-            state.inv_mass.push_back(stone ? 0.0 : 1.0 / d.mass);  // a stone is kinematic: 1/m = 0
+            state.append_disk(d.x, d.y, d.vx, d.vy, d.radius, d.mass, stone);
         }
         all.insert(all.end(), disks.begin(), disks.end());
     }

@@ -25,6 +25,17 @@ struct ParticleState {
 
     bool is_stone(std::size_t i) const { return inv_mass[i] == Real(0); }
 
+    // Appends one disk; a stone keeps its mass but gets inverse mass 0 (kinematic).
+    void append_disk(Real x0, Real y0, Real vx0, Real vy0, Real r, Real m, bool stone) {
+        x.push_back(x0);
+        y.push_back(y0);
+        vx.push_back(vx0);
+        vy.push_back(vy0);
+        radius.push_back(r);
+        mass.push_back(m);
+        inv_mass.push_back(stone ? Real(0) : Real(1) / m);
+    }
+
     // Converts every array to another real type (double -> float on load, float -> double on read-back).
     template <typename Other>
     ParticleState<Other> as() const {

@@ -20,6 +20,24 @@
 
 namespace collide {
 
+// Cells per axis of a stepping grid: as many as fit with an edge of at least min_cell_size,
+// halved on both axes while there are more than 2^26 (a huge box with few disks must not
+// allocate a billion cells; larger cells stay correct, only slower).
+struct GridDimensions {
+    std::int64_t cells_x = 1, cells_y = 1;
+};
+inline GridDimensions grid_dimensions(const World& world, double min_cell_size) {
+    GridDimensions d;
+    d.cells_x = std::max<std::int64_t>(1, std::int64_t(world.width() / min_cell_size));
+    d.cells_y = std::max<std::int64_t>(1, std::int64_t(world.height() / min_cell_size));
+    const std::int64_t max_cells = std::int64_t(1) << 26;
+    while (d.cells_x * d.cells_y > max_cells) {
+        d.cells_x = std::max<std::int64_t>(1, d.cells_x / 2);
+        d.cells_y = std::max<std::int64_t>(1, d.cells_y / 2);
+    }
+    return d;
+}
+
 template <typename Real>
 class UniformGrid {
 public:
@@ -28,14 +46,9 @@ public:
         if (!(min_cell_size > 0)) throw std::invalid_argument("grid cell size must be positive");
         world_ = world;
         periodic_ = world.boundary == Boundary::periodic;
-        cells_x_ = std::max<std::int64_t>(1, std::int64_t(world.width() / min_cell_size));
-        cells_y_ = std::max<std::int64_t>(1, std::int64_t(world.height() / min_cell_size));
-        // Cap the cell count at a few per disk's worth of memory (a huge box with few disks).
-        const std::int64_t max_cells = std::int64_t(1) << 26;
-        while (cells_x_ * cells_y_ > max_cells) {
-            cells_x_ = std::max<std::int64_t>(1, cells_x_ / 2);
-            cells_y_ = std::max<std::int64_t>(1, cells_y_ / 2);
-        }
+        const GridDimensions d = grid_dimensions(world, min_cell_size);
+        cells_x_ = d.cells_x;
+        cells_y_ = d.cells_y;
         inv_cell_w_ = Real(double(cells_x_) / world.width());
         inv_cell_h_ = Real(double(cells_y_) / world.height());
         cell_start_.assign(cell_count() + 1, 0);

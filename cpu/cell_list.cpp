@@ -3,18 +3,15 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "core/uniform_grid.h"
+
 namespace collide::cpu {
 
 void CellList::configure(const World& world, double min_cell_size) {
     if (!(min_cell_size > 0)) throw std::invalid_argument("cpu: grid cell size must be positive (largest radius > 0)");
-    cells_x_ = std::max<std::int64_t>(1, std::int64_t(world.width() / min_cell_size));
-    cells_y_ = std::max<std::int64_t>(1, std::int64_t(world.height() / min_cell_size));
-    // Same cap as core/uniform_grid.h: a huge box with few disks must not allocate 1e9 cells.
-    const std::int64_t max_cells = std::int64_t(1) << 26;
-    while (cells_x_ * cells_y_ > max_cells) {
-        cells_x_ = std::max<std::int64_t>(1, cells_x_ / 2);
-        cells_y_ = std::max<std::int64_t>(1, cells_y_ / 2);
-    }
+    const GridDimensions d = grid_dimensions(world, min_cell_size);  // the same cells as UniformGrid
+    cells_x_ = d.cells_x;
+    cells_y_ = d.cells_y;
     xmin_ = float(world.xmin);
     ymin_ = float(world.ymin);
     inv_cell_w_ = float(double(cells_x_) / world.width());

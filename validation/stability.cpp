@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <utility>
 #include <vector>
 
+#include "core/median.h"
 #include "tunnelling.h"
 
 namespace collide::validation {
@@ -39,9 +41,7 @@ double median_displacement(const CaseResult& r) {
     const std::size_t n = std::min({a.x.size(), a.y.size(), b.x.size(), b.y.size()});
     std::vector<double> d(n);
     for (std::size_t i = 0; i < n; ++i) d[i] = std::hypot(b.x[i] - a.x[i], b.y[i] - a.y[i]);
-    if (n == 0) return 0;
-    std::nth_element(d.begin(), d.begin() + std::ptrdiff_t(n / 2), d.end());
-    return d[n / 2];
+    return median(std::move(d));
 }
 
 namespace {
@@ -50,13 +50,6 @@ namespace {
 // radius for `stalled` to be judged (a packing at rest, a Newton's cradle whose middle disks
 // never move, are not stalled), and the backend by less than stalled_fraction of that.
 constexpr double min_reference_motion = 0.01, stalled_fraction = 0.1;
-
-double median_radius(const Snapshot& s) {
-    std::vector<double> r = s.radius;
-    if (r.empty()) return 0;
-    std::nth_element(r.begin(), r.begin() + std::ptrdiff_t(r.size() / 2), r.end());
-    return r[r.size() / 2];
-}
 
 std::string text(double v) {
     std::ostringstream s;
@@ -91,7 +84,7 @@ Classification classify(const CaseResult& r, const CaseResult* reference, const 
     std::string notes;
     if (reference && reference->finished() && !r.spec.reference) {
         const double moved = median_displacement(r), expected = median_displacement(*reference);
-        if (expected > min_reference_motion * median_radius(reference->initial) && moved < stalled_fraction * expected)
+        if (expected > min_reference_motion * median(reference->initial.radius) && moved < stalled_fraction * expected)
             return {Outcome::stalled, "median displacement " + text(moved) + " where the reference's is " +
                                           text(expected) + ": the disks barely moved"};
         const TunnellingCount t = count_tunnelling(r, *reference, !f.reflecting_walls);

@@ -15,15 +15,7 @@ Scene box_scene(double width, double height, Boundary boundary) {
 
 ParticleState<double> make_state(const std::vector<DiskSpec>& disks) {
     ParticleState<double> s;
-    for (const auto& d : disks) {
-        s.x.push_back(d.x);
-        s.y.push_back(d.y);
-        s.vx.push_back(d.vx);
-        s.vy.push_back(d.vy);
-        s.radius.push_back(d.radius);
-        s.mass.push_back(d.mass);
-        s.inv_mass.push_back(d.stone ? 0.0 : 1.0 / d.mass);
-    }
+    for (const auto& d : disks) s.append_disk(d.x, d.y, d.vx, d.vy, d.radius, d.mass, d.stone);
     return s;
 }
 
