@@ -29,12 +29,16 @@ const std::vector<BackendInfo>& all_backends() {
     return backends;
 }
 
+const BackendInfo* backend_if_built(const std::string& name) {
+    for (const auto& b : all_backends())
+        if (b.name == name) return &b;
+    return nullptr;
+}
+
 const BackendInfo& find_backend(const std::string& name) {
+    if (const BackendInfo* b = backend_if_built(name)) return *b;
     std::string names;
-    for (const auto& b : all_backends()) {
-        if (b.name == name) return b;
-        names += (names.empty() ? "" : ", ") + b.name;
-    }
+    for (const auto& b : all_backends()) names += (names.empty() ? "" : ", ") + b.name;
     throw std::invalid_argument("unknown backend '" + name + "'; available: " + names);
 }
 

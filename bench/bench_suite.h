@@ -5,6 +5,7 @@
 // Performance claims in docs/ come from these suites, never from timed unit tests.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -22,6 +23,11 @@ struct BenchArgs {
     bool quick = false;                 // smaller ladder, for smoke tests
     double max_seconds_per_case = 60;   // a case whose first frame exceeds this is stopped
 };
+
+// Whether `backend` should run: --backend names it, or --backend was not given.
+inline bool wanted(const BenchArgs& args, const std::string& backend) {
+    return args.backends.empty() || std::find(args.backends.begin(), args.backends.end(), backend) != args.backends.end();
+}
 
 using Value = std::variant<std::int64_t, double, std::string>;
 using Row = std::map<std::string, Value>;

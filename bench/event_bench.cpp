@@ -93,8 +93,7 @@ Timing run_collisions(EventSolver& solver, std::int64_t target) {
 constexpr int timing_windows = 5;
 
 void run_event_suite(const BenchArgs& args, BenchReport& report) {
-    if (!args.backends.empty() && std::find(args.backends.begin(), args.backends.end(), "event") == args.backends.end())
-        return;
+    if (!wanted(args, "event")) return;
     std::vector<std::int64_t> sizes = args.sizes;
     if (sizes.empty()) sizes = args.quick ? std::vector<std::int64_t>{1000, 10000}
                                           : std::vector<std::int64_t>{1000, 10000, 100000, 1000000};

@@ -17,16 +17,6 @@
 namespace collide::bench {
 namespace {
 
-const BackendInfo* registered(const std::string& name) {
-    for (const auto& b : all_backends())
-        if (b.name == name) return &b;
-    return nullptr;
-}
-
-bool wanted(const BenchArgs& args, const std::string& backend) {
-    return args.backends.empty() || std::find(args.backends.begin(), args.backends.end(), backend) != args.backends.end();
-}
-
 double phase(const SolverStats& s, const char* name) {
     const auto it = s.phase_seconds.find(name);
     return it == s.phase_seconds.end() ? 0.0 : it->second;
@@ -79,8 +69,8 @@ void run_suite(const BenchArgs& args, BenchReport& report) {
     std::vector<std::int64_t> sizes = args.sizes;
     if (sizes.empty()) sizes = args.quick ? std::vector<std::int64_t>{1000, 10000}
                                           : std::vector<std::int64_t>{1000, 10000, 100000, 1000000};
-    const BackendInfo* opencl = registered("opencl");
-    const BackendInfo* cpu = registered("cpu");
+    const BackendInfo* opencl = backend_if_built("opencl");
+    const BackendInfo* cpu = backend_if_built("cpu");
     if (!opencl) {
         report.note("the opencl backend is not compiled into this build");
         return;

@@ -16,10 +16,6 @@ std::vector<int> thread_counts(const BenchArgs& args, const std::string& backend
     return {0};  // the backend's default
 }
 
-bool wanted(const BenchArgs& args, const std::string& backend) {
-    return args.backends.empty() || std::find(args.backends.begin(), args.backends.end(), backend) != args.backends.end();
-}
-
 void run_throughput_suite(const BenchArgs& args, BenchReport& report) {
     std::vector<std::int64_t> sizes = args.sizes;
     if (sizes.empty()) sizes = args.quick ? std::vector<std::int64_t>{1000, 10000}

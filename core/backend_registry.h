@@ -27,6 +27,9 @@ struct BackendInfo {
 // collide_registry), so that linking the registry is all a program needs.
 const std::vector<BackendInfo>& all_backends();
 
+// The backend called `name`, or nullptr if this build has none of that name (a backend whose
+// library was not found is simply not compiled in).
+const BackendInfo* backend_if_built(const std::string& name);
 // The backend called `name`; throws std::invalid_argument listing the valid names.
 const BackendInfo& find_backend(const std::string& name);
 

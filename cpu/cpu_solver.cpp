@@ -7,29 +7,11 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/phase_timer.h"
 #include "core/step_schedule.h"
 #include "parallel_for.h"
 
 namespace collide::cpu {
-namespace {
-
-// Adds the wall time of one phase to the statistics when it goes out of scope.
-class PhaseTimer {
-public:
-    PhaseTimer(SolverStats& stats, const char* phase)
-        : stats_(stats), phase_(phase), start_(std::chrono::steady_clock::now()) {}
-    ~PhaseTimer() {
-        stats_.phase_seconds[phase_] += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    }
-
-private:
-    SolverStats& stats_;
-    const char* phase_;
-    std::chrono::steady_clock::time_point start_;
-};
-
-}  // namespace
-
 CpuSolver::CpuSolver(const BackendOptions& options) : options_(options) {
     if (options.threads < 0) throw std::invalid_argument("cpu: thread count must be >= 0, got " + std::to_string(options.threads));
     threads_ = options.threads > 0 ? options.threads : omp_get_max_threads();

@@ -277,7 +277,7 @@ private:
 
     // The grid of this build, then, every sort_interval-th build, the disks moved into its order.
     void build_grid() {
-        if (grid_mode_ == "device") build_grid_on_device();
+        if (device_grid_) build_grid_on_device();  // (set at load iff grid = "device")
         else build_grid_on_host();
         const bool reorder = sort_interval_ > 0 && grid_builds_ % sort_interval_ == 0;
         ++grid_builds_;
@@ -358,7 +358,7 @@ private:
         current_ = 1 - current_;
         current_order_ = 1 - current_order_;
         stats_.phase_seconds["reorder"] += seconds_since(start);
-        if (grid_mode_ == "host") follow_reorder_on_host();
+        if (!device_grid_) follow_reorder_on_host();
     }
 
     // The host build sorts cells by scene index, so it keeps its own copy of the slots' scene

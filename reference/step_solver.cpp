@@ -4,30 +4,11 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "core/phase_timer.h"
 #include "core/step_schedule.h"
 #include "core/stepping_laws.hpp"
 
 namespace collide {
-namespace {
-
-// Adds the wall time of one phase to the solver's statistics when it goes out of scope.
-class PhaseTimer {
-public:
-    PhaseTimer(SolverStats& stats, const char* phase)
-        : stats_(stats), phase_(phase), start_(std::chrono::steady_clock::now()) {}
-    ~PhaseTimer() {
-        const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start_;
-        stats_.phase_seconds[phase_] += elapsed.count();
-    }
-
-private:
-    SolverStats& stats_;
-    const char* phase_;
-    std::chrono::steady_clock::time_point start_;
-};
-
-}  // namespace
-
 void StepSolver::load(const Scene& scene, const ParticleState<double>& initial) {
     if (initial.size() == 0) throw std::invalid_argument("step: the scene has no disks");
     if (!(scene.run.dt > 0)) throw std::invalid_argument("step: dt must be positive");
@@ -35,8 +16,7 @@ void StepSolver::load(const Scene& scene, const ParticleState<double>& initial) 
     state_ = initial;
     step_count_ = 0;
     stats_ = SolverStats{};
-    // An empty scene still gets a valid (unused) grid.
-    const double r_max = state_.size() > 0 ? *std::max_element(state_.radius.begin(), state_.radius.end()) : 0.5;
+    const double r_max = *std::max_element(state_.radius.begin(), state_.radius.end());
     grid_.configure(scene_.world, 2 * r_max);
     for (auto* a : {&dx_, &dy_, &dvx_, &dvy_}) a->assign(state_.size(), 0.0);
 }
@@ -144,9 +124,10 @@ void StepSolver::apply_walls() {
     PhaseTimer timer(stats_, "correct");
     const World& w = scene_.world;
     const double e_wall = scene_.physics.wall_restitution;
+    const bool periodic = scene_.periodic();
     for (std::size_t i = 0; i < state_.size(); ++i) {
         if (state_.is_stone(i)) continue;
-        if (scene_.periodic()) {
+        if (periodic) {
             state_.x[i] = WallLaw<double>::wrap(state_.x[i], w.xmin, w.width());
             state_.y[i] = WallLaw<double>::wrap(state_.y[i], w.ymin, w.height());
         } else {
