@@ -235,11 +235,12 @@ private:
         local_ = cl::NullRange;
         if (!options_.extra.count("local_size")) return;
         const std::string text = options_.extra.at("local_size");
-        std::size_t size = 0;
+        std::size_t size = 0, used = 0;
         try {
-            size = std::stoul(text);
+            size = std::stoul(text, &used);
         } catch (const std::exception&) {
         }
+        if (used != text.size()) size = 0;  // trailing text ("64abc") is no size
         const cl::Device& dev = session_.device.device;
         const std::size_t limit = std::min({resolve_.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(dev),
                                             integrate_.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(dev),

@@ -48,7 +48,7 @@ TEST(OpenclErrors, UnknownGridMode) {
 }
 
 TEST(OpenclErrors, InvalidWorkGroupSize) {
-    for (const char* size : {"0", "100000000", "many"}) {
+    for (const char* size : {"0", "100000000", "many", "64abc"}) {
         BackendOptions options;
         options.extra["local_size"] = size;
         EXPECT_NE(load_error(options).find("invalid work-group size"), std::string::npos) << size;
