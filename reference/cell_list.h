@@ -89,7 +89,44 @@ public:
     template <typename Disks, typename Visit>
     void for_each_neighbour(const Disks& disks, std::uint32_t i, Visit&& visit) const {
         const std::int64_t cx = column(disks[i].links), cy = row(disks[i].links);
-        for_each_in_block(disks, cx - 1, cx + 1, cy - 1, cy + 1, visit);
+        if (!interior(cx, cy)) {
+            for_each_in_block(disks, cx - 1, cx + 1, cy - 1, cy + 1, visit);
+            return;
+        }
+        // Away from the edges no cell wraps or falls outside. The nine list heads are read
+        // first and their first records requested from memory together: walking a list one
+        // record after another would wait for each cache miss in turn.
+        const std::uint32_t* corner = &head_[std::size_t((cy - 1) * cells_x_ + cx - 1)];
+        std::uint32_t first[9];
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) {
+                const std::uint32_t j = corner[r * cells_x_ + c];
+                first[3 * r + c] = j;
+                if (j != none) __builtin_prefetch(&disks[j]);
+            }
+        for (std::uint32_t head : first)
+            for (std::uint32_t j = head; j != none; j = disks[j].links.next) visit(j);
+    }
+
+    // Requests from memory the first record of each list in the 3x3 block around disk i's
+    // cell (interior cells only), without waiting for them: issued before other work, the
+    // misses of a later for_each_neighbour overlap with that work.
+    template <typename Disks>
+    void prefetch_neighbourhood(const Disks& disks, std::uint32_t i) const {
+        const std::int64_t cx = column(disks[i].links), cy = row(disks[i].links);
+        if (!interior(cx, cy)) return;
+        const std::uint32_t* corner = &head_[std::size_t((cy - 1) * cells_x_ + cx - 1)];
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c)
+                if (const std::uint32_t j = corner[r * cells_x_ + c]; j != none) __builtin_prefetch(&disks[j]);
+    }
+
+    // Whether the disks a disk in this cell can touch need the minimum-image convention: only
+    // in a periodic box, and there only in the cells along the edges (a neighbour in the 3x3
+    // block of an interior cell lies less than 2 cells away, which is less than half the box
+    // once the box has at least 4 cells per axis).
+    bool needs_minimum_image(const CellLinks& l) const {
+        return periodic_ && !(cells_x_ >= 4 && cells_y_ >= 4 && interior(column(l), row(l)));
     }
 
     // Calls visit(j) for every disk j in the cells that disk i's neighbourhood gained when i
@@ -149,6 +186,10 @@ private:
         }
     }
 
+    // A cell whose 3x3 block lies inside the grid.
+    bool interior(std::int64_t cx, std::int64_t cy) const {
+        return cx > 0 && cy > 0 && cx + 1 < cells_x_ && cy + 1 < cells_y_;
+    }
     static std::int64_t clamp(std::int64_t c, std::int64_t cells) { return std::clamp<std::int64_t>(c, 0, cells - 1); }
     // Periodic boxes have at least 3 cells per axis (checked on load), so a wrapped
     // neighbourhood never visits a cell twice.

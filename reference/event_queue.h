@@ -8,43 +8,60 @@
 // that with the partner's event counter when the entry reaches the top and re-predicts the
 // particle (the idea of Marin, Risso and Cordero, J. Comput. Phys. 109 (1993) 306).
 //
-// The calendar (a bucket queue in the spirit of G. Paul, J. Comput. Phys. 221 (2007) 615):
-// time from t0 on is cut into `bucket_count` buckets of width w. The bucket now being served
-// is a small binary min-heap (the "front"); later buckets are unsorted lists, and times past
-// the last bucket wait in an overflow list. A re-predicted particle nearly always lands in a
-// later bucket, which costs O(1) (unlink, link) instead of the O(log N) sift of one big heap,
-// and the front heap holds only the few entries of one bucket. When the front runs empty the
-// next bucket is poured into it; when the buckets run out, they are rebuilt from the overflow
-// (new t0 and w, sized so that a bucket holds about one entry).
+// The calendar (a bucket queue in the spirit of G. Paul, J. Comput. Phys. 221 (2007) 615, run
+// as a ring like R. Brown's calendar queue, Commun. ACM 31 (1988) 1220): time is cut into
+// buckets of width w, and the next `bucket_count` of them, counted from the one now being
+// served, are kept as a ring of unsorted lists. The bucket being served is a small binary
+// min-heap (the "front"). A re-predicted particle nearly always lands in a later bucket, which
+// costs O(1) (unlink, link) instead of the O(log N) sift of one big heap. When the front runs
+// empty the next bucket is poured into it, and the bucket it leaves behind becomes the ring's
+// newest. Times beyond the ring wait in an overflow list, which is sorted into the ring every
+// half turn; infinite times ("never") wait in an idle list that is never scanned. The width
+// is chosen so that a bucket holds a few entries and the ring spans about four median event
+// horizons, so only a few per cent of the predictions overflow. The calendar is rebuilt (new
+// origin and width) only when it runs empty or its statistics say the width no longer fits
+// (too many overflowing entries, or too many entries per bucket), not every turn.
 //
-// The order is exactly that of one heap over all entries: a bucket's index
-// floor((t - t0) / w) never decreases with t, so every entry in the front is earlier than every
-// entry in a later bucket, and inside the front ties are broken by a key per particle (its
-// index unless the caller gives keys), so the order of simultaneous events is deterministic.
-// The solver renumbers its particles now and then for memory locality and passes each
-// particle's original index as the key, so the renumbering does not change the order.
+// The order is exactly that of one heap over all entries: a bucket's absolute index
+// floor((t - t0) / w) never decreases with t, the front holds the entries up to the current
+// index, the ring those of the next bucket_count indices and the overflow later ones, and
+// inside the front ties are broken by a key per particle (its index unless the caller gives
+// keys), so the order of simultaneous events is deterministic. The solver renumbers its
+// particles now and then for memory locality; the keys travel with the particles, so the
+// renumbering does not change the order.
+//
+// Each particle's slot can carry a payload of the caller's (the solver keeps its prediction
+// there): the slot is read and written at every event of the particle anyway, so what shares
+// its cache line comes without a second memory access.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 namespace collide {
 
+struct NoPayload {};
+
+template <typename Payload = NoPayload>
 class EventQueue {
 public:
     // Empties the queue for n particles with keys 0..n-1 (or keys[p], distinct, if given); every
     // time is unset until update() sets it.
     void reset(std::size_t n, const std::uint32_t* keys = nullptr) {
+        if (n > max_particles) throw std::length_error("event queue: more than 2^32 - 16 particles");
         node_.assign(n, Node{});
         for (std::uint32_t p = 0; p < n; ++p) node_[p].key = keys ? keys[p] : p;
         heap_.clear();
-        bucket_count_ = std::max<std::size_t>(16, n);
-        head_.assign(bucket_count_ + 1, none);  // the last list is the overflow
+        bucket_count_ = std::uint32_t(std::max<std::size_t>(16, n));
+        head_.assign(std::size_t(bucket_count_) + 2, none);  // the ring, then overflow and idle
+        bucketed_ = overflowing_ = idle_ = 0;
+        built_ = one_heap_ = false;  // the first top() builds the ring from the times set by then
         for (std::uint32_t p = 0; p < n; ++p) link(p, overflow());
-        current_ = bucket_count_;  // no buckets yet: the first top() builds them from the times set by then
     }
 
     bool empty() const { return node_.empty(); }
@@ -52,13 +69,17 @@ public:
     std::uint32_t top() { return settle(), heap_[0].particle; }
     double top_time() { return settle(), heap_[0].time; }
     double time_of(std::uint32_t particle) const { return node_[particle].time; }
+    Payload& payload(std::uint32_t particle) { return node_[particle].payload; }
+    const Payload& payload(std::uint32_t particle) const { return node_[particle].payload; }
+    // How often the calendar was (re)built since reset: for tests and diagnostics.
+    std::uint64_t builds() const { return builds_; }
 
     // Sets a particle's event time and moves it to its bucket (or within the front heap).
     void update(std::uint32_t particle, double t) {
         Node& node = node_[particle];
         const double old = node.time;
         node.time = t;
-        const std::size_t target = bucket_of(t);
+        const std::uint32_t target = bucket_of(t);
         if (node.bucket == front) {
             if (target == front) {
                 heap_[node.index].time = t;
@@ -71,21 +92,46 @@ public:
             if (target == node.bucket) return;  // same unsorted list
             unlink(particle);
         }
-        if (target == front) heap_push(particle);
-        else link(particle, target);
+        file(particle, target);
+    }
+
+    // Renumbers the particles: particle k becomes what particle order[k] was (time, key,
+    // payload and place in the calendar); new_of is the inverse of order. The calendar keeps
+    // its buckets, so the order of events is unchanged and nothing is rebuilt.
+    void renumber(const std::vector<std::uint32_t>& order, const std::vector<std::uint32_t>& new_of) {
+        auto renamed = [&](std::uint32_t p) { return p == none ? none : new_of[p]; };
+        std::vector<Node> old;
+        old.swap(node_);
+        node_.resize(old.size());
+        for (std::size_t k = 0; k < order.size(); ++k) {
+            Node node = old[order[k]];
+            node.next = renamed(node.next);
+            node.prev = renamed(node.prev);
+            node_[k] = node;
+        }
+        for (std::uint32_t& h : head_) h = renamed(h);
+        for (Entry& e : heap_) e.particle = new_of[e.particle];
     }
 
 private:
     static constexpr std::uint32_t none = 0xffffffffu;
-    static constexpr std::size_t front = std::numeric_limits<std::size_t>::max();
+    static constexpr std::uint32_t front = 0xfffffffeu;
+    static constexpr std::size_t max_particles = 0xfffffff0u;
 
-    struct Node {
+    // With a payload the slot is given a cache line of its own (the solver's fills one).
+    struct alignas(std::is_empty_v<Payload> ? alignof(double) : 64) Node {
         double time = 0;
-        std::size_t bucket = 0;        // front, a bucket number, or overflow()
+        std::uint32_t bucket = 0;      // front, a ring bucket, overflow() or idle()
         std::uint32_t index = none;    // position in the front heap (bucket == front)
         std::uint32_t next = none, prev = none;  // neighbours in the bucket's list
         std::uint32_t key = 0;         // breaks ties between equal times
+        [[no_unique_address]] Payload payload{};
     };
+
+public:
+    static constexpr std::size_t slot_bytes = sizeof(Node);
+
+private:
     // The time is stored in the heap next to the particle, so that comparing two children
     // reads one cache line instead of two random places.
     struct Entry {
@@ -94,85 +140,139 @@ private:
         std::uint32_t key;
     };
 
-    std::size_t overflow() const { return bucket_count_; }
+    std::uint32_t overflow() const { return bucket_count_; }
+    std::uint32_t idle() const { return bucket_count_ + 1; }
 
-    // Where an entry with time t belongs: the front (its bucket is the current one or an
-    // earlier one), a later bucket, or the overflow.
-    std::size_t bucket_of(double t) const {
-        if (current_ >= bucket_count_) return overflow();  // buckets not built yet
-        if (!(t < std::numeric_limits<double>::infinity())) return overflow();
+    // Where an entry with time t belongs: the front (its absolute bucket index is the current
+    // one or an earlier one), a ring bucket, the overflow, or the idle list (never).
+    std::uint32_t bucket_of(double t) const {
+        if (!(t < std::numeric_limits<double>::infinity())) return one_heap_ ? front : idle();  // (a NaN too)
+        if (!built_) return overflow();
         const double k = std::floor((t - t0_) / width_);
-        if (!(k > double(current_))) return front;  // (a NaN, which no prediction gives, too)
-        if (k >= double(bucket_count_)) return overflow();
-        return std::size_t(k);
+        if (!(k > double(current_))) return front;
+        const double ahead = k - double(current_);
+        if (ahead >= double(bucket_count_)) return overflow();
+        const std::uint32_t b = current_slot_ + std::uint32_t(ahead);
+        return b >= bucket_count_ ? b - bucket_count_ : b;
+    }
+
+    // Puts a particle that is in no list into the front heap or the list `target`.
+    void file(std::uint32_t p, std::uint32_t target) {
+        if (target == front) heap_push(p);
+        else link(p, target);
     }
 
     // Makes the front heap non-empty (the queue is not empty).
     void settle() {
         while (heap_.empty()) {
-            if (current_ + 1 < bucket_count_) {
-                ++current_;
-                pour(current_);
-            } else if (!rebuild()) {
-                return;
+            if (!built_ || rebuild_wanted_ || bucketed_ == 0) {
+                if (!rebuild()) return;
+                continue;
             }
+            ++current_;
+            if (++current_slot_ == bucket_count_) current_slot_ = 0;
+            if (current_ >= refill_at_) refill();
+            pour(current_slot_);
         }
     }
 
-    // Moves every entry of a bucket's list into the front heap.
-    void pour(std::size_t bucket) {
-        for (std::uint32_t p = head_[bucket], next; p != none; p = next) {
+    // Moves every entry of a ring bucket into the front heap.
+    void pour(std::uint32_t bucket) {
+        std::uint32_t count = 0;
+        for (std::uint32_t p = head_[bucket], next; p != none; p = next, ++count) {
             next = node_[p].next;
             heap_push(p);
         }
         head_[bucket] = none;
+        bucketed_ -= count;
+        poured_ += count;
     }
 
-    // Starts new buckets at the earliest overflow time; returns false if the overflow is
-    // empty. The width makes the buckets hold about one entry each up to the median time.
-    // Degenerate cases fall back to one heap: if no time is finite (nothing will ever happen)
-    // or all finite times are equal, every entry goes to the front.
-    bool rebuild() {
-        if (head_[overflow()] == none) return false;
-        scratch_.clear();
-        for (std::uint32_t p = head_[overflow()]; p != none; p = node_[p].next)
-            if (std::isfinite(node_[p].time)) scratch_.push_back(node_[p].time);
-        const double infinity = std::numeric_limits<double>::infinity();
-        t0_ = infinity;
-        width_ = infinity;  // every finite time falls into bucket 0, the front
-        if (!scratch_.empty()) {
-            const std::size_t half = scratch_.size() / 2;
-            std::nth_element(scratch_.begin(), scratch_.begin() + std::ptrdiff_t(half), scratch_.end());
-            t0_ = *std::min_element(scratch_.begin(), scratch_.begin() + std::ptrdiff_t(half) + 1);
-            double spread = scratch_[half] - t0_, per = double(std::max<std::size_t>(1, half));
-            if (!(spread > 0)) spread = *std::max_element(scratch_.begin(), scratch_.end()) - t0_, per = double(scratch_.size());
-            if (spread / per > 0) width_ = spread / per;
-        }
-        current_ = 0;
+    // Every half turn of the ring: sorts the overflow entries that the ring now reaches into
+    // it. An entry that overflowed had a bucket index at least a whole turn ahead, so it is
+    // still half a turn ahead at the next refill: no entry is ever passed by. Here the width
+    // is also checked against what the last half turn saw.
+    void refill() {
+        const std::uint64_t half_turn = bucket_count_ / 2;
+        refill_at_ = current_ + half_turn;
         std::uint32_t p = head_[overflow()];
         head_[overflow()] = none;
+        overflowing_ = 0;
         for (std::uint32_t next; p != none; p = next) {
             next = node_[p].next;
-            const std::size_t target = std::isfinite(t0_) ? bucket_of(node_[p].time) : front;
-            if (target == front) heap_push(p);
-            else link(p, target);
+            file(p, bucket_of(node_[p].time));
         }
+        // Too narrow: over a quarter of the active entries lie beyond the ring. Too wide: more
+        // than 16 entries per bucket on average, so the front heap grows.
+        const std::uint32_t active = std::uint32_t(node_.size()) - idle_;
+        if (std::uint64_t(overflowing_) * 4 > active || poured_ > 16 * half_turn) rebuild_wanted_ = true;
+        poured_ = 0;
+    }
+
+    // Starts a new ring at the earliest time not in the front heap (which is empty when this
+    // runs); returns false if the queue holds nothing at all. The width makes the ring span
+    // four times the median time ahead, so a bucket holds a few entries. Degenerate cases fall
+    // back to one heap: if no time is finite (nothing will ever happen) every entry goes to
+    // the front and stays there, infinite times included, so that even their order is
+    // that of one heap; if all finite times are equal, the width is infinite and the finite
+    // ones go there.
+    bool rebuild() {
+        ++builds_;
+        scratch_particles_.clear();
+        auto take_list = [&](std::uint32_t bucket) {
+            for (std::uint32_t p = head_[bucket]; p != none; p = node_[p].next) scratch_particles_.push_back(p);
+            head_[bucket] = none;
+        };
+        if (bucketed_ > 0)
+            for (std::uint32_t b = 0; b < bucket_count_; ++b) take_list(b);
+        take_list(overflow());
+        take_list(idle());
+        bucketed_ = overflowing_ = idle_ = 0;
+        if (scratch_particles_.empty()) return false;
+
+        scratch_times_.clear();
+        for (std::uint32_t p : scratch_particles_)
+            if (std::isfinite(node_[p].time)) scratch_times_.push_back(node_[p].time);
+        const double infinity = std::numeric_limits<double>::infinity();
+        t0_ = -infinity;
+        width_ = infinity;  // every finite time falls into bucket 0, the front
+        one_heap_ = scratch_times_.empty();  // nothing will ever happen: all in the front
+        if (!one_heap_) {
+            const std::size_t half = scratch_times_.size() / 2;
+            std::nth_element(scratch_times_.begin(), scratch_times_.begin() + std::ptrdiff_t(half), scratch_times_.end());
+            t0_ = *std::min_element(scratch_times_.begin(), scratch_times_.begin() + std::ptrdiff_t(half) + 1);
+            double span = scratch_times_[half] - t0_;
+            if (!(span > 0)) span = *std::max_element(scratch_times_.begin(), scratch_times_.end()) - t0_;
+            if (span > 0 && 4 * span / double(bucket_count_) > 0) width_ = 4 * span / double(bucket_count_);
+        }
+        built_ = true;
+        rebuild_wanted_ = false;
+        current_ = 0;
+        current_slot_ = 0;
+        refill_at_ = bucket_count_ / 2;
+        poured_ = 0;
+        for (std::uint32_t p : scratch_particles_) file(p, bucket_of(node_[p].time));
         return true;
     }
 
-    void link(std::uint32_t p, std::size_t bucket) {
+    void link(std::uint32_t p, std::uint32_t bucket) {
         Node& node = node_[p];
         node.bucket = bucket;
         node.prev = none;
         node.next = head_[bucket];
         if (node.next != none) node_[node.next].prev = p;
         head_[bucket] = p;
+        count_of(bucket) += 1;
     }
     void unlink(std::uint32_t p) {
         const Node& node = node_[p];
         if (node.prev != none) node_[node.prev].next = node.next;
         else head_[node.bucket] = node.next;
         if (node.next != none) node_[node.next].prev = node.prev;
+        count_of(node.bucket) -= 1;
+    }
+    std::uint32_t& count_of(std::uint32_t bucket) {
+        return bucket < bucket_count_ ? bucketed_ : bucket == overflow() ? overflowing_ : idle_;
     }
 
     // The front: a binary min-heap ordered by (time, key).
@@ -223,11 +323,20 @@ private:
 
     std::vector<Node> node_;            // per particle: time and place in the calendar
     std::vector<Entry> heap_;           // the front: (time, particle) in heap order
-    std::vector<std::uint32_t> head_;   // first particle of each bucket's list, then the overflow's
-    std::vector<double> scratch_;       // times of the overflow, for sizing the buckets
-    std::size_t bucket_count_ = 16;
-    std::size_t current_ = 0;           // the bucket the front heap serves
-    double t0_ = 0, width_ = 1;         // bucket k covers [t0 + k w, t0 + (k + 1) w)
+    std::vector<std::uint32_t> head_;   // first particle of each ring bucket, the overflow and idle
+    std::vector<std::uint32_t> scratch_particles_;  // for rebuild()
+    std::vector<double> scratch_times_;
+    std::uint32_t bucket_count_ = 16;   // buckets in the ring
+    std::uint32_t bucketed_ = 0, overflowing_ = 0, idle_ = 0;  // entries in the ring, overflow, idle
+    bool built_ = false;
+    bool rebuild_wanted_ = false;
+    bool one_heap_ = false;             // no finite time at the last build: every entry in the front
+    std::uint64_t current_ = 0;         // absolute index of the bucket the front serves
+    std::uint32_t current_slot_ = 0;    // its place in the ring
+    std::uint64_t refill_at_ = 0;       // the absolute index at which the overflow is sorted in
+    std::uint64_t poured_ = 0;          // entries poured since the last refill
+    std::uint64_t builds_ = 0;
+    double t0_ = 0, width_ = 1;         // absolute bucket k covers [t0 + k w, t0 + (k + 1) w)
 };
 
 }  // namespace collide

@@ -62,6 +62,7 @@ void EventSolver::load(const Scene& scene, const ParticleState<double>& initial)
     state_ = initial;
     gx_ = scene.physics.gravity_x;
     gy_ = scene.physics.gravity_y;
+    gravity_ = gx_ != 0 || gy_ != 0;
     const World& w = scene.world;
     for (std::size_t i = 0; i < n; ++i) {
         if (state_.is_stone(i)) {
@@ -84,7 +85,6 @@ void EventSolver::load(const Scene& scene, const ParticleState<double>& initial)
     // are not written either (a random memory access per disk and collision saved).
     inelastic_ = scene.physics.restitution < 1 || scene.physics.wall_restitution < 1;
     last_collision_.assign(n, -std::numeric_limits<double>::infinity());
-    prediction_.assign(n, Prediction{});
     now_ = progress_mark_ = kinetic_mark_ = 0;
     events_since_mark_ = 0;
     pair_events_ = wall_events_ = cell_events_ = stale_events_ = tc_elastic_ = 0;
@@ -127,6 +127,7 @@ void EventSolver::load(const Scene& scene, const ParticleState<double>& initial)
     tc_ = tc_duration();
 
     queue_.reset(n);
+    for (std::uint32_t i = 0; i < n; ++i) queue_.payload(i).inv_mass = state_.inv_mass[i];
     // Stones never move and have no events of their own (the movers find their collisions
     // with them): their queue time stays infinite.
     for (std::uint32_t i = 0; i < n; ++i) {
@@ -146,11 +147,12 @@ void EventSolver::load(const Scene& scene, const ParticleState<double>& initial)
 // records (one per row of cells), a few cache lines each; in the scene's order, or after the
 // disks have diffused, each is a separate cache miss once the records outgrow the cache (N =
 // 1e5: 6.4 MB). So the disks are renumbered cell by cell at load and then every
-// renumber_interval_ events. The renumbering is exact: it moves the records, predictions
-// and queue entries as they are (no re-prediction, no position is touched), keeps each
-// cell's list in its order (so neighbours are visited in the same order and equal collision
-// times resolve the same way), and the queue breaks ties by the original index. The events
-// are therefore the same, bit for bit, as without renumbering.
+// renumber_interval_ events. The renumbering is exact: it moves the records and the calendar
+// slots with their predictions as they are (no re-prediction, no position is touched, the
+// calendar keeps its buckets), keeps each cell's list in its order (so neighbours are visited
+// in the same order and equal collision times resolve the same way), and the queue breaks
+// ties by the original index. The events are therefore the same, bit for bit, as without
+// renumbering.
 void EventSolver::renumber() {
     events_since_renumber_ = 0;
     const std::size_t n = disks_.size();
@@ -171,13 +173,8 @@ void EventSolver::renumber() {
     for (auto* a : state_.arrays()) permute(*a);
     permute(last_collision_);
     permute(original_);
-    permute(prediction_);
-    for (Prediction& p : prediction_) p.partner = new_of[p.partner];
-
-    std::vector<double> times(n);
-    for (std::size_t k = 0; k < n; ++k) times[k] = queue_.time_of(order_[k]);
-    queue_.reset(n, original_.data());
-    for (std::uint32_t k = 0; k < n; ++k) queue_.update(k, times[k]);
+    queue_.renumber(order_, new_of);
+    for (std::uint32_t k = 0; k < n; ++k) prediction(k).partner = new_of[prediction(k).partner];
 }
 
 double EventSolver::tc_duration() const {
@@ -279,7 +276,7 @@ void EventSolver::process_event() {
     // clamps to "now"), so simulated time never runs backwards.
     now_ = std::max(now_, queue_.top_time());
     check_progress(i);
-    const Prediction p = prediction_[i];
+    const Prediction p = prediction(i);
     switch (p.kind) {
     case EventKind::pair:
         if (disks_[p.partner].count != p.partner_count) {
@@ -289,8 +286,9 @@ void EventSolver::process_event() {
             return;
         }
         collide_pair(i, p.partner);
+        cells_.prefetch_neighbourhood(disks_, p.partner);  // (overlaps with predicting i)
         predict(i);  // (the disk of an event is never a stone: stones have no events)
-        if (!state_.is_stone(p.partner)) predict(p.partner);
+        if (queue_.payload(p.partner).inv_mass != 0) predict(p.partner);  // (a stone does not move)
         return;
     case EventKind::wall:
         collide_wall(i, p.border);
@@ -317,7 +315,7 @@ void EventSolver::check_progress(std::uint32_t i) {
     // A Newton's cradle of N touching disks legitimately has N events at one instant.
     const std::int64_t limit = 10 * std::int64_t(state_.size()) + 100000;
     if (++events_since_mark_ <= limit) return;
-    const Prediction& p = prediction_[i];
+    const Prediction& p = prediction(i);
     const std::string with = p.kind == EventKind::pair ? "particle " + std::to_string(original_[p.partner])
                              : p.kind == EventKind::wall ? "wall " + std::to_string(p.border)
                                                          : "a cell border";
@@ -348,7 +346,9 @@ void EventSolver::bring_to_now(std::uint32_t i) {
 void EventSolver::predict(std::uint32_t i) {
     bring_to_now(i);
     Prediction p;
-    earliest_pair(i, p, [&](auto&& visit) { cells_.for_each_neighbour(disks_, i, visit); });
+    auto neighbourhood = [&](auto&& visit) { cells_.for_each_neighbour(disks_, i, visit); };
+    if (cells_.needs_minimum_image(disks_[i].links)) earliest_pair<true>(i, p, neighbourhood);
+    else earliest_pair<false>(i, p, neighbourhood);
     file_prediction(i, p);
 }
 
@@ -360,19 +360,20 @@ void EventSolver::predict(std::uint32_t i) {
 // collision's partner has changed course, the kept time is no longer a collision: predict
 // afresh against the whole neighbourhood.
 void EventSolver::predict_after_crossing(std::uint32_t i, std::uint32_t border) {
-    Prediction p = prediction_[i];
+    Prediction p = prediction(i);
     if (p.pair_time != never && disks_[p.partner].count != p.partner_count) {
         predict(i);
         return;
     }
-    earliest_pair(i, p, [&](auto&& visit) { cells_.for_each_entered(disks_, i, border, visit); });
+    auto entered = [&](auto&& visit) { cells_.for_each_entered(disks_, i, border, visit); };
+    if (cells_.needs_minimum_image(disks_[i].links)) earliest_pair<true>(i, p, entered);
+    else earliest_pair<false>(i, p, entered);
     file_prediction(i, p);
 }
 
-template <typename VisitCells>
+template <bool MinimumImage, typename VisitCells>
 void EventSolver::earliest_pair(std::uint32_t i, Prediction& p, VisitCells&& visit_cells) const {
     const double xi = disks_[i].x, yi = disks_[i].y, vxi = disks_[i].vx, vyi = disks_[i].vy, ri = disks_[i].radius;
-    const bool periodic = scene_.periodic();
     const double width = scene_.world.width(), height = scene_.world.height();
     double best_dt = p.pair_time - now_;
     visit_cells([&](std::uint32_t j) {
@@ -380,7 +381,7 @@ void EventSolver::earliest_pair(std::uint32_t i, Prediction& p, VisitCells&& vis
         double xj, yj, vxj, vyj;
         position_now(j, xj, yj, vxj, vyj);
         double dx = xi - xj, dy = yi - yj;
-        if (periodic) {
+        if constexpr (MinimumImage) {
             // Minimum image; both centres lie in [lo, lo + L), so one shift is enough
             // (cheaper than WallLaw::minimum_image's division in this innermost loop).
             if (dx > 0.5 * width) dx -= width;
@@ -403,35 +404,69 @@ void EventSolver::file_prediction(std::uint32_t i, Prediction& p) {
     const double border_time = now_ + earliest_border_or_wall(i, p.border, p.kind);
     double t = border_time;
     if (p.pair_time < border_time) p.kind = EventKind::pair, t = p.pair_time;
-    prediction_[i] = p;
+    prediction(i) = p;
     queue_.update(i, t);
 }
 
 // The earliest crossing of one of the four borders of disk i's cell, or of a wall (its time
 // from now; `which` and `kind` say which one, kind none if there is none).
-double EventSolver::earliest_border_or_wall(std::uint32_t i, std::uint32_t& which, EventKind& kind) const {
+double EventSolver::earliest_border_or_wall(std::uint32_t i, std::uint8_t& which, EventKind& kind) const {
+    if (!gravity_) return earliest_border_or_wall_straight(i, which, kind);
     const World& w = scene_.world;
     const bool periodic = scene_.periodic();
     const double r = disks_[i].radius;
     const std::int64_t cx = cells_.column(disks_[i].links), cy = cells_.row(disks_[i].links);
     double best = never;
     kind = EventKind::none;
-    auto consider = [&](double t, EventKind k, std::uint32_t id) {
+    auto consider = [&](double t, EventKind k, std::uint8_t id) {
         if (t < best) best = t, kind = k, which = id;
     };
     // One axis: position q, velocity v, acceleration a, cell index c of n cells.
     auto axis = [&](double q, double v, double a, std::int64_t c, std::int64_t n, double border_lo, double border_hi,
-                    double wall_lo, double wall_hi, std::uint32_t lo_id) {
+                    double wall_lo, double wall_hi, std::uint8_t lo_id) {
         if (periodic || c > 0) consider(event_time::downward_crossing_time(border_lo - q, v, a), EventKind::cell, lo_id);
-        if (periodic || c < n - 1) consider(event_time::upward_crossing_time(border_hi - q, v, a), EventKind::cell, lo_id + 1);
+        if (periodic || c < n - 1) consider(event_time::upward_crossing_time(border_hi - q, v, a), EventKind::cell, std::uint8_t(lo_id + 1));
         if (periodic) return;
         consider(event_time::downward_crossing_time(wall_lo + r - q, v, a), EventKind::wall, lo_id);
-        consider(event_time::upward_crossing_time(wall_hi - r - q, v, a), EventKind::wall, lo_id + 1);
+        consider(event_time::upward_crossing_time(wall_hi - r - q, v, a), EventKind::wall, std::uint8_t(lo_id + 1));
     };
     axis(disks_[i].x, disks_[i].vx, gx_, cx, cells_.cells_x(), cells_.border_x(cx), cells_.border_x(cx + 1), w.xmin,
          w.xmax, 0);
     axis(disks_[i].y, disks_[i].vy, gy_, cy, cells_.cells_y(), cells_.border_y(cy), cells_.border_y(cy + 1), w.ymin,
          w.ymax, 2);
+    return best;
+}
+
+// The same on a straight line (no gravity), the common case. A disk moving up an axis can
+// only cross the upper border of its cell or, in the last cell of a reflecting box, reach the
+// upper wall; the lower border and wall need no look, and neither does a wall behind a cell
+// border (the border, nearer by at least a cell width minus a radius, comes first). The
+// events found are the same as the general code's, tie-breaking included.
+double EventSolver::earliest_border_or_wall_straight(std::uint32_t i, std::uint8_t& which, EventKind& kind) const {
+    const World& w = scene_.world;
+    const bool periodic = scene_.periodic();
+    const Disk& d = disks_[i];
+    const std::int64_t cx = cells_.column(d.links), cy = cells_.row(d.links);
+    double best = never;
+    kind = EventKind::none;
+    // One axis: position q, velocity v, cell index c of n cells; lo_id numbers the lower side.
+    auto axis = [&](double q, double v, std::int64_t c, std::int64_t n, double border_lo, double border_hi,
+                    double wall_lo, double wall_hi, std::uint8_t lo_id) {
+        double t = never;
+        bool border = periodic;
+        std::uint8_t id = lo_id;
+        if (v > 0) {
+            border = border || c < n - 1;
+            t = event_time::upward_crossing_time((border ? border_hi : wall_hi - d.radius) - q, v, 0);
+            id = std::uint8_t(lo_id + 1);
+        } else if (v < 0) {
+            border = border || c > 0;
+            t = event_time::downward_crossing_time((border ? border_lo : wall_lo + d.radius) - q, v, 0);
+        }
+        if (t < best) best = t, kind = border ? EventKind::cell : EventKind::wall, which = id;
+    };
+    axis(d.x, d.vx, cx, cells_.cells_x(), cells_.border_x(cx), cells_.border_x(cx + 1), w.xmin, w.xmax, 0);
+    axis(d.y, d.vy, cy, cells_.cells_y(), cells_.border_y(cy), cells_.border_y(cy + 1), w.ymin, w.ymax, 2);
     return best;
 }
 
@@ -460,7 +495,7 @@ void EventSolver::collide_pair(std::uint32_t i, std::uint32_t j) {
     const double b = dx * ux + dy * uy;  // d.u < 0: approaching
     if (!(b < 0)) return;                // a grazing contact that round-off turned into a miss
     const double d2 = dx * dx + dy * dy;
-    const double wi = state_.inv_mass[i], wj = state_.inv_mass[j];
+    const double wi = queue_.payload(i).inv_mass, wj = queue_.payload(j).inv_mass;
     const double e = restitution_now(scene_.physics.restitution, i, j);
     // Normal impulse of a smooth collision with restitution e (contact_law.h, without the
     // overlap correction and friction): J = -(1 + e) (u.n) / (w_i + w_j), n = d / |d|.

@@ -46,12 +46,21 @@ private:
     // border event: a cell crossing does not change the disk's course, so the pair collision
     // found before stays valid and only the newly entered cells need a look (predict_after_crossing).
     struct Prediction {
-        EventKind kind = EventKind::none;  // the earlier of the two events below
-        std::uint32_t border = 0;          // the wall/border number (kind wall or cell)
-        std::uint32_t partner = 0;         // the earliest pair collision: the other disk,
-        std::uint32_t partner_count = 0;   // its event counter when predicted,
-        double pair_time = event_time::never;         // and the (absolute) time of the collision
+        double pair_time = event_time::never;  // the earliest pair collision: its (absolute) time,
+        std::uint32_t partner = 0;             // the other disk,
+        std::uint32_t partner_count = 0;       // and that disk's event counter when predicted
+        EventKind kind = EventKind::none;      // the earlier of the pair collision and the event below
+        std::uint8_t border = 0;               // the wall/border number (kind wall or cell)
     };
+    // What the calendar slot of a disk carries (event_queue.h): its prediction and its inverse
+    // mass, both read at each of its events, on the slot's cache line. A stone has inverse
+    // mass 0 (core/particle_state.h).
+    struct Slot {
+        Prediction prediction;
+        double inv_mass = 0;
+    };
+    Prediction& prediction(std::uint32_t i) { return queue_.payload(i).prediction; }
+    const Prediction& prediction(std::uint32_t i) const { return queue_.payload(i).prediction; }
 
     void validate_input(const ParticleState<double>& initial) const;
     void reject_overlaps() const;
@@ -67,6 +76,10 @@ private:
         // Stones have zero velocity and scenes with stones have no gravity: no special case.
         const Disk& f = disks_[j];
         const double dt = now_ - f.t;
+        if (!gravity_) {
+            x = f.x + f.vx * dt, y = f.y + f.vy * dt, vx = f.vx, vy = f.vy;
+            return;
+        }
         x = f.x + (f.vx + 0.5 * gx_ * dt) * dt;
         y = f.y + (f.vy + 0.5 * gy_ * dt) * dt;
         vx = f.vx + gx_ * dt;
@@ -77,11 +90,13 @@ private:
     // The same after disk i crossed `border` into a new cell without changing course.
     void predict_after_crossing(std::uint32_t i, std::uint32_t border);
     // Lowers p's pair collision to the earliest one with a disk j that visit_cells(visit) visits.
-    template <typename VisitCells>
+    // MinimumImage: whether the neighbours visited may need the minimum-image convention.
+    template <bool MinimumImage, typename VisitCells>
     void earliest_pair(std::uint32_t i, Prediction& p, VisitCells&& visit_cells) const;
     // Adds disk i's earliest wall or border event to p and files the earlier event in the queue.
     void file_prediction(std::uint32_t i, Prediction& p);
-    double earliest_border_or_wall(std::uint32_t i, std::uint32_t& which, EventKind& kind) const;
+    double earliest_border_or_wall(std::uint32_t i, std::uint8_t& which, EventKind& kind) const;
+    double earliest_border_or_wall_straight(std::uint32_t i, std::uint8_t& which, EventKind& kind) const;
 
     void collide_pair(std::uint32_t i, std::uint32_t j);
     void collide_wall(std::uint32_t i, std::uint32_t wall);
@@ -117,10 +132,11 @@ private:
     std::vector<Disk> disks_;
     std::vector<double> last_collision_;  // TC model: each disk's last collision (kept if inelastic_)
     bool inelastic_ = false;               // pair or wall restitution below 1
-    std::vector<Prediction> prediction_;
     CellList cells_;
-    EventQueue queue_;
+    EventQueue<Slot> queue_;
+    static_assert(EventQueue<Slot>::slot_bytes == 64, "a disk's calendar slot should fill one cache line");
     double gx_ = 0, gy_ = 0;
+    bool gravity_ = false;             // gx_ or gy_ non-zero
     double now_ = 0;
     double tc_ = 0;
     double time_scale_ = 1;            // typical time between collisions, for the guards

@@ -8,7 +8,6 @@
 #include <string>
 
 #include "core/metrics.h"
-#include "reference/event_queue.h"
 #include "reference/event_solver.h"
 #include "tests/support/test_scenes.h"
 
@@ -17,39 +16,6 @@ namespace {
 
 using test::box_scene;
 using test::make_state;
-
-// The calendar must hand out exactly what one heap over all entries would: the earliest time,
-// ties to the lower index. Checked against a brute-force minimum over random updates that
-// mimic the solver (new times later than the current one, some equal, some infinite).
-TEST(EventQueue, CalendarOrderMatchesBruteForceMinimum) {
-    const std::uint32_t n = 500;
-    EventQueue queue;
-    queue.reset(n);
-    std::vector<double> times(n, 0.0);
-    std::mt19937_64 rng(7);
-    std::exponential_distribution<double> later(1.0);
-    std::uniform_int_distribution<std::uint32_t> pick(0, n - 1);
-    std::uniform_int_distribution<int> kind(0, 19);
-    const double never = std::numeric_limits<double>::infinity();
-    for (std::uint32_t p = 0; p < n; ++p) queue.update(p, times[p] = later(rng));
-    double now = 0;
-    for (int step = 0; step < 200000; ++step) {
-        std::uint32_t expected = 0;
-        for (std::uint32_t p = 1; p < n; ++p)
-            if (times[p] < times[expected]) expected = p;
-        ASSERT_EQ(queue.top(), expected) << "step " << step;
-        ASSERT_EQ(queue.top_time(), times[expected]);
-        now = times[expected];
-        // The top is re-predicted; now and then a second particle too (a pair collision).
-        for (std::uint32_t p : {expected, pick(rng)}) {
-            const int k = kind(rng);
-            const double t = k == 0 ? now : k == 1 ? never : now + later(rng) * (k == 2 ? 1e3 : 1.0);
-            queue.update(p, times[p] = t);
-            ASSERT_EQ(queue.time_of(p), t);
-            if (kind(rng) < 15) break;
-        }
-    }
-}
 
 ParticleState<double> run_to(const Scene& scene, const ParticleState<double>& initial, double t,
                              SolverStats* stats = nullptr) {
