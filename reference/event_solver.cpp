@@ -124,7 +124,7 @@ void EventSolver::load(const Scene& scene, const ParticleState<double>& initial)
     const double diameter = n > 0 ? 2 * r_sum / double(n) : 1.0;
     const double speed = std::max(n > 0 ? std::sqrt(v2_sum / double(n)) : 0.0, std::sqrt(std::hypot(gx_, gy_) * diameter));
     time_scale_ = speed > 0 ? diameter / speed : 1.0;
-    tc_ = tc_duration();
+    read_options(n);
 
     queue_.reset(n);
     for (std::uint32_t i = 0; i < n; ++i) queue_.payload(i).inv_mass = state_.inv_mass[i];
@@ -138,7 +138,6 @@ void EventSolver::load(const Scene& scene, const ParticleState<double>& initial)
 
     original_.resize(n);
     for (std::uint32_t i = 0; i < n; ++i) original_[i] = i;
-    renumber_interval_ = renumber_events_per_disk * std::int64_t(n) + 1000;
     renumber();
 }
 
@@ -177,7 +176,10 @@ void EventSolver::renumber() {
     for (std::uint32_t k = 0; k < n; ++k) prediction(k).partner = new_of[prediction(k).partner];
 }
 
-double EventSolver::tc_duration() const {
+// Reads [backend.event]: tc (the TC model's duration) and renumber_interval (events between
+// renumberings; the default suits every scene, the option is there to test the renumbering
+// itself and to measure its effect).
+void EventSolver::read_options(std::size_t n) {
     // TC model (S. Luding and S. McNamara, Granular Matter 1 (1998) 113): a collision that
     // follows another collision of the same disk within t_c is treated as elastic. This stops
     // the inelastic collapse of e < 1 (infinitely many collisions in finite time, McNamara &
@@ -187,24 +189,34 @@ double EventSolver::tc_duration() const {
     // enough that a column settling on a floor under gravity stays resolvable in double (with
     // 1e-6 the gaps fall below the rounding of the positions and the loop stalls). The counter
     // `tc_elastic` says how many collisions were made elastic.
-    double tc = 1e-4 * time_scale_;
+    tc_ = 1e-4 * time_scale_;
+    renumber_interval_ = renumber_events_per_disk * std::int64_t(n) + 1000;
     auto options = scene_.backend_options.find("event");
-    if (options == scene_.backend_options.end()) return tc;
+    if (options == scene_.backend_options.end()) return;
+    const std::string where = "event: scene '" + scene_.name + "' [backend.event]";
     for (const auto& [key, value] : options->second) {
-        if (key != "tc")
-            throw std::runtime_error("event: scene '" + scene_.name + "' [backend.event]: unknown key '" + key +
-                                     "' (known: tc)");
         std::size_t used = 0;
-        try {
-            tc = std::stod(value, &used);
-        } catch (const std::exception&) {
-            used = 0;
+        if (key == "tc") {
+            try {
+                tc_ = std::stod(value, &used);
+            } catch (const std::exception&) {
+                used = 0;
+            }
+            if (used != value.size() || !(tc_ >= 0) || !std::isfinite(tc_))
+                throw std::runtime_error(where + " tc = '" + value + "': expected a duration >= 0");
+        } else if (key == "renumber_interval") {
+            try {
+                renumber_interval_ = std::stoll(value, &used);
+            } catch (const std::exception&) {
+                used = 0;
+            }
+            if (used != value.size() || renumber_interval_ < 1)
+                throw std::runtime_error(where + " renumber_interval = '" + value +
+                                         "': expected a whole number of events >= 1");
+        } else {
+            throw std::runtime_error(where + ": unknown key '" + key + "' (known: tc, renumber_interval)");
         }
-        if (used != value.size() || !(tc >= 0) || !std::isfinite(tc))
-            throw std::runtime_error("event: scene '" + scene_.name + "' [backend.event] tc = '" + value +
-                                     "': expected a duration >= 0");
     }
-    return tc;
 }
 
 void EventSolver::validate_input(const ParticleState<double>& s) const {

@@ -36,7 +36,7 @@ public:
     SolverStats stats() const override;
     std::map<std::string, std::string> provenance() const override;
 
-    // The collapse-guard duration t_c of the TC model in use (see tc_duration in the .cpp).
+    // The collapse-guard duration t_c of the TC model in use (see read_options in the .cpp).
     double tc() const { return tc_; }
 
 private:
@@ -103,7 +103,7 @@ private:
     void cross_cell(std::uint32_t i, std::uint32_t border);
     // Restitution for a collision now, after the TC model (Luding & McNamara 1998).
     double restitution_now(double e, std::uint32_t i, std::uint32_t j);
-    double tc_duration() const;
+    void read_options(std::size_t n);
     double kinetic_energy_now() const;
 
     // One disk: its free flight (position and velocity valid at the disk's own clock t), its

@@ -237,7 +237,16 @@ TEST(EventSolverInput, FrictionAndDampingAreLeftOutWithReason) {
 TEST(EventSolverInput, UnknownBackendOptionIsRejected) {
     Scene scene = box_scene(10, 10);
     scene.backend_options["event"]["t_c"] = "1e-3";
-    expect_error([&] { run_to(scene, make_state({{5, 5, 0, 0, 0.5, 1}}), 1); }, {"t_c", "known: tc"});
+    expect_error([&] { run_to(scene, make_state({{5, 5, 0, 0, 0.5, 1}}), 1); }, {"t_c", "known: tc, renumber_interval"});
+}
+
+TEST(EventSolverInput, RenumberIntervalMustBeAPositiveWholeNumber) {
+    for (const char* bad : {"0", "-3", "2.5", "7x", "many"}) {
+        Scene scene = box_scene(10, 10);
+        scene.backend_options["event"]["renumber_interval"] = bad;
+        expect_error([&] { run_to(scene, make_state({{5, 5, 0, 0, 0.5, 1}}), 1); },
+                     {"renumber_interval", bad, "whole number of events >= 1"});
+    }
 }
 
 // --- Inelastic collapse and the progress guard -----------------------------------------
