@@ -96,14 +96,8 @@ public:
         // Away from the edges no cell wraps or falls outside. The nine list heads are read
         // first and their first records requested from memory together: walking a list one
         // record after another would wait for each cache miss in turn.
-        const std::uint32_t* corner = &head_[std::size_t((cy - 1) * cells_x_ + cx - 1)];
         std::uint32_t first[9];
-        for (int r = 0; r < 3; ++r)
-            for (int c = 0; c < 3; ++c) {
-                const std::uint32_t j = corner[r * cells_x_ + c];
-                first[3 * r + c] = j;
-                if (j != none) __builtin_prefetch(&disks[j]);
-            }
+        read_interior_heads(disks, cx, cy, first);
         for (std::uint32_t head : first)
             for (std::uint32_t j = head; j != none; j = disks[j].links.next) visit(j);
     }
@@ -114,11 +108,8 @@ public:
     template <typename Disks>
     void prefetch_neighbourhood(const Disks& disks, std::uint32_t i) const {
         const std::int64_t cx = column(disks[i].links), cy = row(disks[i].links);
-        if (!interior(cx, cy)) return;
-        const std::uint32_t* corner = &head_[std::size_t((cy - 1) * cells_x_ + cx - 1)];
-        for (int r = 0; r < 3; ++r)
-            for (int c = 0; c < 3; ++c)
-                if (const std::uint32_t j = corner[r * cells_x_ + c]; j != none) __builtin_prefetch(&disks[j]);
+        std::uint32_t first[9];
+        if (interior(cx, cy)) read_interior_heads(disks, cx, cy, first);
     }
 
     // Whether the disks a disk in this cell can touch need the minimum-image convention: only
@@ -186,6 +177,18 @@ private:
         }
     }
 
+    // Reads the heads of the 3x3 block around interior cell (cx, cy) into first[] (row by row)
+    // and asks the memory for each head's record without waiting for it.
+    template <typename Disks>
+    void read_interior_heads(const Disks& disks, std::int64_t cx, std::int64_t cy, std::uint32_t first[9]) const {
+        const std::uint32_t* corner = &head_[std::size_t((cy - 1) * cells_x_ + cx - 1)];
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) {
+                const std::uint32_t j = corner[r * cells_x_ + c];
+                first[3 * r + c] = j;
+                if (j != none) __builtin_prefetch(&disks[j]);
+            }
+    }
     // A cell whose 3x3 block lies inside the grid.
     bool interior(std::int64_t cx, std::int64_t cy) const {
         return cx > 0 && cy > 0 && cx + 1 < cells_x_ && cy + 1 < cells_y_;

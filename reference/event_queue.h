@@ -25,10 +25,10 @@
 // The order is exactly that of one heap over all entries: a bucket's absolute index
 // floor((t - t0) / w) never decreases with t, the front holds the entries up to the current
 // index, the ring those of the next bucket_count indices and the overflow later ones, and
-// inside the front ties are broken by a key per particle (its index unless the caller gives
-// keys), so the order of simultaneous events is deterministic. The solver renumbers its
-// particles now and then for memory locality; the keys travel with the particles, so the
-// renumbering does not change the order.
+// inside the front ties are broken by a key per particle (its index at reset), so the order of
+// simultaneous events is deterministic. The solver renumbers its particles now and then for
+// memory locality; the keys travel with the particles (renumber), so the renumbering does not
+// change the order.
 //
 // Each particle's slot can carry a payload of the caller's (the solver keeps its prediction
 // there): the slot is read and written at every event of the particle anyway, so what shares
@@ -50,12 +50,12 @@ struct NoPayload {};
 template <typename Payload = NoPayload>
 class EventQueue {
 public:
-    // Empties the queue for n particles with keys 0..n-1 (or keys[p], distinct, if given); every
-    // time is unset until update() sets it.
-    void reset(std::size_t n, const std::uint32_t* keys = nullptr) {
+    // Empties the queue for n particles with keys 0..n-1; every time is unset until update()
+    // sets it.
+    void reset(std::size_t n) {
         if (n > max_particles) throw std::length_error("event queue: more than 2^32 - 16 particles");
         node_.assign(n, Node{});
-        for (std::uint32_t p = 0; p < n; ++p) node_[p].key = keys ? keys[p] : p;
+        for (std::uint32_t p = 0; p < n; ++p) node_[p].key = p;
         heap_.clear();
         bucket_count_ = std::uint32_t(std::max<std::size_t>(16, n));
         head_.assign(std::size_t(bucket_count_) + 2, none);  // the ring, then overflow and idle

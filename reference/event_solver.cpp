@@ -28,6 +28,19 @@ std::string describe(double v) {
     return s.str();
 }
 
+// Parses the whole text with parse (std::stod or std::stoll, which alone would accept "7x");
+// nothing if it is not a number or has anything after one.
+template <typename Parse>
+auto parse_whole(const std::string& text, Parse parse) -> std::optional<decltype(parse(text, nullptr))> {
+    std::size_t used = 0;
+    try {
+        const auto value = parse(text, &used);
+        if (used == text.size()) return value;
+    } catch (const std::exception&) {
+    }
+    return std::nullopt;
+}
+
 bool scene_has_stones(const Scene& scene) {
     for (const auto& g : scene.generators) {
         if (g.stone) return true;
@@ -195,24 +208,18 @@ void EventSolver::read_options(std::size_t n) {
     if (options == scene_.backend_options.end()) return;
     const std::string where = "event: scene '" + scene_.name + "' [backend.event]";
     for (const auto& [key, value] : options->second) {
-        std::size_t used = 0;
         if (key == "tc") {
-            try {
-                tc_ = std::stod(value, &used);
-            } catch (const std::exception&) {
-                used = 0;
-            }
-            if (used != value.size() || !(tc_ >= 0) || !std::isfinite(tc_))
+            const auto tc = parse_whole(value, [](const std::string& t, std::size_t* used) { return std::stod(t, used); });
+            if (!tc || !(*tc >= 0) || !std::isfinite(*tc))
                 throw std::runtime_error(where + " tc = '" + value + "': expected a duration >= 0");
+            tc_ = *tc;
         } else if (key == "renumber_interval") {
-            try {
-                renumber_interval_ = std::stoll(value, &used);
-            } catch (const std::exception&) {
-                used = 0;
-            }
-            if (used != value.size() || renumber_interval_ < 1)
+            const auto interval =
+                parse_whole(value, [](const std::string& t, std::size_t* used) { return std::stoll(t, used); });
+            if (!interval || *interval < 1)
                 throw std::runtime_error(where + " renumber_interval = '" + value +
                                          "': expected a whole number of events >= 1");
+            renumber_interval_ = *interval;
         } else {
             throw std::runtime_error(where + ": unknown key '" + key + "' (known: tc, renumber_interval)");
         }
@@ -358,9 +365,7 @@ void EventSolver::bring_to_now(std::uint32_t i) {
 void EventSolver::predict(std::uint32_t i) {
     bring_to_now(i);
     Prediction p;
-    auto neighbourhood = [&](auto&& visit) { cells_.for_each_neighbour(disks_, i, visit); };
-    if (cells_.needs_minimum_image(disks_[i].links)) earliest_pair<true>(i, p, neighbourhood);
-    else earliest_pair<false>(i, p, neighbourhood);
+    earliest_pair(i, p, [&](auto&& visit) { cells_.for_each_neighbour(disks_, i, visit); });
     file_prediction(i, p);
 }
 
@@ -377,14 +382,20 @@ void EventSolver::predict_after_crossing(std::uint32_t i, std::uint32_t border) 
         predict(i);
         return;
     }
-    auto entered = [&](auto&& visit) { cells_.for_each_entered(disks_, i, border, visit); };
-    if (cells_.needs_minimum_image(disks_[i].links)) earliest_pair<true>(i, p, entered);
-    else earliest_pair<false>(i, p, entered);
+    earliest_pair(i, p, [&](auto&& visit) { cells_.for_each_entered(disks_, i, border, visit); });
     file_prediction(i, p);
 }
 
-template <bool MinimumImage, typename VisitCells>
+// Only disks in the cells along the edges of a periodic box can have neighbours across a side;
+// elsewhere the minimum-image test is left out of the innermost loop.
+template <typename VisitCells>
 void EventSolver::earliest_pair(std::uint32_t i, Prediction& p, VisitCells&& visit_cells) const {
+    if (cells_.needs_minimum_image(disks_[i].links)) earliest_pair_in<true>(i, p, visit_cells);
+    else earliest_pair_in<false>(i, p, visit_cells);
+}
+
+template <bool MinimumImage, typename VisitCells>
+void EventSolver::earliest_pair_in(std::uint32_t i, Prediction& p, VisitCells& visit_cells) const {
     const double xi = disks_[i].x, yi = disks_[i].y, vxi = disks_[i].vx, vyi = disks_[i].vy, ri = disks_[i].radius;
     const double width = scene_.world.width(), height = scene_.world.height();
     double best_dt = p.pair_time - now_;

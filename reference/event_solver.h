@@ -90,9 +90,11 @@ private:
     // The same after disk i crossed `border` into a new cell without changing course.
     void predict_after_crossing(std::uint32_t i, std::uint32_t border);
     // Lowers p's pair collision to the earliest one with a disk j that visit_cells(visit) visits.
-    // MinimumImage: whether the neighbours visited may need the minimum-image convention.
-    template <bool MinimumImage, typename VisitCells>
+    template <typename VisitCells>
     void earliest_pair(std::uint32_t i, Prediction& p, VisitCells&& visit_cells) const;
+    // The same, MinimumImage saying whether the neighbours visited may lie across a periodic side.
+    template <bool MinimumImage, typename VisitCells>
+    void earliest_pair_in(std::uint32_t i, Prediction& p, VisitCells& visit_cells) const;
     // Adds disk i's earliest wall or border event to p and files the earlier event in the queue.
     void file_prediction(std::uint32_t i, Prediction& p);
     double earliest_border_or_wall(std::uint32_t i, std::uint8_t& which, EventKind& kind) const;
