@@ -7,6 +7,9 @@
 #include <limits>
 #include <stdexcept>
 #include <thread>
+#include <vector>
+
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 
@@ -98,8 +101,21 @@ validation::Suite test_suite(const Scene& scene, const std::vector<std::string>&
 }
 
 std::string fresh_output_dir(const std::string& name) {
-    const auto dir = std::filesystem::path(::testing::TempDir()) / ("collide_validation_" + name);
+    // The process id keeps apart tests that ctest runs at the same time (each test is a
+    // process of its own, and several tests of one file ask for the same name); the
+    // directories go when the test process ends.
+    struct Made {
+        std::vector<std::filesystem::path> dirs;
+        ~Made() {
+            std::error_code ignored;
+            for (const auto& d : dirs) std::filesystem::remove_all(d, ignored);
+        }
+    };
+    static Made made;
+    const auto dir = std::filesystem::path(::testing::TempDir()) /
+                     ("collide_validation_" + name + "_" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir);
+    made.dirs.push_back(dir);
     return dir.string();
 }
 

@@ -27,7 +27,7 @@ Scene two_disk_scene(const std::string& name = "two_disks");
 // A suite over `scene` with `backends`, seeds 1 and 2, no HDF5 output, short time limit.
 validation::Suite test_suite(const Scene& scene, const std::vector<std::string>& backends);
 
-// A fresh, empty directory for one test's output.
+// A fresh, empty directory for one test's output (per process; removed when the process ends).
 std::string fresh_output_dir(const std::string& name);
 
 }  // namespace collide::test
