@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/huge_page_allocator.h"
 #include "core/scene.h"
 
 namespace collide {
@@ -102,14 +103,57 @@ public:
             for (std::uint32_t j = head; j != none; j = disks[j].links.next) visit(j);
     }
 
-    // Requests from memory the first record of each list in the 3x3 block around disk i's
-    // cell (interior cells only), without waiting for them: issued before other work, the
-    // misses of a later for_each_neighbour overlap with that work.
+    // Prefetching. Successive events of the solver fall at unrelated places in the box, so once
+    // the disk records outgrow the cache, walking a block of cells means a chain of cache
+    // misses: the list heads, then the records they name, then the records those name. The
+    // solver knows the coming events a few events ahead and walks each chain one link per
+    // event ahead of time (EventSolver::prefetch_upcoming), with the methods below. They only
+    // request memory; nothing they do changes a result.
+
+    // A rectangle of cells, columns x0..x1 and rows y0..y1; empty when any of its cells would
+    // wrap around a periodic side or fall outside the grid (such blocks are not prefetched).
+    struct Block {
+        std::int64_t x0 = 0, x1 = -1, y0 = 0, y1 = -1;
+    };
+    // The 3x3 block around a disk's cell (what for_each_neighbour walks).
+    Block neighbourhood_block(const CellLinks& l) const {
+        const std::int64_t cx = column(l), cy = row(l);
+        return inside({cx - 1, cx + 1, cy - 1, cy + 1});
+    }
+    // The three cells that for_each_entered walks after a disk in cell l has crossed `border`
+    // (crossed: l is the cell entered; not yet crossed: l is the cell it is about to leave).
+    Block entered_block(const CellLinks& l, std::uint32_t border, bool crossed) const {
+        std::int64_t cx = column(l), cy = row(l);
+        if (!crossed) {
+            cx += border == 0 ? -1 : border == 1 ? 1 : 0;
+            cy += border == 2 ? -1 : border == 3 ? 1 : 0;
+        }
+        return inside(entered_cells(cx, cy, border));
+    }
+    // Requests the list heads of a block (each row of at most three heads lies within at
+    // most two cache lines).
+    void prefetch_heads(const Block& b) const {
+        for (std::int64_t y = b.y0; y <= b.y1; ++y) {
+            __builtin_prefetch(&head_[std::size_t(y * cells_x_ + b.x0)]);
+            __builtin_prefetch(&head_[std::size_t(y * cells_x_ + b.x1)]);
+        }
+    }
+    // Requests the record at `depth` (0: the first, 1: the second) of each list of a block,
+    // reading the heads (and for depth 1 the first records), which should have been requested
+    // an event earlier.
+    template <typename Disks>
+    void prefetch_records(const Disks& disks, const Block& b, int depth) const {
+        for (std::int64_t y = b.y0; y <= b.y1; ++y)
+            for (std::int64_t x = b.x0; x <= b.x1; ++x) {
+                std::uint32_t j = head_[std::size_t(y * cells_x_ + x)];
+                for (int d = 0; d < depth && j != none; ++d) j = disks[j].links.next;
+                if (j != none) __builtin_prefetch(&disks[j]);
+            }
+    }
+    // Requests the first record of each list around disk i's cell.
     template <typename Disks>
     void prefetch_neighbourhood(const Disks& disks, std::uint32_t i) const {
-        const std::int64_t cx = column(disks[i].links), cy = row(disks[i].links);
-        std::uint32_t first[9];
-        if (interior(cx, cy)) read_interior_heads(disks, cx, cy, first);
+        prefetch_records(disks, neighbourhood_block(disks[i].links), 0);
     }
 
     // Whether the disks a disk in this cell can touch need the minimum-image convention: only
@@ -125,13 +169,8 @@ public:
     // y): the far column (or row) of three cells. The other six cells were neighbours before.
     template <typename Disks, typename Visit>
     void for_each_entered(const Disks& disks, std::uint32_t i, std::uint32_t border, Visit&& visit) const {
-        const std::int64_t cx = column(disks[i].links), cy = row(disks[i].links);
-        switch (border) {
-        case 0: for_each_in_block(disks, cx - 1, cx - 1, cy - 1, cy + 1, visit); break;
-        case 1: for_each_in_block(disks, cx + 1, cx + 1, cy - 1, cy + 1, visit); break;
-        case 2: for_each_in_block(disks, cx - 1, cx + 1, cy - 1, cy - 1, visit); break;
-        default: for_each_in_block(disks, cx - 1, cx + 1, cy + 1, cy + 1, visit); break;
-        }
+        const Block b = entered_cells(column(disks[i].links), row(disks[i].links), border);
+        for_each_in_block(disks, b.x0, b.x1, b.y0, b.y1, visit);
     }
 
     // Renumbering for memory locality (EventSolver::renumber). cell_order lists the disks cell
@@ -189,6 +228,19 @@ private:
                 if (j != none) __builtin_prefetch(&disks[j]);
             }
     }
+    // The far column (or row) of the 3x3 block around cell (cx, cy), on the side of `border`
+    // (unwrapped: it may reach past the grid).
+    static Block entered_cells(std::int64_t cx, std::int64_t cy, std::uint32_t border) {
+        switch (border) {
+        case 0: return {cx - 1, cx - 1, cy - 1, cy + 1};
+        case 1: return {cx + 1, cx + 1, cy - 1, cy + 1};
+        case 2: return {cx - 1, cx + 1, cy - 1, cy - 1};
+        default: return {cx - 1, cx + 1, cy + 1, cy + 1};
+        }
+    }
+    Block inside(const Block& b) const {
+        return b.x0 >= 0 && b.y0 >= 0 && b.x1 < cells_x_ && b.y1 < cells_y_ ? b : Block{};
+    }
     // A cell whose 3x3 block lies inside the grid.
     bool interior(std::int64_t cx, std::int64_t cy) const {
         return cx > 0 && cy > 0 && cx + 1 < cells_x_ && cy + 1 < cells_y_;
@@ -207,7 +259,7 @@ private:
     bool periodic_ = false;
     std::int64_t cells_x_ = 1, cells_y_ = 1;
     double cell_w_ = 1, cell_h_ = 1;
-    std::vector<std::uint32_t> head_;  // first disk of each cell (the links live in the disks)
+    HugePageVector<std::uint32_t> head_;  // first disk of each cell (the links live in the disks)
 };
 
 }  // namespace collide

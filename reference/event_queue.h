@@ -43,6 +43,8 @@
 #include <type_traits>
 #include <vector>
 
+#include "core/huge_page_allocator.h"
+
 namespace collide {
 
 struct NoPayload {};
@@ -50,6 +52,8 @@ struct NoPayload {};
 template <typename Payload = NoPayload>
 class EventQueue {
 public:
+    static constexpr std::uint32_t none = 0xffffffffu;  // no particle (next_upcoming)
+
     // Empties the queue for n particles with keys 0..n-1; every time is unset until update()
     // sets it.
     void reset(std::size_t n) {
@@ -57,6 +61,7 @@ public:
         node_.assign(n, Node{});
         for (std::uint32_t p = 0; p < n; ++p) node_[p].key = p;
         heap_.clear();
+        waiting_count_ = 0;
         bucket_count_ = std::uint32_t(std::max<std::size_t>(16, n));
         head_.assign(std::size_t(bucket_count_) + 2, none);  // the ring, then overflow and idle
         bucketed_ = overflowing_ = idle_ = 0;
@@ -88,6 +93,9 @@ public:
                 return;
             }
             heap_remove(node.index);
+        } else if (node.bucket == waiting) {
+            if (target == node.index) return;  // already waiting for that list
+            forget_waiting(particle);
         } else {
             if (target == node.bucket) return;  // same unsorted list
             unlink(particle);
@@ -95,34 +103,66 @@ public:
         file(particle, target);
     }
 
+    // Look-ahead for prefetching: each call walks one entry further through the lists of the
+    // next few ring buckets (the events of the near future, in no particular order within a
+    // bucket) and returns that particle, or `none` when the walk has reached its horizon. The
+    // caller requests the memory of the particles it is given, so that their cache misses
+    // overlap with the work of earlier events. The walk reads only the slots of particles it
+    // returned on an earlier call (whose line the caller has requested by then) and the ring's
+    // list heads. It is a hint and nothing more: an entry that moved to another list since
+    // (re-predicted, or poured into the front) only makes the walk wander off into that list,
+    // which ends like every list, and entries filed behind it are missed (they were just
+    // predicted, so their memory is in the cache anyway).
+    std::uint32_t next_upcoming() {
+        if (!built_ || one_heap_) return none;
+        // Follow the list only while the entry reached last is still in it (not re-filed, and
+        // its bucket not yet poured into the front).
+        if (ahead_ != none && ahead_index_ > current_ && node_[ahead_].bucket == ring_slot(ahead_index_)) {
+            ahead_ = node_[ahead_].next;
+            if (ahead_ != none) return ahead_;
+        }
+        ahead_ = none;
+        if (ahead_index_ < current_) ahead_index_ = current_;
+        while (ahead_index_ < current_ + look_ahead_buckets) {
+            ++ahead_index_;
+            ahead_ = head_[ring_slot(ahead_index_)];
+            if (ahead_ != none) return ahead_;
+        }
+        return none;
+    }
+    // The slot's memory address, for prefetching.
+    const void* slot_address(std::uint32_t particle) const { return &node_[particle]; }
+
     // Renumbers the particles: particle k becomes what particle order[k] was (time, key,
     // payload and place in the calendar); new_of is the inverse of order. The calendar keeps
     // its buckets, so the order of events is unchanged and nothing is rebuilt.
     void renumber(const std::vector<std::uint32_t>& order, const std::vector<std::uint32_t>& new_of) {
+        link_all_waiting();
         auto renamed = [&](std::uint32_t p) { return p == none ? none : new_of[p]; };
-        std::vector<Node> old;
-        old.swap(node_);
-        node_.resize(old.size());
+        node_scratch_.resize(node_.size());  // (kept between renumberings: no new pages to clear)
         for (std::size_t k = 0; k < order.size(); ++k) {
-            Node node = old[order[k]];
+            Node node = node_[order[k]];
             node.next = renamed(node.next);
             node.prev = renamed(node.prev);
-            node_[k] = node;
+            node_scratch_[k] = node;
         }
+        node_.swap(node_scratch_);
         for (std::uint32_t& h : head_) h = renamed(h);
         for (Entry& e : heap_) e.particle = new_of[e.particle];
+        ahead_ = renamed(ahead_);
     }
 
 private:
-    static constexpr std::uint32_t none = 0xffffffffu;
     static constexpr std::uint32_t front = 0xfffffffeu;
+    static constexpr std::uint32_t waiting = 0xfffffffdu;  // bucket of an entry not yet linked (link_soon)
+    static constexpr std::uint32_t max_waiting = 4;
     static constexpr std::size_t max_particles = 0xfffffff0u;
 
     // With a payload the slot is given a cache line of its own (the solver's fills one).
     struct alignas(std::is_empty_v<Payload> ? alignof(double) : 64) Node {
         double time = 0;
-        std::uint32_t bucket = 0;      // front, a ring bucket, overflow() or idle()
-        std::uint32_t index = none;    // position in the front heap (bucket == front)
+        std::uint32_t bucket = 0;      // front, waiting, a ring bucket, overflow() or idle()
+        std::uint32_t index = none;    // position in the front heap (front), or the list it waits for (waiting)
         std::uint32_t next = none, prev = none;  // neighbours in the bucket's list
         std::uint32_t key = 0;         // breaks ties between equal times
         [[no_unique_address]] Payload payload{};
@@ -140,6 +180,15 @@ private:
         std::uint32_t key;
     };
 
+    // How many ring buckets beyond the one being served next_upcoming() walks.
+    static constexpr std::uint64_t look_ahead_buckets = 2;
+
+    // The ring slot of absolute bucket index k (current_ <= k < current_ + bucket_count_).
+    std::uint32_t ring_slot(std::uint64_t k) const {
+        const std::uint64_t b = current_slot_ + (k - current_);
+        return std::uint32_t(b >= bucket_count_ ? b - bucket_count_ : b);
+    }
+
     std::uint32_t overflow() const { return bucket_count_; }
     std::uint32_t idle() const { return bucket_count_ + 1; }
 
@@ -156,22 +205,58 @@ private:
         return b >= bucket_count_ ? b - bucket_count_ : b;
     }
 
-    // Puts a particle that is in no list into the front heap or the list `target`.
+    // Puts a particle that is in no list into the front heap or (soon) the list `target`.
     void file(std::uint32_t p, std::uint32_t target) {
         if (target == front) heap_push(p);
-        else link(p, target);
+        else link_soon(p, target);
+    }
+
+    // Deferred linking. Linking an entry into a list reads the list's head, which for a ring
+    // of N buckets is a cache miss at a random place once N is large, and the processor would
+    // wait for it. So an entry bound for a ring bucket, the overflow or the idle list is linked
+    // a few updates later: the head is requested from memory at once and read when the entry
+    // is linked. Meanwhile the entry waits in a short queue, which is emptied before anything
+    // walks the lists (pouring a bucket into the front, refilling, rebuilding, renumbering).
+    // A waiting entry's bucket lies beyond the one being served (the bucket index is taken
+    // when the update comes, and the index being served moves on only after the queue is
+    // emptied), so the front, and with it the order of events, is the same as without the wait.
+    void link_soon(std::uint32_t p, std::uint32_t target) {
+        if (waiting_count_ == max_waiting) link_oldest_waiting();
+        __builtin_prefetch(&head_[target]);
+        node_[p].bucket = waiting;
+        node_[p].index = target;  // (index is free: it is used only in the front)
+        waiting_[waiting_count_++] = p;
+    }
+    void link_oldest_waiting() {
+        const std::uint32_t p = waiting_[0];
+        std::copy(waiting_ + 1, waiting_ + waiting_count_, waiting_);
+        --waiting_count_;
+        link(p, node_[p].index);
+    }
+    void link_all_waiting() {
+        while (waiting_count_ > 0) link_oldest_waiting();
+    }
+    // Drops a waiting particle from the queue without linking it (it is being re-filed).
+    void forget_waiting(std::uint32_t p) {
+        std::uint32_t* at = std::find(waiting_, waiting_ + waiting_count_, p);
+        std::copy(at + 1, waiting_ + waiting_count_, at);
+        --waiting_count_;
     }
 
     // Makes the front heap non-empty (the queue is not empty).
     void settle() {
         while (heap_.empty()) {
+            link_all_waiting();
             if (!built_ || rebuild_wanted_ || bucketed_ == 0) {
                 if (!rebuild()) return;
                 continue;
             }
             ++current_;
             if (++current_slot_ == bucket_count_) current_slot_ = 0;
-            if (current_ >= refill_at_) refill();
+            if (current_ >= refill_at_) {
+                refill();
+                link_all_waiting();
+            }
             pour(current_slot_);
         }
     }
@@ -217,6 +302,7 @@ private:
     // that of one heap; if all finite times are equal, the width is infinite and the finite
     // ones go there.
     bool rebuild() {
+        link_all_waiting();
         ++builds_;
         scratch_particles_.clear();
         auto take_list = [&](std::uint32_t bucket) {
@@ -249,6 +335,8 @@ private:
         rebuild_wanted_ = false;
         current_ = 0;
         current_slot_ = 0;
+        ahead_ = none;
+        ahead_index_ = 0;
         refill_at_ = bucket_count_ / 2;
         poured_ = 0;
         for (std::uint32_t p : scratch_particles_) file(p, bucket_of(node_[p].time));
@@ -321,9 +409,10 @@ private:
         place(k, moving);
     }
 
-    std::vector<Node> node_;            // per particle: time and place in the calendar
+    HugePageVector<Node> node_;         // per particle: time and place in the calendar
+    HugePageVector<Node> node_scratch_;  // for renumber()
     std::vector<Entry> heap_;           // the front: (time, particle) in heap order
-    std::vector<std::uint32_t> head_;   // first particle of each ring bucket, the overflow and idle
+    HugePageVector<std::uint32_t> head_;  // first particle of each ring bucket, the overflow and idle
     std::vector<std::uint32_t> scratch_particles_;  // for rebuild()
     std::vector<double> scratch_times_;
     std::uint32_t bucket_count_ = 16;   // buckets in the ring
@@ -336,6 +425,10 @@ private:
     std::uint64_t refill_at_ = 0;       // the absolute index at which the overflow is sorted in
     std::uint64_t poured_ = 0;          // entries poured since the last refill
     std::uint64_t builds_ = 0;
+    std::uint32_t waiting_[max_waiting] = {};  // link_soon(): particles not yet linked, oldest first
+    std::uint32_t waiting_count_ = 0;
+    std::uint32_t ahead_ = none;        // next_upcoming(): the entry reached last
+    std::uint64_t ahead_index_ = 0;     // and the absolute index of the bucket it was reached in
     double t0_ = 0, width_ = 1;         // absolute bucket k covers [t0 + k w, t0 + (k + 1) w)
 };
 

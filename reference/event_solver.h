@@ -18,6 +18,7 @@
 #include "cell_list.h"
 #include "collision_time.h"
 #include "core/compensated_sum.h"
+#include "core/huge_page_allocator.h"
 #include "core/solver.h"
 #include "event_queue.h"
 
@@ -65,6 +66,10 @@ private:
     void validate_input(const ParticleState<double>& initial) const;
     void reject_overlaps() const;
     void process_event();
+    // Requests the memory of the coming events ahead of time (see the .cpp).
+    void prefetch_upcoming();
+    // The cells the coming event of disk k will look at (for prefetching).
+    CellList::Block cells_to_visit(std::uint32_t k) const;
     // Renumbers the disks cell by cell (see renumber_interval_ and docs/event-driven.md).
     void renumber();
     void check_progress(std::uint32_t i);
@@ -129,13 +134,21 @@ private:
     std::vector<std::uint32_t> original_;
     std::int64_t renumber_interval_ = 0;
     std::int64_t events_since_renumber_ = 0;
-    std::vector<Disk> disks_scratch_;  // for renumber()
-    std::vector<std::uint32_t> order_;
-    std::vector<Disk> disks_;
+    // Scratch space for renumber(), kept so that no renumbering allocates (and clears) memory.
+    HugePageVector<Disk> disks_scratch_;
+    std::vector<double> real_scratch_;
+    std::vector<std::uint32_t> index_scratch_;
+    std::vector<std::uint32_t> order_;   // renumber(): order_[new] = old
+    std::vector<std::uint32_t> new_of_;  // and new_of_[old] = new
+    HugePageVector<Disk> disks_;  // (huge pages: read at random places, see the allocator)
     std::vector<double> last_collision_;  // TC model: each disk's last collision (kept if inelastic_)
     bool inelastic_ = false;               // pair or wall restitution below 1
     CellList cells_;
     EventQueue<Slot> queue_;
+    // prefetch_upcoming(): whether it runs (large N only), and the disks of coming events at
+    // stages 1, 2 and 3 of their prefetch chain (EventQueue::none if none).
+    bool prefetch_ = false;
+    std::uint32_t upcoming_[3] = {EventQueue<Slot>::none, EventQueue<Slot>::none, EventQueue<Slot>::none};
     static_assert(EventQueue<Slot>::slot_bytes == 64, "a disk's calendar slot should fill one cache line");
     double gx_ = 0, gy_ = 0;
     bool gravity_ = false;             // gx_ or gy_ non-zero

@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <random>
 #include <string>
@@ -374,6 +375,47 @@ TEST(EventBruteForce, RenumberingChangesNoBit) {
             ASSERT_EQ(state.y[i], reference.y[i]) << "disk " << i << ", renumber_interval " << interval;
             ASSERT_EQ(state.vx[i], reference.vx[i]) << "disk " << i << ", renumber_interval " << interval;
             ASSERT_EQ(state.vy[i], reference.vy[i]) << "disk " << i << ", renumber_interval " << interval;
+        }
+    }
+}
+
+// Prefetching the coming events (EventSolver::prefetch_upcoming) only requests memory: forced
+// on in a small periodic gas (with renumbering every 7 events, which resets the look-ahead),
+// in a reflecting box (whose edge cells are not prefetched), and left to "auto" above its
+// threshold, the state is the same to the last bit as with prefetching off.
+TEST(EventBruteForce, PrefetchingChangesNoBit) {
+    const std::vector<Species> two = {{0.4, 1.0}, {0.5, 2.0}};
+    auto final_state = [](const Gas& gas, double t, const std::map<std::string, std::string>& options) {
+        Scene scene = gas.scene;
+        for (const auto& [key, value] : options) scene.backend_options["event"][key] = value;
+        EventSolver solver;
+        solver.load(scene, gas.initial);
+        solver.advance_to(t);
+        ParticleState<double> state;
+        solver.read_state(state);
+        return std::make_pair(state, solver.stats().contacts);
+    };
+    struct Case {
+        Gas gas;
+        double t;
+        std::map<std::string, std::string> options;
+    };
+    const std::vector<Case> cases = {
+        {lattice_gas(Boundary::periodic, 15, 14, spacing_for(0.55, two), two, 5), 40.0,
+         {{"prefetch", "on"}, {"renumber_interval", "7"}}},
+        {lattice_gas(Boundary::reflect, 20, 15, spacing_for(0.5, two), two, 5), 20.0, {{"prefetch", "on"}}},
+        {lattice_gas(Boundary::periodic, 200, 180, spacing_for(0.5, two), two, 5), 0.5, {{"prefetch", "auto"}}},
+    };
+    for (const Case& c : cases) {
+        const auto [reference, collisions] = final_state(c.gas, c.t, {{"prefetch", "off"}});
+        ASSERT_GT(collisions, 10000);
+        const auto [state, count] = final_state(c.gas, c.t, c.options);
+        EXPECT_EQ(count, collisions) << c.gas.initial.size() << " disks";
+        for (std::size_t i = 0; i < state.size(); ++i) {
+            ASSERT_EQ(state.x[i], reference.x[i]) << "disk " << i << " of " << state.size();
+            ASSERT_EQ(state.y[i], reference.y[i]) << "disk " << i << " of " << state.size();
+            ASSERT_EQ(state.vx[i], reference.vx[i]) << "disk " << i << " of " << state.size();
+            ASSERT_EQ(state.vy[i], reference.vy[i]) << "disk " << i << " of " << state.size();
         }
     }
 }

@@ -141,5 +141,65 @@ TEST(EventQueue, RenumberingKeepsTheOrderAndThePayloads) {
     }
 }
 
+// Deferred linking (link_soon): an entry waiting to be linked can be updated again before it
+// is, to another list, to the front, or back to the list it waits for. Bursts of updates of
+// the same few particles between two tops, against the brute-force order.
+TEST(EventQueue, WaitingEntriesCanBeUpdatedAgain) {
+    const std::uint32_t n = 200;
+    EventQueue<> queue;
+    queue.reset(n);
+    std::vector<double> times(n);
+    std::vector<std::uint32_t> keys(n);
+    std::iota(keys.begin(), keys.end(), 0u);
+    std::mt19937_64 rng(5);
+    std::exponential_distribution<double> later(1.0);
+    std::uniform_int_distribution<std::uint32_t> pick(0, 5);  // a few particles, updated often
+    for (std::uint32_t p = 0; p < n; ++p) queue.update(p, times[p] = later(rng));
+    for (int step = 0; step < 20000; ++step) {
+        const std::uint32_t expected = brute_force_top(times, keys);
+        ASSERT_EQ(queue.top(), expected) << "step " << step;
+        ASSERT_EQ(queue.top_time(), times[expected]);
+        const double now = times[expected];
+        queue.update(expected, times[expected] = now + later(rng));
+        for (int burst = 0; burst < 8; ++burst) {
+            const std::uint32_t p = pick(rng);
+            if (times[p] < now) continue;  // (keep every time at or after now, as the solver does)
+            const double t = burst % 4 == 3 ? now : now + later(rng) * (burst % 2 ? 50.0 : 1.0);
+            queue.update(p, times[p] = t);
+        }
+    }
+}
+
+// The look-ahead (next_upcoming) names the particles of the coming events: in a steady state
+// most tops were named by it within the 16 calls before (one call per event, as the solver
+// does): 88 % here. A walk that strays into the lists of far buckets (it did, before it
+// checked that an entry is still in the list it walks) names far fewer: 62 % here, 4 % in the
+// solver, whose disks are re-filed more often.
+TEST(EventQueue, LookAheadNamesTheComingEvents) {
+    const std::uint32_t n = 5000;
+    EventQueue<> queue;
+    queue.reset(n);
+    std::mt19937_64 rng(13);
+    std::exponential_distribution<double> later(1.0);
+    for (std::uint32_t p = 0; p < n; ++p) queue.update(p, later(rng));
+    std::vector<long> named_at(n, -1000);
+    const long events = 50 * long(n);
+    long named = 0, counted = 0;
+    for (long e = 0; e < events; ++e) {
+        const std::uint32_t upcoming = queue.next_upcoming();
+        if (upcoming != EventQueue<>::none) {
+            ASSERT_LT(upcoming, n);
+            named_at[upcoming] = e;
+        }
+        const std::uint32_t p = queue.top();
+        if (e > 10 * long(n)) {  // (after the initial times have relaxed)
+            ++counted;
+            if (e - named_at[p] <= 16) ++named;
+        }
+        queue.update(p, queue.top_time() + later(rng));
+    }
+    EXPECT_GT(double(named) / double(counted), 0.75) << named << " of " << counted << " tops named ahead";
+}
+
 }  // namespace
 }  // namespace collide

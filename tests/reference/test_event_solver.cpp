@@ -249,6 +249,15 @@ TEST(EventSolverInput, RenumberIntervalMustBeAPositiveWholeNumber) {
     }
 }
 
+TEST(EventSolverInput, PrefetchMustBeAutoOnOrOff) {
+    for (const char* bad : {"yes", "1", "", "On"}) {
+        Scene scene = box_scene(10, 10);
+        scene.backend_options["event"]["prefetch"] = bad;
+        expect_error([&] { run_to(scene, make_state({{5, 5, 0, 0, 0.5, 1}}), 1); },
+                     {"prefetch", "expected \"auto\", \"on\" or \"off\""});
+    }
+}
+
 // --- Inelastic collapse and the progress guard -----------------------------------------
 
 // A disk dropped on a floor with wall restitution 0.5 bounces with intervals shrinking by 0.5
