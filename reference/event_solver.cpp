@@ -20,7 +20,7 @@ constexpr double overlap_tolerance = 1e-10;
 
 // The coming events are prefetched (prefetch_upcoming) from this many disks on: 2^15 disks
 // have 4 MiB of records and calendar slots, about what a core's L2 cache holds. Below, the
-// state stays in the cache and the prefetching only costs time (10-15 % per collision at
+// state stays in the cache and the prefetching only costs time (6-19 % per collision at
 // N = 1e3, docs/event-driven.md).
 constexpr std::size_t prefetch_from_disks = std::size_t(1) << 15;
 
