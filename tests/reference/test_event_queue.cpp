@@ -83,21 +83,33 @@ TEST(EventQueue, AllTimesNever) {
     EXPECT_EQ(queue.top_time(), 5.0);
 }
 
+// A queue in a steady state: every event re-files its particle at now + an exponentially
+// distributed horizon (mean 1).
+struct SteadyQueue {
+    EventQueue<> queue;
+    std::mt19937_64 rng;
+    std::exponential_distribution<double> later{1.0};
+
+    SteadyQueue(std::uint32_t n, std::uint64_t seed) : rng(seed) {
+        queue.reset(n);
+        for (std::uint32_t p = 0; p < n; ++p) queue.update(p, later(rng));
+    }
+    // Takes the top as the next event, re-files it, and returns it.
+    std::uint32_t next_event() {
+        const std::uint32_t p = queue.top();
+        queue.update(p, queue.top_time() + later(rng));
+        return p;
+    }
+};
+
 // In a steady state (horizons drawn from one distribution) the ring turns and refills from
 // the overflow without being rebuilt: the old calendar was rebuilt from scratch (a pass over
 // all N entries) about once per N events.
 TEST(EventQueue, SteadyStateDoesNotRebuildEveryTurn) {
     const std::uint32_t n = 2000;
-    EventQueue<> queue;
-    queue.reset(n);
-    std::mt19937_64 rng(11);
-    std::exponential_distribution<double> later(1.0);
-    for (std::uint32_t p = 0; p < n; ++p) queue.update(p, later(rng));
-    const int events = 100 * int(n);
-    for (int step = 0; step < events; ++step) {
-        const std::uint32_t p = queue.top();
-        queue.update(p, queue.top_time() + later(rng));
-    }
+    SteadyQueue steady(n, 11);
+    const EventQueue<>& queue = steady.queue;
+    for (int step = 0; step < 100 * int(n); ++step) steady.next_event();
     // 100 N events turn the ring dozens of times; one build at the start, at most a few
     // more while the initial times relax to the steady state.
     EXPECT_LE(queue.builds(), 4u);
@@ -177,11 +189,8 @@ TEST(EventQueue, WaitingEntriesCanBeUpdatedAgain) {
 // solver, whose disks are re-filed more often.
 TEST(EventQueue, LookAheadNamesTheComingEvents) {
     const std::uint32_t n = 5000;
-    EventQueue<> queue;
-    queue.reset(n);
-    std::mt19937_64 rng(13);
-    std::exponential_distribution<double> later(1.0);
-    for (std::uint32_t p = 0; p < n; ++p) queue.update(p, later(rng));
+    SteadyQueue steady(n, 13);
+    EventQueue<>& queue = steady.queue;
     std::vector<long> named_at(n, -1000);
     const long events = 50 * long(n);
     long named = 0, counted = 0;
@@ -191,12 +200,11 @@ TEST(EventQueue, LookAheadNamesTheComingEvents) {
             ASSERT_LT(upcoming, n);
             named_at[upcoming] = e;
         }
-        const std::uint32_t p = queue.top();
+        const std::uint32_t p = steady.next_event();
         if (e > 10 * long(n)) {  // (after the initial times have relaxed)
             ++counted;
             if (e - named_at[p] <= 16) ++named;
         }
-        queue.update(p, queue.top_time() + later(rng));
     }
     EXPECT_GT(double(named) / double(counted), 0.75) << named << " of " << counted << " tops named ahead";
 }
