@@ -109,10 +109,10 @@ public:
     // caller requests the memory of the particles it is given, so that their cache misses
     // overlap with the work of earlier events. The walk reads only the slots of particles it
     // returned on an earlier call (whose line the caller has requested by then) and the ring's
-    // list heads. It is a hint and nothing more: an entry that moved to another list since
-    // (re-predicted, or poured into the front) only makes the walk wander off into that list,
-    // which ends like every list, and entries filed behind it are missed (they were just
-    // predicted, so their memory is in the cache anyway).
+    // list heads. It is a hint and nothing more: when the entry it reached last has left its
+    // list (re-filed, or poured into the front), the walk goes on with the next bucket instead
+    // of following that entry's new links; entries filed behind the walk are missed (they were
+    // just predicted, so their memory is in the cache anyway).
     std::uint32_t next_upcoming() {
         if (!built_ || one_heap_) return none;
         // Follow the list only while the entry reached last is still in it (not re-filed, and
@@ -201,8 +201,7 @@ private:
         if (!(k > double(current_))) return front;
         const double ahead = k - double(current_);
         if (ahead >= double(bucket_count_)) return overflow();
-        const std::uint32_t b = current_slot_ + std::uint32_t(ahead);
-        return b >= bucket_count_ ? b - bucket_count_ : b;
+        return ring_slot(current_ + std::uint64_t(ahead));
     }
 
     // Puts a particle that is in no list into the front heap or (soon) the list `target`.

@@ -176,9 +176,8 @@ void EventSolver::renumber() {
     const std::size_t n = disks_.size();
     if (n == 0) return;
     cells_.cell_order(disks_, order_);  // order_[new] = old
-    std::vector<std::uint32_t>& new_of = new_of_;  // (kept: no allocation per renumbering)
-    new_of.resize(n);
-    for (std::uint32_t k = 0; k < n; ++k) new_of[order_[k]] = k;
+    new_of_.resize(n);
+    for (std::uint32_t k = 0; k < n; ++k) new_of_[order_[k]] = k;
 
     disks_scratch_.resize(n);
     for (std::size_t k = 0; k < n; ++k) disks_scratch_[k] = disks_[order_[k]];
@@ -193,9 +192,9 @@ void EventSolver::renumber() {
     for (auto* a : state_.arrays()) permute(*a, real_scratch_);
     permute(last_collision_, real_scratch_);
     permute(original_, index_scratch_);
-    queue_.renumber(order_, new_of);
-    upcoming_[0] = upcoming_[1] = upcoming_[2] = EventQueue<Slot>::none;
-    for (std::uint32_t k = 0; k < n; ++k) prediction(k).partner = new_of[prediction(k).partner];
+    queue_.renumber(order_, new_of_);
+    for (Upcoming& u : upcoming_) u = Upcoming{};
+    for (std::uint32_t k = 0; k < n; ++k) prediction(k).partner = new_of_[prediction(k).partner];
 }
 
 // Reads [backend.event]: tc (the TC model's duration), renumber_interval (events between
@@ -321,15 +320,19 @@ void EventSolver::advance_to(double t) {
 // or without them (docs/event-driven.md, "Performance", has the measurements).
 void EventSolver::prefetch_upcoming() {
     constexpr std::uint32_t none = EventQueue<Slot>::none;
-    if (upcoming_[2] != none) cells_.prefetch_records(disks_, cells_to_visit(upcoming_[2]), 1);
-    if (upcoming_[1] != none) {
-        cells_.prefetch_records(disks_, cells_to_visit(upcoming_[1]), 0);
-        const Prediction& p = prediction(upcoming_[1]);
+    const Upcoming& third = upcoming_[2];
+    if (third.disk != none) cells_.prefetch_records(disks_, third.cells, 1);
+    const Upcoming& second = upcoming_[1];
+    if (second.disk != none) {
+        cells_.prefetch_records(disks_, second.cells, 0);
+        const Prediction& p = prediction(second.disk);
         if (p.kind == EventKind::pair) cells_.prefetch_heads(cells_.neighbourhood_block(disks_[p.partner].links));
     }
-    if (upcoming_[0] != none) {
-        cells_.prefetch_heads(cells_to_visit(upcoming_[0]));
-        const Prediction& p = prediction(upcoming_[0]);
+    Upcoming& first = upcoming_[0];
+    if (first.disk != none) {
+        first.cells = cells_to_visit(first.disk);  // (its record arrived: its cell is known)
+        cells_.prefetch_heads(first.cells);
+        const Prediction& p = prediction(first.disk);
         if (p.kind == EventKind::pair) {
             __builtin_prefetch(&disks_[p.partner]);
             __builtin_prefetch(queue_.slot_address(p.partner));
@@ -337,10 +340,10 @@ void EventSolver::prefetch_upcoming() {
     }
     upcoming_[2] = upcoming_[1];
     upcoming_[1] = upcoming_[0];
-    upcoming_[0] = queue_.next_upcoming();
-    if (upcoming_[0] != none) {
-        __builtin_prefetch(&disks_[upcoming_[0]]);
-        __builtin_prefetch(queue_.slot_address(upcoming_[0]));
+    upcoming_[0] = Upcoming{queue_.next_upcoming(), {}};
+    if (upcoming_[0].disk != none) {
+        __builtin_prefetch(&disks_[upcoming_[0].disk]);
+        __builtin_prefetch(queue_.slot_address(upcoming_[0].disk));
     }
 }
 

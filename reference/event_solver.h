@@ -139,7 +139,7 @@ private:
     std::vector<double> real_scratch_;
     std::vector<std::uint32_t> index_scratch_;
     std::vector<std::uint32_t> order_;   // renumber(): order_[new] = old
-    std::vector<std::uint32_t> new_of_;  // and new_of_[old] = new
+    std::vector<std::uint32_t> new_of_;  // and new_of_[old] = new (both kept: no allocation per renumbering)
     HugePageVector<Disk> disks_;  // (huge pages: read at random places, see the allocator)
     std::vector<double> last_collision_;  // TC model: each disk's last collision (kept if inelastic_)
     bool inelastic_ = false;               // pair or wall restitution below 1
@@ -148,7 +148,11 @@ private:
     // prefetch_upcoming(): whether it runs (large N only), and the disks of coming events at
     // stages 1, 2 and 3 of their prefetch chain (EventQueue::none if none).
     bool prefetch_ = false;
-    std::uint32_t upcoming_[3] = {EventQueue<Slot>::none, EventQueue<Slot>::none, EventQueue<Slot>::none};
+    struct Upcoming {
+        std::uint32_t disk = EventQueue<Slot>::none;
+        CellList::Block cells;  // cells_to_visit(disk), from stage 1 on
+    };
+    Upcoming upcoming_[3];
     static_assert(EventQueue<Slot>::slot_bytes == 64, "a disk's calendar slot should fill one cache line");
     double gx_ = 0, gy_ = 0;
     bool gravity_ = false;             // gx_ or gy_ non-zero

@@ -342,6 +342,33 @@ TEST(EventBruteForce, ReflectingBidisperseUnequalMassesMatchNaiveSolver) {
     expect_same_run(gas, 1.5, "reflecting, bidisperse, renumbered every 7 events", "7");
 }
 
+// [backend.event] options for a run.
+using Options = std::map<std::string, std::string>;
+
+// The state (in the scene's order) and the collision count of the event solver at time t.
+std::pair<ParticleState<double>, std::int64_t> final_state(const Gas& gas, double t, const Options& options) {
+    Scene scene = gas.scene;
+    for (const auto& [key, value] : options) scene.backend_options["event"][key] = value;
+    EventSolver solver;
+    solver.load(scene, gas.initial);
+    solver.advance_to(t);
+    ParticleState<double> state;
+    solver.read_state(state);
+    return {state, solver.stats().contacts};
+}
+
+// Positions and velocities equal to the last bit (no tolerance).
+void expect_bitwise_equal(const ParticleState<double>& state, const ParticleState<double>& reference,
+                          const std::string& what) {
+    ASSERT_EQ(state.size(), reference.size()) << what;
+    for (std::size_t i = 0; i < state.size(); ++i) {
+        ASSERT_EQ(state.x[i], reference.x[i]) << "disk " << i << ", " << what;
+        ASSERT_EQ(state.y[i], reference.y[i]) << "disk " << i << ", " << what;
+        ASSERT_EQ(state.vx[i], reference.vx[i]) << "disk " << i << ", " << what;
+        ASSERT_EQ(state.vy[i], reference.vy[i]) << "disk " << i << ", " << what;
+    }
+}
+
 // Renumbering the disks in cell order (for memory locality) must not change the run at all:
 // it moves records without touching a number, each cell keeps its order of visits, and the
 // calendar breaks ties by the scene's index. So a long run gives the same state to the last
@@ -355,27 +382,12 @@ TEST(EventBruteForce, ReflectingBidisperseUnequalMassesMatchNaiveSolver) {
 TEST(EventBruteForce, RenumberingChangesNoBit) {
     const std::vector<Species> two = {{0.4, 1.0}, {0.5, 2.0}};
     const Gas gas = lattice_gas(Boundary::periodic, 15, 14, spacing_for(0.55, two), two, 5);
-    auto run = [&](const std::string& interval) {
-        Scene scene = gas.scene;
-        if (!interval.empty()) scene.backend_options["event"]["renumber_interval"] = interval;
-        EventSolver solver;
-        solver.load(scene, gas.initial);
-        solver.advance_to(40.0);
-        ParticleState<double> state;
-        solver.read_state(state);
-        return std::make_pair(state, solver.stats().contacts);
-    };
-    const auto [reference, collisions] = run("");
+    const auto [reference, collisions] = final_state(gas, 40.0, {});
     ASSERT_GT(collisions, 20000);  // long enough that chaos would show any difference
     for (const std::string interval : {"7", "13"}) {
-        const auto [state, count] = run(interval);
+        const auto [state, count] = final_state(gas, 40.0, {{"renumber_interval", interval}});
         EXPECT_EQ(count, collisions) << "renumber_interval " << interval;
-        for (std::size_t i = 0; i < state.size(); ++i) {
-            ASSERT_EQ(state.x[i], reference.x[i]) << "disk " << i << ", renumber_interval " << interval;
-            ASSERT_EQ(state.y[i], reference.y[i]) << "disk " << i << ", renumber_interval " << interval;
-            ASSERT_EQ(state.vx[i], reference.vx[i]) << "disk " << i << ", renumber_interval " << interval;
-            ASSERT_EQ(state.vy[i], reference.vy[i]) << "disk " << i << ", renumber_interval " << interval;
-        }
+        expect_bitwise_equal(state, reference, "renumber_interval " + interval);
     }
 }
 
@@ -385,20 +397,10 @@ TEST(EventBruteForce, RenumberingChangesNoBit) {
 // threshold, the state is the same to the last bit as with prefetching off.
 TEST(EventBruteForce, PrefetchingChangesNoBit) {
     const std::vector<Species> two = {{0.4, 1.0}, {0.5, 2.0}};
-    auto final_state = [](const Gas& gas, double t, const std::map<std::string, std::string>& options) {
-        Scene scene = gas.scene;
-        for (const auto& [key, value] : options) scene.backend_options["event"][key] = value;
-        EventSolver solver;
-        solver.load(scene, gas.initial);
-        solver.advance_to(t);
-        ParticleState<double> state;
-        solver.read_state(state);
-        return std::make_pair(state, solver.stats().contacts);
-    };
     struct Case {
         Gas gas;
         double t;
-        std::map<std::string, std::string> options;
+        Options options;
     };
     const std::vector<Case> cases = {
         {lattice_gas(Boundary::periodic, 15, 14, spacing_for(0.55, two), two, 5), 40.0,
@@ -411,12 +413,7 @@ TEST(EventBruteForce, PrefetchingChangesNoBit) {
         ASSERT_GT(collisions, 10000);
         const auto [state, count] = final_state(c.gas, c.t, c.options);
         EXPECT_EQ(count, collisions) << c.gas.initial.size() << " disks";
-        for (std::size_t i = 0; i < state.size(); ++i) {
-            ASSERT_EQ(state.x[i], reference.x[i]) << "disk " << i << " of " << state.size();
-            ASSERT_EQ(state.y[i], reference.y[i]) << "disk " << i << " of " << state.size();
-            ASSERT_EQ(state.vx[i], reference.vx[i]) << "disk " << i << " of " << state.size();
-            ASSERT_EQ(state.vy[i], reference.vy[i]) << "disk " << i << " of " << state.size();
-        }
+        expect_bitwise_equal(state, reference, std::to_string(state.size()) + " disks");
     }
 }
 
