@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "core/huge_page_allocator.h"
+#include "core/prefetch.h"
 #include "core/scene.h"
 
 namespace collide {
@@ -134,8 +135,8 @@ public:
     // most two cache lines).
     void prefetch_heads(const Block& b) const {
         for (std::int64_t y = b.y0; y <= b.y1; ++y) {
-            __builtin_prefetch(&head_[std::size_t(y * cells_x_ + b.x0)]);
-            __builtin_prefetch(&head_[std::size_t(y * cells_x_ + b.x1)]);
+            prefetch_line(&head_[std::size_t(y * cells_x_ + b.x0)]);
+            prefetch_line(&head_[std::size_t(y * cells_x_ + b.x1)]);
         }
     }
     // Requests the record at `depth` (0: the first, 1: the second) of each list of a block,
@@ -147,7 +148,7 @@ public:
             for (std::int64_t x = b.x0; x <= b.x1; ++x) {
                 std::uint32_t j = head_[std::size_t(y * cells_x_ + x)];
                 for (int d = 0; d < depth && j != none; ++d) j = disks[j].links.next;
-                if (j != none) __builtin_prefetch(&disks[j]);
+                if (j != none) prefetch_line(&disks[j]);
             }
     }
     // Requests the first record of each list around disk i's cell.
@@ -225,7 +226,7 @@ private:
             for (int c = 0; c < 3; ++c) {
                 const std::uint32_t j = corner[r * cells_x_ + c];
                 first[3 * r + c] = j;
-                if (j != none) __builtin_prefetch(&disks[j]);
+                if (j != none) prefetch_line(&disks[j]);
             }
     }
     // The far column (or row) of the 3x3 block around cell (cx, cy), on the side of `border`

@@ -44,6 +44,7 @@
 #include <vector>
 
 #include "core/huge_page_allocator.h"
+#include "core/prefetch.h"
 
 namespace collide {
 
@@ -221,7 +222,7 @@ private:
     // emptied), so the front, and with it the order of events, is the same as without the wait.
     void link_soon(std::uint32_t p, std::uint32_t target) {
         if (waiting_count_ == max_waiting) link_oldest_waiting();
-        __builtin_prefetch(&head_[target]);
+        prefetch_line(&head_[target]);
         node_[p].bucket = waiting;
         node_[p].index = target;  // (index is free: it is used only in the front)
         waiting_[waiting_count_++] = p;

@@ -406,7 +406,7 @@ TEST(EventBruteForce, PrefetchingChangesNoBit) {
         {lattice_gas(Boundary::periodic, 15, 14, spacing_for(0.55, two), two, 5), 40.0,
          {{"prefetch", "on"}, {"renumber_interval", "7"}}},
         {lattice_gas(Boundary::reflect, 20, 15, spacing_for(0.5, two), two, 5), 20.0, {{"prefetch", "on"}}},
-        {lattice_gas(Boundary::periodic, 200, 180, spacing_for(0.5, two), two, 5), 0.5, {{"prefetch", "auto"}}},
+        {lattice_gas(Boundary::periodic, 260, 260, spacing_for(0.5, two), two, 5), 0.5, {{"prefetch", "auto"}}},
     };
     for (const Case& c : cases) {
         const auto [reference, collisions] = final_state(c.gas, c.t, {{"prefetch", "off"}});
