@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <memory>
 #include <random>
 #include <vector>
 #include <string>
@@ -92,6 +93,78 @@ Timing run_collisions(EventSolver& solver, std::int64_t target) {
 // machine (other programs, a shared cache) is visible next to the figure.
 constexpr int timing_windows = 5;
 
+// One size at one area fraction: a melted solver and what its timing windows measured.
+struct SizeCase {
+    std::int64_t n = 0;
+    std::unique_ptr<EventSolver> solver;
+    std::int64_t per_window = 0;  // collisions per timing window
+    double melt_seconds = 0;
+    SolverStats before;           // the solver's counters when timing began
+    Timing timing;                // summed over the windows
+    std::vector<double> window_ns;  // ns per collision in each window
+};
+
+SizeCase melted_case(std::int64_t n, double phi, bool quick) {
+    SizeCase c;
+    c.n = n;
+    const std::int64_t melt = quick ? n : 5 * n;
+    const std::int64_t measured = std::max<std::int64_t>(quick ? 100000 : 1000000, 5 * n);
+    c.per_window = measured / timing_windows;
+    std::fprintf(stderr, "[event] N = %lld, area fraction %.1f: melting (%lld collisions)...\n",
+                 static_cast<long long>(n), phi, static_cast<long long>(melt));
+    LatticeGas gas = lattice_gas(n, phi, 42);
+    c.solver = std::make_unique<EventSolver>();
+    c.solver->load(gas.scene, gas.state);
+    // Melt the lattice: a few collisions per disk forget the initial order.
+    c.melt_seconds = run_collisions(*c.solver, melt).seconds;
+    c.before = c.solver->stats();
+    return c;
+}
+
+// Times the windows of all sizes in turn (window 1 of every size, then window 2, ...), so
+// that a machine whose speed drifts over minutes (other programs, frequency changes) affects
+// every size alike, and the ratio of two sizes can be taken window by window.
+void time_interleaved(std::vector<SizeCase>& cases, double phi) {
+    for (int w = 0; w < timing_windows; ++w)
+        for (SizeCase& c : cases) {
+            std::fprintf(stderr, "[event] area fraction %.1f, timing window %d of %d: N = %lld (%lld collisions)\n", phi,
+                         w + 1, timing_windows, static_cast<long long>(c.n), static_cast<long long>(c.per_window));
+            const std::int64_t start = c.solver->stats().contacts;
+            const Timing t = run_collisions(*c.solver, c.per_window);
+            c.timing.seconds += t.seconds;
+            c.timing.cpu_seconds += t.cpu_seconds;
+            c.window_ns.push_back(1e9 * t.seconds / double(c.solver->stats().contacts - start));
+        }
+}
+
+void report_case(const SizeCase& c, const SizeCase& smallest, double phi, BenchReport& report) {
+    const SolverStats after = c.solver->stats();
+    const double collisions = double(after.contacts - c.before.contacts);
+    const double events = double(after.steps - c.before.steps);
+    const double stale = after.counters.at("events_stale") - c.before.counters.at("events_stale");
+    const double ns = median(c.window_ns);
+    std::vector<double> ratios;  // paired: this size's window over the smallest size's same window
+    for (std::size_t w = 0; w < c.window_ns.size(); ++w) ratios.push_back(c.window_ns[w] / smallest.window_ns[w]);
+    report.add({{"backend", std::string("event")},
+                {"threads", std::int64_t(1)},
+                {"n", c.n},
+                {"area_fraction", phi},
+                {"collisions", std::int64_t(collisions)},
+                {"seconds", c.timing.seconds},
+                {"melt_seconds", c.melt_seconds},
+                {"collisions_per_second", 1e9 / ns},
+                {"ns_per_collision", ns},
+                {"ns_per_collision_min", *std::min_element(c.window_ns.begin(), c.window_ns.end())},
+                {"ns_per_collision_max", *std::max_element(c.window_ns.begin(), c.window_ns.end())},
+                {"cost_vs_smallest_n", median(ratios)},
+                {"cost_vs_smallest_n_min", *std::min_element(ratios.begin(), ratios.end())},
+                {"cost_vs_smallest_n_max", *std::max_element(ratios.begin(), ratios.end())},
+                {"cpu_seconds", c.timing.cpu_seconds},
+                {"cpu_ns_per_collision", 1e9 * c.timing.cpu_seconds / collisions},
+                {"events_per_collision", events / collisions},
+                {"stale_per_collision", stale / collisions}});
+}
+
 void run_event_suite(const BenchArgs& args, BenchReport& report) {
     if (!wanted(args, "event")) return;
     std::vector<std::int64_t> sizes = args.sizes;
@@ -99,56 +172,18 @@ void run_event_suite(const BenchArgs& args, BenchReport& report) {
                                           : std::vector<std::int64_t>{1000, 10000, 100000, 1000000};
     std::sort(sizes.begin(), sizes.end());  // the ratio column is relative to the smallest N
     for (double phi : {0.1, 0.5, 0.7}) {
-        double first_cost = 0;
-        for (std::int64_t n : sizes) {
-            const std::int64_t melt = args.quick ? n : 5 * n;
-            const std::int64_t measured = std::max<std::int64_t>(args.quick ? 100000 : 1000000, 5 * n);
-            std::fprintf(stderr, "[event] N = %lld, area fraction %.1f: melting (%lld collisions), then timing %lld...\n",
-                         static_cast<long long>(n), phi, static_cast<long long>(melt), static_cast<long long>(measured));
-            LatticeGas gas = lattice_gas(n, phi, 42);
-            EventSolver solver;
-            solver.load(gas.scene, gas.state);
-            // Melt the lattice: a few collisions per disk forget the initial order.
-            const double melt_seconds = run_collisions(solver, melt).seconds;
-            const SolverStats before = solver.stats();
-            Timing timing;
-            std::vector<double> window_ns;
-            for (int w = 0; w < timing_windows; ++w) {
-                const std::int64_t start = solver.stats().contacts;
-                const Timing t = run_collisions(solver, measured / timing_windows);
-                timing.seconds += t.seconds;
-                timing.cpu_seconds += t.cpu_seconds;
-                window_ns.push_back(1e9 * t.seconds / double(solver.stats().contacts - start));
-            }
-            const SolverStats after = solver.stats();
-            const double collisions = double(after.contacts - before.contacts);
-            const double events = double(after.steps - before.steps);
-            const double stale = after.counters.at("events_stale") - before.counters.at("events_stale");
-            const double ns = median(window_ns);
-            if (first_cost == 0) first_cost = ns;
-            report.add({{"backend", std::string("event")},
-                        {"threads", std::int64_t(1)},
-                        {"n", n},
-                        {"area_fraction", phi},
-                        {"collisions", std::int64_t(collisions)},
-                        {"seconds", timing.seconds},
-                        {"melt_seconds", melt_seconds},
-                        {"collisions_per_second", 1e9 / ns},
-                        {"ns_per_collision", ns},
-                        {"ns_per_collision_min", *std::min_element(window_ns.begin(), window_ns.end())},
-                        {"ns_per_collision_max", *std::max_element(window_ns.begin(), window_ns.end())},
-                        {"cost_vs_smallest_n", ns / first_cost},
-                        {"cpu_seconds", timing.cpu_seconds},
-                        {"cpu_ns_per_collision", 1e9 * timing.cpu_seconds / collisions},
-                        {"events_per_collision", events / collisions},
-                        {"stale_per_collision", stale / collisions}});
-        }
+        std::vector<SizeCase> cases;
+        for (std::int64_t n : sizes) cases.push_back(melted_case(n, phi, args.quick));
+        time_interleaved(cases, phi);
+        for (const SizeCase& c : cases) report_case(c, cases.front(), phi, report);
     }
     report.note("ns_per_collision is the median over " + std::to_string(timing_windows) +
                 " equal windows of the timed collisions (wall clock), with the windows' range in "
                 "ns_per_collision_min/max; collisions_per_second = 1e9 / ns_per_collision. cpu_ns_per_collision "
                 "uses the process's processor time over all windows (steadier on a loaded machine). "
-                "cost_vs_smallest_n: median ns per collision relative to the smallest N at the same area fraction "
+                "The windows of all sizes of one area fraction are timed in turn (window 1 of each size, then "
+                "window 2, ...); cost_vs_smallest_n is the median over the windows of this size's ns per collision "
+                "over the smallest size's in the same round, with its range in cost_vs_smallest_n_min/max "
                 "(target: within 2x up to N = 1e6); target throughput: >= 1e6 collisions/s at N = 1e5, "
                 "area fraction 0.5");
 }

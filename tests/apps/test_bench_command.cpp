@@ -73,7 +73,20 @@ TEST(BenchCommand, EventSuiteWritesAConsistentTablePerAreaFractionAndSize) {
         if (n == 300) {
             EXPECT_DOUBLE_EQ(number(row, "cost_vs_smallest_n"), 1.0);
         }
+        // The ratio is a median of per-window ratios, inside their range.
+        EXPECT_LE(number(row, "cost_vs_smallest_n_min"), number(row, "cost_vs_smallest_n"));
+        EXPECT_GE(number(row, "cost_vs_smallest_n_max"), number(row, "cost_vs_smallest_n"));
     }
+    // The windows of the two sizes are timed in turn, so that a drifting machine speed
+    // affects both alike: window 1 of N = 300, window 1 of N = 600, then window 2 of N = 300.
+    const std::size_t first_small = result.err.find("timing window 1 of 5: N = 300 ");
+    const std::size_t first_large = result.err.find("timing window 1 of 5: N = 600 ");
+    const std::size_t second_small = result.err.find("timing window 2 of 5: N = 300 ");
+    ASSERT_NE(first_small, std::string::npos) << result.err;
+    ASSERT_NE(first_large, std::string::npos) << result.err;
+    ASSERT_NE(second_small, std::string::npos) << result.err;
+    EXPECT_LT(first_small, first_large);
+    EXPECT_LT(first_large, second_small);
     std::ifstream json(dir.file("b-event.json"));
     std::stringstream text;
     text << json.rdbuf();
