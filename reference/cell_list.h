@@ -121,15 +121,21 @@ public:
         const std::int64_t cx = column(l), cy = row(l);
         return inside({cx - 1, cx + 1, cy - 1, cy + 1});
     }
-    // The three cells that for_each_entered walks after a disk in cell l has crossed `border`
-    // (crossed: l is the cell entered; not yet crossed: l is the cell it is about to leave).
-    Block entered_block(const CellLinks& l, std::uint32_t border, bool crossed) const {
+    // The cells a coming crossing of `border` by a disk in cell l touches: the cell it enters
+    // (whose list it joins) and the three beyond, which for_each_entered will walk. A column
+    // (or row) of three cells plus the one next to it, as a 2x3 (or 3x2) block.
+    Block crossing_block(const CellLinks& l, std::uint32_t border) const {
         std::int64_t cx = column(l), cy = row(l);
-        if (!crossed) {
-            cx += border == 0 ? -1 : border == 1 ? 1 : 0;
-            cy += border == 2 ? -1 : border == 3 ? 1 : 0;
+        cx += border == 0 ? -1 : border == 1 ? 1 : 0;
+        cy += border == 2 ? -1 : border == 3 ? 1 : 0;
+        Block b = entered_cells(cx, cy, border);
+        switch (border) {  // widen towards the cell entered
+        case 0: b.x1 += 1; break;
+        case 1: b.x0 -= 1; break;
+        case 2: b.y1 += 1; break;
+        default: b.y0 -= 1; break;
         }
-        return inside(entered_cells(cx, cy, border));
+        return inside(b);
     }
     // Requests the list heads of a block (each row of at most three heads lies within at
     // most two cache lines).

@@ -310,10 +310,11 @@ void EventSolver::advance_to(double t) {
 // the record's cell), then the records in those cells (which need the heads), then the next
 // records in the same cells. The calendar knows the disks of the next few events
 // (EventQueue::next_upcoming), so each is taken through this chain one link per event, ahead
-// of time:
+// of time (prefetch_line, core/prefetch.h: a request the compiler cannot delete):
 //   stage 0: its calendar slot and record are requested;
 //   stage 1 (one event later): the list heads of its cells (cells_to_visit), and its
-//            predicted partner's record and slot;
+//            predicted partner's record and slot (for a crossing, the kept partner's record,
+//            whose event counter the crossing reads);
 //   stage 2: the first record of each of those cells, and the list heads around the partner;
 //   stage 3: the second record of each of those cells.
 // The misses of four coming events then overlap with the work of the current one, instead of
@@ -338,6 +339,8 @@ void EventSolver::prefetch_upcoming() {
             prefetch_line(&disks_[p.partner]);
             prefetch_line(queue_.slot_address(p.partner));
         }
+        // A crossing reads its kept partner's event counter (predict_after_crossing).
+        else if (p.kind == EventKind::cell && p.pair_time != never) prefetch_line(&disks_[p.partner]);
     }
     upcoming_[2] = upcoming_[1];
     upcoming_[1] = upcoming_[0];
@@ -348,11 +351,11 @@ void EventSolver::prefetch_upcoming() {
     }
 }
 
-// The cells whose disks the coming event of disk k will look at: after a cell crossing the
-// three cells it enters, else the 3x3 block around its cell.
+// The cells whose lists the coming event of disk k will read: for a cell crossing the cell it
+// enters and the three beyond (crossing_block), else the 3x3 block around its cell.
 CellList::Block EventSolver::cells_to_visit(std::uint32_t k) const {
     const Prediction& p = prediction(k);
-    if (p.kind == EventKind::cell) return cells_.entered_block(disks_[k].links, p.border, false);
+    if (p.kind == EventKind::cell) return cells_.crossing_block(disks_[k].links, p.border);
     return cells_.neighbourhood_block(disks_[k].links);
 }
 

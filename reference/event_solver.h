@@ -68,7 +68,7 @@ private:
     void process_event();
     // Requests the memory of the coming events ahead of time (see the .cpp).
     void prefetch_upcoming();
-    // The cells the coming event of disk k will look at (for prefetching).
+    // The cells whose lists the coming event of disk k will read (for prefetching).
     CellList::Block cells_to_visit(std::uint32_t k) const;
     // Renumbers the disks cell by cell (see renumber_interval_ and docs/event-driven.md).
     void renumber();
