@@ -20,9 +20,9 @@ constexpr double overlap_tolerance = 1e-10;
 
 // The coming events are prefetched (prefetch_upcoming) from this many disks on: 2^16 disks
 // have 8 MiB of records and calendar slots, four times what a core's L2 cache holds. Below,
-// most of the state stays in the cache and the prefetching mostly costs time: +22 % per
-// collision at N = 1e3, +8 % at 3e4, even at 4.5e4, -12 % at 6.6e4 and -20 % at 1e5
-// (area fraction 0.5, docs/event-driven.md).
+// most of the state stays in the cache and the prefetching mostly costs time: per collision
+// +22 % at N = 1e3, +35 % at 1e4, +10 % at 3e4, +2 % at 4.5e4, then -11 % at 6.6e4 and
+// -23 % at 1e5 (area fraction 0.5, medians of 4 concurrent runs, docs/event-driven.md).
 constexpr std::size_t prefetch_from_disks = std::size_t(1) << 16;
 
 // The disks are renumbered in cell order after about this many events per disk (see renumber).
