@@ -121,9 +121,11 @@ public:
         const std::int64_t cx = column(l), cy = row(l);
         return inside({cx - 1, cx + 1, cy - 1, cy + 1});
     }
-    // The cells a coming crossing of `border` by a disk in cell l touches: the cell it enters
-    // (whose list it joins) and the three beyond, which for_each_entered will walk. A column
-    // (or row) of three cells plus the one next to it, as a 2x3 (or 3x2) block.
+    // The cells a coming crossing of `border` by a disk in cell l reads, as one 2x3 (or 3x2)
+    // block: the cell it enters (whose list it joins), the three beyond (which
+    // for_each_entered walks), and the two cells beside the one it enters, which only a
+    // crossing whose kept partner has changed course reads (it predicts afresh over the whole
+    // 3x3 block). Requesting those two as well keeps the prefetch to one rectangle.
     Block crossing_block(const CellLinks& l, std::uint32_t border) const {
         std::int64_t cx = column(l), cy = row(l);
         cx += border == 0 ? -1 : border == 1 ? 1 : 0;

@@ -726,7 +726,8 @@ SolverStats EventSolver::stats() const {
 
 std::map<std::string, std::string> EventSolver::provenance() const {
     return {{"event.tc", describe(tc_)},
-            {"event.cells", std::to_string(cells_.cells_x()) + "x" + std::to_string(cells_.cells_y())}};
+            {"event.cells", std::to_string(cells_.cells_x()) + "x" + std::to_string(cells_.cells_y())},
+            {"event.prefetch", prefetch_ ? "on" : "off"}};
 }
 
 }  // namespace collide

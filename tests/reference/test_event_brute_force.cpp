@@ -415,6 +415,13 @@ TEST(EventBruteForce, PrefetchingChangesNoBit) {
         EXPECT_EQ(count, collisions) << c.gas.initial.size() << " disks";
         expect_bitwise_equal(state, reference, std::to_string(state.size()) + " disks");
     }
+    // The automatic choice does prefetch at the last case's size (else it would compare
+    // "off" with "off"), and does not in the small gas.
+    EventSolver large, small;
+    large.load(cases[2].gas.scene, cases[2].gas.initial);
+    small.load(cases[0].gas.scene, cases[0].gas.initial);
+    EXPECT_EQ(large.provenance().at("event.prefetch"), "on") << cases[2].gas.initial.size() << " disks";
+    EXPECT_EQ(small.provenance().at("event.prefetch"), "off") << cases[0].gas.initial.size() << " disks";
 }
 
 // A long, dense run with the optimised solver alone (the naive one would need some 5e9 pair

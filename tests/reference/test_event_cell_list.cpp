@@ -30,7 +30,8 @@ struct FullGrid {
 };
 
 // Before a crossing, crossing_block names the cell the disk enters and the three cells that
-// for_each_entered walks once it is there: six cells, every one of them read by the crossing.
+// for_each_entered walks once it is there, in a block of six cells (the other two are read
+// when the crossing has to predict afresh).
 TEST(EventCellList, CrossingBlockHoldsTheCellEnteredAndTheCellsWalkedAfter) {
     const std::pair<std::int64_t, std::int64_t> step[4] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};
     for (std::uint32_t border = 0; border < 4; ++border) {
@@ -53,14 +54,24 @@ TEST(EventCellList, CrossingBlockHoldsTheCellEnteredAndTheCellsWalkedAfter) {
 
 // Blocks that would wrap around a periodic side or reach past a wall are not prefetched: empty.
 TEST(EventCellList, BlocksAtTheEdgeAreEmpty) {
-    FullGrid g(Boundary::periodic);
-    const CellLinks& corner = g.disks[0].links;  // column 0, row 0
     const auto empty = [](const CellList::Block& b) { return b.x1 < b.x0 || b.y1 < b.y0; };
-    EXPECT_TRUE(empty(g.cells.neighbourhood_block(corner)));
-    EXPECT_TRUE(empty(g.cells.crossing_block(corner, 0)));
-    EXPECT_FALSE(empty(g.cells.neighbourhood_block(g.disks[11].links)));  // column 1, row 1
-    EXPECT_TRUE(empty(g.cells.crossing_block(g.disks[11].links, 0))) << "the block beyond column 0 wraps";
-    EXPECT_FALSE(empty(g.cells.crossing_block(g.disks[11].links, 1)));
+    for (Boundary boundary : {Boundary::periodic, Boundary::reflect}) {
+        FullGrid g(boundary);
+        const auto at = [&](int column, int row) -> const CellLinks& { return g.disks[std::size_t(row * 10 + column)].links; };
+        for (const auto& [column, row] : {std::pair{0, 0}, std::pair{9, 9}, std::pair{0, 5}, std::pair{5, 9}})
+            EXPECT_TRUE(empty(g.cells.neighbourhood_block(at(column, row)))) << column << ", " << row;
+        EXPECT_FALSE(empty(g.cells.neighbourhood_block(at(1, 1))));
+        EXPECT_FALSE(empty(g.cells.neighbourhood_block(at(8, 8))));
+        // From column 1 towards column 0 the cells beyond would be column -1; from 8 towards 9, column 10.
+        EXPECT_TRUE(empty(g.cells.crossing_block(at(1, 5), 0)));
+        EXPECT_FALSE(empty(g.cells.crossing_block(at(1, 5), 1)));
+        EXPECT_TRUE(empty(g.cells.crossing_block(at(8, 5), 1)));
+        EXPECT_FALSE(empty(g.cells.crossing_block(at(8, 5), 0)));
+        EXPECT_TRUE(empty(g.cells.crossing_block(at(5, 8), 3)));
+        EXPECT_TRUE(empty(g.cells.crossing_block(at(5, 1), 2)));
+        EXPECT_FALSE(empty(g.cells.crossing_block(at(5, 2), 2)));
+        EXPECT_FALSE(empty(g.cells.crossing_block(at(5, 7), 3)));
+    }
 }
 
 }  // namespace
