@@ -127,17 +127,13 @@ public:
     // crossing whose kept partner has changed course reads (it predicts afresh over the whole
     // 3x3 block). Requesting those two as well keeps the prefetch to one rectangle.
     Block crossing_block(const CellLinks& l, std::uint32_t border) const {
-        std::int64_t cx = column(l), cy = row(l);
-        cx += border == 0 ? -1 : border == 1 ? 1 : 0;
-        cy += border == 2 ? -1 : border == 3 ? 1 : 0;
-        Block b = entered_cells(cx, cy, border);
-        switch (border) {  // widen towards the cell entered
-        case 0: b.x1 += 1; break;
-        case 1: b.x0 -= 1; break;
-        case 2: b.y1 += 1; break;
-        default: b.y0 -= 1; break;
+        const std::int64_t cx = column(l), cy = row(l);
+        switch (border) {  // the next two columns (or rows) on the side of `border`
+        case 0: return inside({cx - 2, cx - 1, cy - 1, cy + 1});
+        case 1: return inside({cx + 1, cx + 2, cy - 1, cy + 1});
+        case 2: return inside({cx - 1, cx + 1, cy - 2, cy - 1});
+        default: return inside({cx - 1, cx + 1, cy + 1, cy + 2});
         }
-        return inside(b);
     }
     // Requests the list heads of a block (each row of at most three heads lies within at
     // most two cache lines).

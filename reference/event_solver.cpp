@@ -334,13 +334,12 @@ void EventSolver::prefetch_upcoming() {
     if (first.disk != none) {
         first.cells = cells_to_visit(first.disk);  // (its record arrived: its cell is known)
         cells_.prefetch_heads(first.cells);
+        // A collision reads and writes its partner's record and slot; a crossing reads the
+        // event counter in its kept partner's record (predict_after_crossing).
         const Prediction& p = prediction(first.disk);
-        if (p.kind == EventKind::pair) {
+        if (p.kind == EventKind::pair || (p.kind == EventKind::cell && p.pair_time != never))
             prefetch_line(&disks_[p.partner]);
-            prefetch_line(queue_.slot_address(p.partner));
-        }
-        // A crossing reads its kept partner's event counter (predict_after_crossing).
-        else if (p.kind == EventKind::cell && p.pair_time != never) prefetch_line(&disks_[p.partner]);
+        if (p.kind == EventKind::pair) prefetch_line(queue_.slot_address(p.partner));
     }
     upcoming_[2] = upcoming_[1];
     upcoming_[1] = upcoming_[0];
