@@ -145,7 +145,7 @@ void report_case(const SizeCase& c, const SizeCase& smallest, double phi, BenchR
     const double ns = median(c.window_ns);
     std::vector<double> ratios;  // paired: this size's window over the smallest size's same window
     for (std::size_t w = 0; w < c.window_ns.size(); ++w) ratios.push_back(c.window_ns[w] / smallest.window_ns[w]);
-    report.add({{"backend", std::string("event")},
+    Row row = {{"backend", std::string("event")},
                 {"threads", std::int64_t(1)},
                 {"n", c.n},
                 {"area_fraction", phi},
@@ -162,7 +162,14 @@ void report_case(const SizeCase& c, const SizeCase& smallest, double phi, BenchR
                 {"cpu_seconds", c.timing.cpu_seconds},
                 {"cpu_ns_per_collision", 1e9 * c.timing.cpu_seconds / collisions},
                 {"events_per_collision", events / collisions},
-                {"stale_per_collision", stale / collisions}});
+                {"stale_per_collision", stale / collisions}};
+    // Where the solver prefetches (from 2^16 disks on): the share of events whose disk the
+    // calendar's look-ahead named in time (docs/event-driven.md, "Prefetching the coming events").
+    if (after.counters.count("events_named_ahead")) {
+        const double named = after.counters.at("events_named_ahead") - c.before.counters.at("events_named_ahead");
+        row["named_ahead_per_event"] = named / (events + stale);
+    }
+    report.add(row);
 }
 
 void run_event_suite(const BenchArgs& args, BenchReport& report) {

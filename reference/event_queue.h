@@ -181,8 +181,12 @@ private:
         std::uint32_t key;
     };
 
-    // How many ring buckets beyond the one being served next_upcoming() walks.
-    static constexpr std::uint64_t look_ahead_buckets = 2;
+    // How many ring buckets beyond the one being served next_upcoming() walks: about a dozen
+    // entries. The walk names one entry per event and the front serves one, so the lead
+    // between them drifts; the further ahead the walk may go, the less often the front
+    // overtakes it. In the solver at N = 1e6, area fraction 0.1, it named 89 % of the events
+    // with two buckets, 96 % with three and 98 % with four (six: no better, and no faster).
+    static constexpr std::uint64_t look_ahead_buckets = 4;
 
     // The ring slot of absolute bucket index k (current_ <= k < current_ + bucket_count_).
     std::uint32_t ring_slot(std::uint64_t k) const {

@@ -153,6 +153,20 @@ private:
         CellList::Block cells;  // cells_to_visit(disk), from stage 1 on
     };
     Upcoming upcoming_[3];
+    // The partners of the last few collisions taken into the pipeline, which the look-ahead
+    // passes over (see prefetch_upcoming).
+    static constexpr unsigned partners_kept = 4;
+    std::uint32_t partners_[partners_kept];
+    unsigned partners_next_ = 0;
+    // The disks the look-ahead named last, to count the events it named in time
+    // (events_named_ahead, see count_if_named).
+    static constexpr unsigned names_kept = 32;
+    std::uint32_t names_[names_kept];
+    unsigned names_next_ = 0;
+    std::int64_t named_events_ = 0;
+    std::uint32_t next_to_name();
+    void forget_names();
+    void count_if_named(std::uint32_t i, const Prediction& p);
     static_assert(EventQueue<Slot>::slot_bytes == 64, "a disk's calendar slot should fill one cache line");
     double gx_ = 0, gy_ = 0;
     bool gravity_ = false;             // gx_ or gy_ non-zero

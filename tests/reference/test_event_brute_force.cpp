@@ -424,6 +424,40 @@ TEST(EventBruteForce, PrefetchingChangesNoBit) {
     EXPECT_EQ(small.provenance().at("event.prefetch"), "off") << cases[0].gas.initial.size() << " disks";
 }
 
+// The look-ahead names the disk of nearly every coming event (statistic events_named_ahead),
+// at each density. It passes over the partners of collisions already named: about half the
+// collisions were predicted by both disks, and the second entry vanishes when the first is
+// served. Without that, the front of the calendar gains on the walk, which then leaves
+// entries unnamed: 94, 91 and 89 % of the events here against 98, 98 and 97 % with it.
+TEST(EventPrefetch, LookAheadNamesNearlyEveryEvent) {
+    const std::vector<Species> one = {{0.5, 1.0}};
+    struct Case {
+        double phi, t, at_least;
+    };
+    for (const Case& c : {Case{0.1, 40.0, 0.96}, Case{0.5, 8.0, 0.95}, Case{0.7, 4.0, 0.95}}) {
+        Gas gas = lattice_gas(Boundary::periodic, 60, 50, spacing_for(c.phi, one), one, 11);
+        gas.scene.backend_options["event"]["prefetch"] = "on";
+        EventSolver solver;
+        solver.load(gas.scene, gas.initial);
+        solver.advance_to(c.t);
+        const auto counters = solver.stats().counters;
+        const double events = counters.at("events_pair") + counters.at("events_wall") + counters.at("events_cell") +
+                              counters.at("events_stale");
+        ASSERT_GT(events, 50000) << "area fraction " << c.phi;
+        const double named = counters.at("events_named_ahead") / events;
+        EXPECT_GE(named, c.at_least) << "area fraction " << c.phi << ": " << events << " events";
+        EXPECT_LE(named, 1.0) << "area fraction " << c.phi;
+        std::printf("area fraction %.1f: %.0f events, %.4f named ahead\n", c.phi, events, named);
+    }
+    // Without prefetching there is no look-ahead and no such statistic.
+    Gas gas = lattice_gas(Boundary::periodic, 60, 50, spacing_for(0.5, one), one, 11);
+    gas.scene.backend_options["event"]["prefetch"] = "off";
+    EventSolver solver;
+    solver.load(gas.scene, gas.initial);
+    solver.advance_to(0.1);
+    EXPECT_EQ(solver.stats().counters.count("events_named_ahead"), 0u);
+}
+
 // A long, dense run with the optimised solver alone (the naive one would need some 5e9 pair
 // tests for it): a collision it missed would let two disks pass into each other, and a missed
 // wall event would let a disk leave the box. Both are looked for by brute force over all pairs
