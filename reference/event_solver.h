@@ -148,6 +148,7 @@ private:
     // prefetch_upcoming(): whether it runs (large N only), and the disks of coming events at
     // stages 1, 2 and 3 of their prefetch chain (EventQueue::none if none).
     bool prefetch_ = false;
+    bool prefetch_second_records_ = false;  // stage 3 (where cells hold a disk or more on average)
     struct Upcoming {
         std::uint32_t disk = EventQueue<Slot>::none;
         CellList::Block cells;  // cells_to_visit(disk), from stage 1 on

@@ -406,6 +406,8 @@ TEST(EventBruteForce, PrefetchingChangesNoBit) {
         {lattice_gas(Boundary::periodic, 15, 14, spacing_for(0.55, two), two, 5), 40.0,
          {{"prefetch", "on"}, {"renumber_interval", "7"}}},
         {lattice_gas(Boundary::reflect, 20, 15, spacing_for(0.5, two), two, 5), 20.0, {{"prefetch", "on"}}},
+        // (dilute cells of one disk on average: the pipeline's stage 3 runs)
+        {lattice_gas(Boundary::periodic, 40, 40, spacing_for(0.1, two), two, 5), 60.0, {{"prefetch", "on"}}},
         {lattice_gas(Boundary::periodic, 260, 260, spacing_for(0.5, two), two, 5), 0.5, {{"prefetch", "auto"}}},
     };
     for (const Case& c : cases) {
@@ -416,12 +418,19 @@ TEST(EventBruteForce, PrefetchingChangesNoBit) {
         expect_bitwise_equal(state, reference, std::to_string(state.size()) + " disks");
     }
     // The automatic choice does prefetch at the last case's size (else it would compare
-    // "off" with "off"), and does not in the small gas.
-    EventSolver large, small;
-    large.load(cases[2].gas.scene, cases[2].gas.initial);
-    small.load(cases[0].gas.scene, cases[0].gas.initial);
-    EXPECT_EQ(large.provenance().at("event.prefetch"), "on") << cases[2].gas.initial.size() << " disks";
-    EXPECT_EQ(small.provenance().at("event.prefetch"), "off") << cases[0].gas.initial.size() << " disks";
+    // "off" with "off"), and does not in the small gas; the dilute gas runs stage 3 of the
+    // pipeline (the second records), the denser ones do not.
+    const auto prefetching = [&](const Case& c, const std::string& choice) {
+        Scene scene = c.gas.scene;
+        scene.backend_options["event"]["prefetch"] = choice;
+        EventSolver solver;
+        solver.load(scene, c.gas.initial);
+        return solver.provenance().at("event.prefetch");
+    };
+    EXPECT_EQ(prefetching(cases[3], "auto"), "on") << cases[3].gas.initial.size() << " disks";
+    EXPECT_EQ(prefetching(cases[0], "auto"), "off") << cases[0].gas.initial.size() << " disks";
+    EXPECT_EQ(prefetching(cases[2], "on"), "on, second records");
+    EXPECT_EQ(prefetching(cases[0], "on"), "on");
 }
 
 // The look-ahead names the disk of nearly every coming event (statistic events_named_ahead),
