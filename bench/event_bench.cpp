@@ -163,8 +163,9 @@ void report_case(const SizeCase& c, const SizeCase& smallest, double phi, BenchR
                 {"cpu_ns_per_collision", 1e9 * c.timing.cpu_seconds / collisions},
                 {"events_per_collision", events / collisions},
                 {"stale_per_collision", stale / collisions}};
-    // Where the solver prefetches (from 2^16 disks on): the share of events whose disk the
-    // calendar's look-ahead named in time (docs/event-driven.md, "Prefetching the coming events").
+    // Where the solver prefetches (from 2^16 disks on): the share of events (stale ones
+    // included) whose disk, or either disk of a collision, the calendar's look-ahead had named
+    // ahead (docs/event-driven.md, "Prefetching the coming events").
     if (after.counters.count("events_named_ahead")) {
         const double named = after.counters.at("events_named_ahead") - c.before.counters.at("events_named_ahead");
         row["named_ahead_per_event"] = named / (events + stale);

