@@ -146,23 +146,23 @@ void report_case(const SizeCase& c, const SizeCase& smallest, double phi, BenchR
     std::vector<double> ratios;  // paired: this size's window over the smallest size's same window
     for (std::size_t w = 0; w < c.window_ns.size(); ++w) ratios.push_back(c.window_ns[w] / smallest.window_ns[w]);
     Row row = {{"backend", std::string("event")},
-                {"threads", std::int64_t(1)},
-                {"n", c.n},
-                {"area_fraction", phi},
-                {"collisions", std::int64_t(collisions)},
-                {"seconds", c.timing.seconds},
-                {"melt_seconds", c.melt_seconds},
-                {"collisions_per_second", 1e9 / ns},
-                {"ns_per_collision", ns},
-                {"ns_per_collision_min", *std::min_element(c.window_ns.begin(), c.window_ns.end())},
-                {"ns_per_collision_max", *std::max_element(c.window_ns.begin(), c.window_ns.end())},
-                {"cost_vs_smallest_n", median(ratios)},
-                {"cost_vs_smallest_n_min", *std::min_element(ratios.begin(), ratios.end())},
-                {"cost_vs_smallest_n_max", *std::max_element(ratios.begin(), ratios.end())},
-                {"cpu_seconds", c.timing.cpu_seconds},
-                {"cpu_ns_per_collision", 1e9 * c.timing.cpu_seconds / collisions},
-                {"events_per_collision", events / collisions},
-                {"stale_per_collision", stale / collisions}};
+               {"threads", std::int64_t(1)},
+               {"n", c.n},
+               {"area_fraction", phi},
+               {"collisions", std::int64_t(collisions)},
+               {"seconds", c.timing.seconds},
+               {"melt_seconds", c.melt_seconds},
+               {"collisions_per_second", 1e9 / ns},
+               {"ns_per_collision", ns},
+               {"ns_per_collision_min", *std::min_element(c.window_ns.begin(), c.window_ns.end())},
+               {"ns_per_collision_max", *std::max_element(c.window_ns.begin(), c.window_ns.end())},
+               {"cost_vs_smallest_n", median(ratios)},
+               {"cost_vs_smallest_n_min", *std::min_element(ratios.begin(), ratios.end())},
+               {"cost_vs_smallest_n_max", *std::max_element(ratios.begin(), ratios.end())},
+               {"cpu_seconds", c.timing.cpu_seconds},
+               {"cpu_ns_per_collision", 1e9 * c.timing.cpu_seconds / collisions},
+               {"events_per_collision", events / collisions},
+               {"stale_per_collision", stale / collisions}};
     // Where the solver prefetches (from 2^16 disks on): the share of events (stale ones
     // included) whose disk, or either disk of a collision, the calendar's look-ahead had named
     // ahead (docs/event-driven.md, "Prefetching the coming events").

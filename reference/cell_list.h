@@ -127,13 +127,7 @@ public:
     // crossing whose kept partner has changed course reads (it predicts afresh over the whole
     // 3x3 block). Requesting those two as well keeps the prefetch to one rectangle.
     Block crossing_block(const CellLinks& l, std::uint32_t border) const {
-        const std::int64_t cx = column(l), cy = row(l);
-        switch (border) {  // the next two columns (or rows) on the side of `border`
-        case 0: return inside({cx - 2, cx - 1, cy - 1, cy + 1});
-        case 1: return inside({cx + 1, cx + 2, cy - 1, cy + 1});
-        case 2: return inside({cx - 1, cx + 1, cy - 2, cy - 1});
-        default: return inside({cx - 1, cx + 1, cy + 1, cy + 2});
-        }
+        return inside(beyond_border(column(l), row(l), border, 1, 2));
     }
     // Requests the list heads of a block (each row of at most three heads lies within at
     // most two cache lines).
@@ -174,7 +168,7 @@ public:
     // y): the far column (or row) of three cells. The other six cells were neighbours before.
     template <typename Disks, typename Visit>
     void for_each_entered(const Disks& disks, std::uint32_t i, std::uint32_t border, Visit&& visit) const {
-        const Block b = entered_cells(column(disks[i].links), row(disks[i].links), border);
+        const Block b = beyond_border(column(disks[i].links), row(disks[i].links), border, 1, 1);
         for_each_in_block(disks, b.x0, b.x1, b.y0, b.y1, visit);
     }
 
@@ -233,14 +227,17 @@ private:
                 if (j != none) prefetch_line(&disks[j]);
             }
     }
-    // The far column (or row) of the 3x3 block around cell (cx, cy), on the side of `border`
-    // (unwrapped: it may reach past the grid).
-    static Block entered_cells(std::int64_t cx, std::int64_t cy, std::uint32_t border) {
+    // The columns (or rows) `near` to `far` cells away from cell (cx, cy) on the side of
+    // `border`, three cells wide (unwrapped: it may reach past the grid). With near = far = 1,
+    // the far column of the 3x3 block around the cell; with 1 and 2, the cell beyond the border,
+    // the one after it, and those beside them.
+    static Block beyond_border(std::int64_t cx, std::int64_t cy, std::uint32_t border, std::int64_t near,
+                               std::int64_t far) {
         switch (border) {
-        case 0: return {cx - 1, cx - 1, cy - 1, cy + 1};
-        case 1: return {cx + 1, cx + 1, cy - 1, cy + 1};
-        case 2: return {cx - 1, cx + 1, cy - 1, cy - 1};
-        default: return {cx - 1, cx + 1, cy + 1, cy + 1};
+        case 0: return {cx - far, cx - near, cy - 1, cy + 1};
+        case 1: return {cx + near, cx + far, cy - 1, cy + 1};
+        case 2: return {cx - 1, cx + 1, cy - far, cy - near};
+        default: return {cx - 1, cx + 1, cy + near, cy + far};
         }
     }
     Block inside(const Block& b) const {

@@ -376,7 +376,8 @@ void EventSolver::prefetch_upcoming() {
 std::uint32_t EventSolver::next_to_name() {
     constexpr std::uint32_t none = EventQueue<Slot>::none;
     std::uint32_t next = queue_.next_upcoming();
-    for (int passed = 0; next != none && passed < 4 && partners_.holds(next); ++passed) next = queue_.next_upcoming();
+    for (unsigned passed = 0; next != none && passed < partners_.size && partners_.holds(next); ++passed)
+        next = queue_.next_upcoming();
     return next;
 }
 
@@ -393,7 +394,7 @@ void EventSolver::forget_names() {
 // before has only its record in the cache); the others wait for each of their cache misses
 // in turn.
 void EventSolver::count_if_named(std::uint32_t i, const Prediction& p) {
-    if (names_.holds(i) || (p.kind == EventKind::pair && names_.holds(p.partner))) ++named_events_;
+    if (names_.holds(i, p.kind == EventKind::pair ? p.partner : i)) ++named_events_;
 }
 
 // The cells whose lists the coming event of disk k will read: for a cell crossing the cell it

@@ -158,10 +158,18 @@ private:
     // The last K disks put into it, oldest overwritten first (for the two lists below).
     template <unsigned K>
     struct RecentDisks {
+        static constexpr unsigned size = K;
         std::uint32_t disk[K];
         unsigned next = 0;
         void remember(std::uint32_t k) { disk[next++ % K] = k; }
-        bool holds(std::uint32_t k) const { return std::find(disk, disk + K, k) != disk + K; }
+        // Whether it holds a or b. Every slot is compared, without an early exit, so that the
+        // compiler makes it a few vector compares (it runs at every event).
+        bool holds(std::uint32_t a, std::uint32_t b) const {
+            std::uint32_t found = 0;
+            for (std::uint32_t d : disk) found |= std::uint32_t(d == a) | std::uint32_t(d == b);
+            return found != 0;
+        }
+        bool holds(std::uint32_t a) const { return holds(a, a); }
         void forget() { std::fill(disk, disk + K, EventQueue<Slot>::none); }
     };
     // The partners of the last few collisions taken into the pipeline, which the look-ahead
