@@ -318,13 +318,10 @@ void EventSolver::advance_to(double t) {
 //            predicted partner's record and slot (for a crossing, the kept partner's record,
 //            whose event counter the crossing reads);
 //   stage 2: the first record of each of those cells, and the list heads around the partner;
-//   stage 3: the second record of each of those cells, where the cells hold a disk or more on
-//            average (the dilute cells of a gas below area fraction ~0.2; also cells of one
-//            contact distance above area fraction ~0.79, or crowded by small disks): there a quarter of
-//            the lists have a second record, and the stage saves about 5 % at N = 1e6, area
-//            fraction 0.1. With cells of one contact distance (0.64 disks each at area fraction
-//            0.5, 0.89 at 0.7) it cost more than it saved: without it 4-9 % less time per
-//            collision at N = 1e5 and 1e6, area fractions 0.5 and 0.7 (paired runs).
+//   stage 3: the second record of each of those cells, only where the cells hold a disk or
+//            more on average (prefetch_second_records_: dilute gases, very dense or crowded
+//            cells); where they hold fewer, few lists have a second record and the stage cost
+//            more than it saved.
 // The misses of three or four coming events then overlap with the work of the current one,
 // instead of following each other. Prefetches are hints: the events, and their order, are the
 // same with or without them (docs/event-driven.md, "Performance", has the measurements).
@@ -363,8 +360,7 @@ void EventSolver::prefetch_upcoming() {
 }
 
 // The next disk for the pipeline: the look-ahead's next one that is not the partner of a
-// collision already in it. About half the collisions (53 % at area fraction 0.1, N = 1e6) were
-// predicted by both disks, so each has a calendar entry for it; the entry served second
+// collision already in it. About half the collisions were predicted by both disks, so each has a calendar entry for it; the entry served second
 // vanishes (serving the first re-predicts both disks), and the pipeline already requested both
 // disks' records and slots for the first. Naming the second would waste a stage and, worse,
 // let the front gain on the look-ahead: the front serves more entries than there are events,

@@ -160,8 +160,11 @@ private:
     struct RecentDisks {
         static constexpr unsigned size = K;
         std::uint32_t disk[K];
-        unsigned next = 0;
-        void remember(std::uint32_t k) { disk[next++ % K] = k; }
+        unsigned next = 0;  // the slot written next (always below K)
+        void remember(std::uint32_t k) {
+            disk[next] = k;
+            next = next + 1 == K ? 0 : next + 1;
+        }
         // Whether it holds a or b. Every slot is compared, without an early exit, so that the
         // compiler makes it a few vector compares (it runs at every event).
         bool holds(std::uint32_t a, std::uint32_t b) const {
