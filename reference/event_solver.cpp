@@ -360,8 +360,9 @@ void EventSolver::prefetch_upcoming() {
 }
 
 // The next disk for the pipeline: the look-ahead's next one that is not the partner of a
-// collision already in it. About half the collisions were predicted by both disks, so each has a calendar entry for it; the entry served second
-// vanishes (serving the first re-predicts both disks), and the pipeline already requested both
+// collision already in it. About half the collisions were predicted by both disks, so each
+// has a calendar entry for it; the entry served second vanishes (serving the first
+// re-predicts both disks), and the pipeline already requested both
 // disks' records and slots for the first. Naming the second would waste a stage and, worse,
 // let the front gain on the look-ahead: the front serves more entries than there are events,
 // the walk names one per event, and where the front reaches the bucket the walk is in, the
