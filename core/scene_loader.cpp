@@ -14,8 +14,6 @@
 namespace collide {
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
-
 World read_world(const TomlFields& world) {
     world.allow_only({"box", "boundary"});
     const std::vector<double> box = world.numbers("box", 4);
