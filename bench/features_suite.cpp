@@ -33,7 +33,7 @@ std::vector<Variant> variants() {
              for (std::size_t i = 0; i < g.initial.size(); ++i) g.initial.radius[i] = 0.35 + 0.15 * double(i % 16) / 15;
          }},
         {"periodic", [](GasCase& g) { g.scene.world.boundary = Boundary::periodic; }},
-        {"seed001", [](GasCase& g) {  // seed 001's material and rule, all features at once
+        {"particle_box", [](GasCase& g) {  // ParticleBox's material and rule, all features at once
              g.scene.physics = Physics{0.4, 0.85, 0.1, 0.0, -0.5, 0.01};
              g.scene.run.order = StepOrder::integrate_first;
              g.scene.run.substeps = 4;

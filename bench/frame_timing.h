@@ -1,5 +1,5 @@
 // measure_frames: runs one backend on one scene for a number of fixed-timestep frames
-// (seed 001's headless benchmark) and reports the throughput and the time per phase.
+// (ParticleBox's headless benchmark) and reports the throughput and the time per phase.
 #pragma once
 
 #include <map>

@@ -1,5 +1,5 @@
 // Benchmark suite `opencl`: throughput of the OpenCL backend in particle-steps per second for
-// N = 10^3 .. 10^6, with the grid built on the host (seed 000's design) and on the device,
+// N = 10^3 .. 10^6, with the grid built on the host (the OpenCL engine's design) and on the device,
 // each with the disks moved into cell order at the default interval and never
 // (sort_interval 0), and the time of each phase: host grid build, upload, read-back, device
 // grid, reorder, kernels. The `cpu` backend, when compiled in, runs the same scenes for

@@ -1,4 +1,4 @@
-// Suite `throughput`: seed 001's headless benchmark made real. Every registered stepped
+// Suite `throughput`: ParticleBox's headless benchmark made real. Every registered stepped
 // backend that supports the scene runs the benchmark gas (area fraction 0.3, collide-first)
 // for 240 fixed-timestep frames at N = 10^3 ... 10^6; `cpu` at 1 and 2 threads. A backend
 // stops at the first N where one frame takes longer than max_seconds / frames. The event

@@ -2,7 +2,7 @@
 
 #include <box2d/box2d.h>
 
-#include "core/step_schedule.h"
+#include "physics/step_schedule.h"
 
 #include <chrono>
 #include <cmath>

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "compensated_sum.h"
-#include "stepping_laws.hpp"
+#include "physics/stepping_laws.h"
 #include "uniform_grid.h"
 
 namespace collide {

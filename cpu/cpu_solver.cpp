@@ -8,7 +8,7 @@
 #include <string>
 
 #include "core/phase_timer.h"
-#include "core/step_schedule.h"
+#include "physics/step_schedule.h"
 #include "parallel_for.h"
 
 namespace collide::cpu {

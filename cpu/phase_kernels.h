@@ -4,7 +4,7 @@
 // particles in its range: that is what makes them safe to run in parallel without locks.
 //
 // The physics is not here: every pair goes through the shared contact law
-// (core/contact_law.h via ContactLaw<float>) and every wall through WallLaw<float>, the same
+// (physics/contact_law.cl.h via ContactLaw<float>) and every wall through WallLaw<float>, the same
 // text `step` and the OpenCL kernels compile.
 #pragma once
 
@@ -13,7 +13,7 @@
 
 #include "cell_list.h"
 #include "core/particle_state.h"
-#include "core/stepping_laws.hpp"
+#include "physics/stepping_laws.h"
 
 namespace collide::cpu {
 
@@ -25,7 +25,7 @@ struct PhaseParams {
     float xmin = 0, ymin = 0, xmax = 1, ymax = 1, width = 1, height = 1;
 };
 
-// Per-particle corrections of one Jacobi contact pass (seed 001 keeps them in the then-unused
+// Per-particle corrections of one Jacobi contact pass (ParticleBox keeps them in the then-unused
 // acceleration arrays; here they have their own arrays).
 struct Corrections {
     float* dx;
@@ -65,7 +65,7 @@ inline void apply_bounds(float& x, float& y, float& vx, float& vy, float radius,
 }
 
 // Integrate-first, phases 1-3: field accelerations, velocity with damping, then position with
-// the new velocity (semi-implicit Euler, seed 001).
+// the new velocity (semi-implicit Euler, ParticleBox).
 template <bool Gravity, bool Damping, bool Stones>
 std::int64_t integrate_range(ParticleState<float>& s, const PhaseParams& p, float h, std::size_t begin,
                              std::size_t end) {
@@ -126,7 +126,7 @@ std::int64_t collide_rows(const ParticleState<float>& s, const CellList& grid, c
                                 sep_x = WallLaw<float>::minimum_image(sep_x, p.width);
                                 sep_y = WallLaw<float>::minimum_image(sep_y, p.height);
                             }
-                            // Squared-distance reject first (seed 001): no square root, no
+                            // Squared-distance reject first (ParticleBox): no square root, no
                             // other load, no law call. Disk i itself (distance 0) passes it
                             // and is skipped by the slot test.
                             const float contact2 = UniformRadius ? uniform_contact2 : (ri + radius[j]) * (ri + radius[j]);

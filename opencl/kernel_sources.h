@@ -1,6 +1,6 @@
 // The OpenCL program text, embedded into the binary at build time (opencl/embed_kernels.cmake
 // writes kernel_sources.cpp into the build directory). The pieces come in program order:
-// kernels/prelude.cl, core/contact_law.h, core/wall_law.h, particle_layout.h, then the
+// kernels/prelude.cl, physics/contact_law.cl.h, physics/wall_law.cl.h, particle_layout.cl.h, then the
 // kernels; the two core headers are the same files the C++ backends compile.
 #pragma once
 
@@ -10,7 +10,7 @@
 namespace collide::opencl {
 
 struct KernelSource {
-    const char* name;  // path in the source tree, e.g. "core/contact_law.h"
+    const char* name;  // path in the source tree, e.g. "physics/contact_law.cl.h"
     const char* text;
 };
 

@@ -6,10 +6,10 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "core/step_schedule.h"
+#include "physics/step_schedule.h"
 #include "core/uniform_grid.h"
 #include "device_grid.h"
-#include "step_params.hpp"
+#include "step_params.h"
 
 namespace collide::opencl {
 namespace {
@@ -164,7 +164,7 @@ private:
         }
     }
 
-    // The kernel compiler must see the layout the host sees (particle_layout.hpp).
+    // The kernel compiler must see the layout the host sees (particle_layout.h).
     void check_layout() {
         cl::Buffer out(session_.context, CL_MEM_WRITE_ONLY, 4 * sizeof(cl_int));
         cl::Kernel probe(session_.program, "layout_probe");
@@ -288,7 +288,7 @@ private:
     // When the disks may leave the scene's order, each cell's slots are sorted by scene index,
     // so that neighbours are visited in the order of `step` whether or not the disks moved:
     // reordering changes where a disk lives in memory, never a result. Without reordering the
-    // slot is the scene index and the plain sort of seed 000's grid does.
+    // slot is the scene index and the plain sort of the OpenCL engine's grid does.
     bool cells_sorted_by_scene_index() const { return sort_interval_ > 0; }
 
     void build_grid_on_device() {

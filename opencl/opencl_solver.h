@@ -1,11 +1,11 @@
 // The `opencl` backend: the stepping rules of docs/stepping-rules.md as OpenCL kernels
-// (seed 000), in float, or in double on devices with fp64 (`--real double`).
+// (the OpenCL engine), in float, or in double on devices with fp64 (`--real double`).
 //
 // Options (BackendOptions):
 //   real            "float" (default) or "double"
 //   device          OpenCL device: index or name substring (see `collide devices`)
 //   extra["grid"]   "host": the grid is built on the host by counting sort and uploaded every
-//                   step (seed 000's design); "device": built by kernels (kernels/grid.cl).
+//                   step (the OpenCL engine's design); "device": built by kernels (kernels/grid.cl).
 //                   Default: the one measured faster for the device type and N
 //                   (docs/opencl-backend.md): device, except host below N = 5e4 on a CPU.
 //   extra["local_size"]  work-group size of the per-disk kernels (default: the driver's choice)

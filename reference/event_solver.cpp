@@ -6,8 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "collision_time.h"
-#include "core/stepping_laws.hpp"
+#include "physics/collision_time.h"
+#include "physics/stepping_laws.h"
 
 namespace collide {
 namespace {

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "cell_list.h"
-#include "collision_time.h"
+#include "physics/collision_time.h"
 #include "core/compensated_sum.h"
 #include "core/huge_page_allocator.h"
 #include "core/solver.h"

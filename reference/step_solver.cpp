@@ -5,8 +5,8 @@
 #include <stdexcept>
 
 #include "core/phase_timer.h"
-#include "core/step_schedule.h"
-#include "core/stepping_laws.hpp"
+#include "physics/step_schedule.h"
+#include "physics/stepping_laws.h"
 
 namespace collide {
 void StepSolver::load(const Scene& scene, const ParticleState<double>& initial) {

@@ -24,9 +24,9 @@ public:
     void step();
 
 private:
-    // Rule "collide-first" (seed 000): contacts on the current state, then Euler, then walls.
+    // Rule "collide-first" (the OpenCL engine): contacts on the current state, then Euler, then walls.
     void step_collide_first(double dt);
-    // Rule "integrate-first" (seed 001): one sub-step of length h.
+    // Rule "integrate-first" (ParticleBox): one sub-step of length h.
     void substep_integrate_first(double h);
 
     void build_grid();

@@ -4,7 +4,7 @@
 #include <numbers>
 
 #include "core/uniform_grid.h"
-#include "core/stepping_laws.hpp"
+#include "physics/stepping_laws.h"
 
 namespace collide::validation {
 

@@ -1,10 +1,10 @@
 /* First piece of every `opencl` program. The host concatenates, in this order:
- *   prelude.cl, core/contact_law.h, core/wall_law.h, opencl/particle_layout.h,
+ *   prelude.cl, physics/contact_law.cl.h, physics/wall_law.cl.h, opencl/particle_layout.cl.h,
  *   layout_probe.cl, grid.cl, reorder.cl, step.cl
  * (the headers are the very files the C++ backends compile, embedded at build time), and
  * builds the result with -D flags for the scene's features:
  *   COLLIDE_REAL_DOUBLE      Real = double (needs cl_khr_fp64), else Real = float
- *   COLLIDE_INTEGRATE_FIRST  seed 001's rule, else seed 000's collide-first rule
+ *   COLLIDE_INTEGRATE_FIRST  ParticleBox's rule, else the OpenCL engine's collide-first rule
  *   COLLIDE_PERIODIC         periodic walls (minimum image, wrapped cells), else reflecting
  *   COLLIDE_GRAVITY, COLLIDE_DAMPING, COLLIDE_FRICTION, COLLIDE_STONES
  *   COLLIDE_UNIFORM_RADIUS   every disk has radius r: contact distance 2r is a constant

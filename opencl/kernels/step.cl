@@ -2,8 +2,8 @@
  * kernel performs, for its disk, the operations of reference/step_solver.cpp in the same
  * order, so the double build reproduces `step` to rounding of the sums' order.
  *
- *   collide-first (seed 000), one step:   [grid]  resolve_collisions
- *   integrate-first (seed 001), one sub-step:  integrate_motion  [grid]  resolve_collisions
+ *   collide-first (the OpenCL engine), one step:   [grid]  resolve_collisions
+ *   integrate-first (ParticleBox), one sub-step:  integrate_motion  [grid]  resolve_collisions
  *
  * resolve_collisions reads a snapshot (`in`) and writes the new state to another buffer
  * (`out`), so every disk sees its neighbours as they were at the start of the pass (the
@@ -99,7 +99,7 @@ static inline void add_contacts(int i, const Particle* pi, __global const Partic
 #else
         const Real contact = pi->radius + pj.radius;
 #endif
-        /* The squared-distance test of seed 000: no square root for non-contacts. */
+        /* The squared-distance test of the OpenCL engine: no square root for non-contacts. */
         if (sep_x * sep_x + sep_y * sep_y >= contact * contact) continue;
         const ContactDelta d = contact_delta(sep_x, sep_y, pi->vx - pj.vx, pi->vy - pj.vy, contact,
                                              pi->inv_mass, pj.inv_mass, p->restitution, friction);

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "core/stepping_laws.hpp"
+#include "physics/stepping_laws.h"
 
 namespace collide {
 namespace {

@@ -5,7 +5,7 @@
 #include <set>
 #include <utility>
 
-#include "core/stepping_laws.hpp"
+#include "physics/stepping_laws.h"
 #include "core/uniform_grid.h"
 #include "tests/support/test_scenes.h"
 

@@ -1,6 +1,6 @@
-// The integrate-first rule (seed 001) on cases with exact answers, run on every stepped
+// The integrate-first rule (ParticleBox) on cases with exact answers, run on every stepped
 // backend that implements the shared contact law (`step` in double, `cpu` in float).
-// Expected values come from the contact law's physics (core/contact_law.h): for an impact
+// Expected values come from the contact law's physics (physics/contact_law.cl.h): for an impact
 // with normal n and relative velocity u = v_1 - v_2, u_n = u.n < 0,
 //     normal:     u_n' = -e u_n                                  (Newton's restitution law)
 //     tangential: |u_t'| = |u_t| - min(mu (1 + e) |u_n|, |u_t|)  (Coulomb, capped at sticking)
@@ -111,7 +111,7 @@ TEST_P(IntegrateFirstRule, FrictionReducesTangentialSlidingAndNeverReversesIt) {
 
 TEST_P(IntegrateFirstRule, StonesStayPutUnderALoad) {
     // A floor of 10 touching stones across a box 10 wide carries a pile of 30 disks falling
-    // under gravity with seed 001's material (e = 0.4, mu = 0.1) for 3 s.
+    // under gravity with ParticleBox's material (e = 0.4, mu = 0.1) for 3 s.
     Scene scene = rule_scene(0.4, 0.1);
     scene.world = World{0, 0, 10, 20, Boundary::reflect};
     scene.physics.gravity_y = -9.81;

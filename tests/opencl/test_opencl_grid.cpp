@@ -10,7 +10,7 @@
 #include "core/uniform_grid.h"
 #include "opencl/device_grid.h"
 #include "opencl/opencl_solver.h"
-#include "opencl/step_params.hpp"
+#include "opencl/step_params.h"
 #include "tests/support/test_scenes.h"
 
 namespace collide::test {

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "reference/collision_time.h"
+#include "physics/collision_time.h"
 
 namespace collide::event_time {
 namespace {

@@ -2,7 +2,7 @@
  *
  * This file is written in the common subset of C++ and OpenCL C so that the same text is
  * compiled into `step` (double), `cpu` (float) and the `opencl` kernels. The includer
- * defines the scalar type `Real` before including it (C++: see contact_law.hpp, which
+ * defines the scalar type `Real` before including it (C++: see stepping_laws.h, which
  * wraps it in one namespace per type; OpenCL: a typedef at the top of the kernel source).
  *
  * Physics (docs/stepping-rules.md derives it). Disk i meets disk j; d = x_i - x_j is the

@@ -1,8 +1,8 @@
 /* Walls of the world box, for the stepping rules. Written in the common subset of C++ and
- * OpenCL C like contact_law.h (the includer defines `Real`), so step, cpu and the kernels
+ * OpenCL C like contact_law.cl.h (the includer defines `Real`), so step, cpu and the kernels
  * treat walls identically.
  *
- * Reflecting wall (seed 000's integrate kernel, with restitution): a disk whose edge is past
+ * Reflecting wall (the OpenCL engine's integrate kernel, with restitution): a disk whose edge is past
  * the wall is clamped back to touch it (centre at wall + r) and its velocity component into
  * the wall is reversed and scaled by the wall restitution. Clamping keeps wall penetration
  * from accumulating over steps; the energy it removes or adds is part of the rule's error.

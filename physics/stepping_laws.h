@@ -1,4 +1,4 @@
-// C++ access to the shared stepping-rule laws (contact_law.h, wall_law.h) for any real type:
+// C++ access to the shared stepping-rule laws (contact_law.cl.h, wall_law.cl.h) for any real type:
 //     auto d = collide::ContactLaw<float>::delta(...);
 //     collide::WallLaw<double>::reflect_axis(&x, &vx, r, lo, hi, e_wall);
 // The C-subset headers are included once per scalar type, each time in its own namespace
@@ -15,8 +15,8 @@ using std::rint;
 using std::sqrt;
 #undef COLLIDE_CONTACT_LAW_H
 #undef COLLIDE_WALL_LAW_H
-#include "contact_law.h"
-#include "wall_law.h"
+#include "contact_law.cl.h"
+#include "wall_law.cl.h"
 }  // namespace contact_law_double
 namespace contact_law_float {
 using Real = float;
@@ -25,8 +25,8 @@ using std::rint;
 using std::sqrt;
 #undef COLLIDE_CONTACT_LAW_H
 #undef COLLIDE_WALL_LAW_H
-#include "contact_law.h"
-#include "wall_law.h"
+#include "contact_law.cl.h"
+#include "wall_law.cl.h"
 }  // namespace contact_law_float
 
 template <typename Real> struct ContactLaw;

@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "scene.h"
+#include "core/scene.h"
 
 namespace collide {
 

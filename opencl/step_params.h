@@ -6,7 +6,7 @@
 #include "core/particle_state.h"
 #include "core/scene.h"
 #include "core/uniform_grid.h"
-#include "particle_layout.hpp"
+#include "particle_layout.h"
 
 namespace collide::opencl {
 
