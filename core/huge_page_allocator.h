@@ -7,7 +7,7 @@
 // Why: a random access into an array far larger than the TLB's reach (about 8 MiB with 4 KiB
 // pages) needs a page-table walk on top of its cache miss. With 2 MiB pages the same TLB
 // covers gigabytes. The event solver at N = 1e6 (128 MB of records and slots) gains 15-20 %
-// per collision from this; below a few MiB it makes no difference (docs/event-driven.md).
+// per collision from this; below a few MiB it makes no difference (bench/journal.md, "Prefetching the coming events").
 //
 // Nothing depends on the advice being followed: where THP is off, or on another system, the
 // memory is ordinary memory. Small allocations go to the ordinary operator new.

@@ -5,7 +5,7 @@
 // address comes out of a loop that follows links through a std::vector (CellList::
 // prefetch_records, "for (d < depth) j = disks[j].links.next; prefetch(&disks[j])"): the
 // whole loop compiled to nothing, silently, and the records it was meant to request were
-// never requested (docs/event-driven.md, "Prefetching the coming events"). An asm statement
+// never requested (bench/journal.md, "Prefetching the coming events"). An asm statement
 // marked volatile cannot be deleted, so on x86 (64- and 32-bit) and AArch64 the instruction
 // is written out; elsewhere the builtin stays.
 #pragma once
