@@ -1,0 +1,115 @@
+#!/usr/bin/env python3
+"""The course's lab bench: prints the numbers the exercises ask about from a run file.
+
+    python3 docs/course/lab.py velocities RUN.h5... final velocity of every disk (needs --frames)
+    python3 docs/course/lab.py counters RUN.h5...   steps, contacts and the solver's counters
+    python3 docs/course/lab.py energy RUN.h5...     kinetic energy drift and its largest jump
+    python3 docs/course/lab.py error RUN.h5 REF.h5  largest position difference at the last frame
+    python3 docs/course/lab.py same RUN.h5 OTHER.h5 whether the final states are bitwise identical
+    python3 docs/course/lab.py settings RUN.h5...   the backend's recorded settings (provenance)
+    python3 docs/course/lab.py checks SUMMARY.json SCENE BACKEND   one case group's checks
+    python3 docs/course/lab.py sweep SUMMARY.json SCENE BACKEND    its error at each dt
+
+Each reads the HDF5 layout of docs/output-format.md with h5py; nothing here simulates.
+"""
+import argparse
+import json
+import sys
+
+import h5py
+import numpy as np
+
+
+def velocities(run):
+    with h5py.File(run, "r") as f:
+        if "frames" not in f:
+            sys.exit(f"{run}: written without --frames: rerun `collide run ... --frames`")
+        t = f["frames/time"][-1]
+        v = f["frames/velocity"][-1]
+        m = f["particles/mass"][:]
+    print(f"t = {t:g}")
+    for i, (vx, vy) in enumerate(v):
+        print(f"disk {i}: mass {m[i]:g}  v = ({vx:+.6f}, {vy:+.6f})  |v| = {np.hypot(vx, vy):.6f}")
+
+
+def counters(run):
+    with h5py.File(run, "r") as f:
+        stats = f["stats"]
+        print(f"steps {int(stats.attrs['steps'])}")
+        print(f"contacts {int(stats.attrs['contacts'])}")
+        for name, value in sorted(stats["counters"].attrs.items()):
+            print(f"{name} {float(value):.6g}")
+
+
+def energy(run):
+    with h5py.File(run, "r") as f:
+        t = f["metrics/time"][:]
+        k = f["metrics/kinetic_energy"][:] + f["metrics/potential_energy"][:]
+    rel = (k - k[0]) / k[0]
+    jumps = np.diff(rel)
+    worst = int(np.argmax(np.abs(jumps)))
+    print(f"relative energy change {rel[-1]:+.3e} over t = {t[0]:g} .. {t[-1]:g}")
+    print(f"largest jump {jumps[worst]:+.3e} between t = {t[worst]:g} and {t[worst + 1]:g}")
+
+
+def error(run, ref):
+    with h5py.File(run, "r") as a, h5py.File(ref, "r") as b:
+        xa, xb = a["frames/position"][-1], b["frames/position"][-1]
+    print(f"max position error {np.max(np.linalg.norm(xa - xb, axis=1)):.3e}")
+
+
+def same(run, other):
+    with h5py.File(run, "r") as a, h5py.File(other, "r") as b:
+        equal = all(np.array_equal(a[k][-1], b[k][-1]) for k in ("frames/position", "frames/velocity"))
+    print("final states bitwise identical" if equal else "final states differ")
+
+
+def settings(run):
+    with h5py.File(run, "r") as f:
+        for key, value in sorted(f.attrs.items()):
+            if key == "backend" or key.startswith("backend_"):
+                print(f"{key} = {value}")
+
+
+def checks(summary, scene, backend):
+    for c in json.load(open(summary))["checks"]:
+        if c["scene"] == scene and c["backend"] == backend and c["subject"].endswith("seed1"):
+            line = f"{c['check']}: {c['status']}"
+            if c["status"] != "left_out":
+                line += f" {c['value']:.3e} {c['comparison']} {c['tolerance']:.3e}"
+            print(line + (f" ({c['detail']})" if c["detail"] else ""))
+
+
+def sweep(summary, scene, backend):
+    for line in json.load(open(summary))["work_precision"]:
+        if line["scene"] == scene and line["backend"] == backend:
+            for p in line["points"]:
+                print(f"dt {p['dt']:g}: error {p['error']:.3e} +- {p['error_standard_error']:.3e} "
+                      f"({p['replicates']} replicates)")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("what", choices=["velocities", "counters", "energy", "error", "same", "settings",
+                                         "checks", "sweep"])
+    parser.add_argument("files", nargs="+")
+    args = parser.parse_args()
+    pairs = {"error": error, "same": same}
+    if args.what in pairs:
+        if len(args.files) != 2:
+            parser.error(f"{args.what} needs two run files")
+        pairs[args.what](*args.files)
+        return
+    if args.what in ("checks", "sweep"):
+        if len(args.files) != 3:
+            parser.error(f"{args.what} needs SUMMARY.json SCENE BACKEND")
+        {"checks": checks, "sweep": sweep}[args.what](*args.files)
+        return
+    for path in args.files:
+        if len(args.files) > 1:
+            print(f"== {path}")
+        {"velocities": velocities, "counters": counters, "energy": energy, "settings": settings}[args.what](path)
+
+
+if __name__ == "__main__":
+    main()
