@@ -93,7 +93,7 @@ void CpuSolver::step_collide_first(float dt) {
     correct_and_integrate(dt);
 }
 
-// Seed 001's six phases: (1) field accelerations, (2) velocity with damping, (3) position,
+// ParticleBox's six phases: (1) field accelerations, (2) velocity with damping, (3) position,
 // fused into one pass by integrate(); (4) grid rebuild; (5) contact pass; (6) corrections and
 // world bounds.
 void CpuSolver::substep_integrate_first(float h) {

@@ -1,6 +1,6 @@
 // parallel_for: the one way the `cpu` backend runs a loop over particles in parallel.
 //
-// Seed 001 keeps a persistent worker pool and lets workers claim chunks of the particle range
+// ParticleBox keeps a persistent worker pool and lets workers claim chunks of the particle range
 // from a shared cursor, about four chunks per worker, so that a dense region (more contacts,
 // more work per particle) does not leave the other workers idle; workloads too small to pay
 // for the hand-off run inline on the calling thread. OpenMP provides exactly this: the
@@ -25,7 +25,7 @@ namespace collide::cpu {
 inline constexpr std::size_t kInlineBelow = 4096;
 // Chunks smaller than this cost more in claiming than they save in balance.
 inline constexpr std::size_t kMinChunk = 1024;
-// Seed 001's choice: about four chunks per worker.
+// ParticleBox's choice: about four chunks per worker.
 inline constexpr std::size_t kChunksPerThread = 4;
 
 // Runs body over [0, n) in chunks. `particles` is the number of particles the loop covers,

@@ -299,7 +299,7 @@ private:
         stats_.phase_seconds["grid (device)"] += seconds_since(start);
     }
 
-    // Seed 000's design: read the positions back, counting-sort on the host, upload.
+    // The OpenCL engine's design: read the positions back, counting-sort on the host, upload.
     void build_grid_on_host() {
         auto start = std::chrono::steady_clock::now();
         session_.queue.enqueueReadBuffer(particles_[current_], CL_TRUE, 0, sizeof(Particle) * n_, host_particles_.data());

@@ -1,4 +1,4 @@
-// The `step` backend: the time-stepped collision rules of both seed systems, in double
+// The `step` backend: the time-stepped collision rules of both engines collide grew from, in double
 // precision, serial, written to be read next to docs/stepping-rules.md. The `cpu` and
 // `opencl` backends implement the same rules in float; comparing them with this one
 // measures their rounding and implementation error alone.

@@ -9,7 +9,7 @@
  * (`out`), so every disk sees its neighbours as they were at the start of the pass (the
  * Jacobi update of the rules) and no work-item can see another's write. It applies the
  * summed contact deltas, then finishes the disk's step: explicit Euler and walls
- * (collide-first) or walls alone (integrate-first). Seed 000 ran integration as a second
+ * (collide-first) or walls alone (integrate-first). The OpenCL engine ran integration as a second
  * kernel to avoid exactly the race that the second buffer removes.
  */
 
