@@ -2,6 +2,7 @@
 // own settings, cases, result files, tolerances and report columns.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -129,6 +130,19 @@ TEST(BackendVariants, TwoConfigurationsGetDistinctCasesFilesChecksAndColumns) {
     const std::string summary = file_text(dir + "/summary.json");
     EXPECT_NE(summary.find("\"backend\": \"box2d[shipped]\""), std::string::npos);
     EXPECT_NE(summary.find("\"backend\": \"box2d\""), std::string::npos);
+}
+
+TEST(BackendVariants, DefaultSuiteRunsBothBox2dConfigurationsWithTheirOwnLimits) {
+    const Suite suite = load_suite(COLLIDE_SOURCE_DIR "/validation/suites/default.toml");
+    std::vector<std::string> names;
+    for (const BackendInfo& b : select_backends(suite, all_backends())) names.push_back(b.name);
+    EXPECT_NE(std::find(names.begin(), names.end(), "box2d"), names.end());
+    EXPECT_NE(std::find(names.begin(), names.end(), "box2d[shipped]"), names.end());
+    const Tolerances tuned = suite.tolerances.for_backend("box2d", "float");
+    const Tolerances shipped = suite.tolerances.for_backend("box2d[shipped]", "float");
+    EXPECT_GT(shipped.energy_drift, tuned.energy_drift);
+    // A stated limit, not "anything": a run that loses all its energy still fails.
+    EXPECT_LT(shipped.energy_drift, 1.0);
 }
 
 }  // namespace
