@@ -119,6 +119,13 @@ void read_tolerances(const toml::table& root, const std::string& file, Tolerance
     }
 }
 
+// "BASE[NAME]": the brackets end the label, NAME is plain (it becomes part of file names).
+bool is_variant_label(const std::string& label) {
+    const auto open = label.find('[');
+    return open != std::string::npos && open > 0 && label.size() > open + 2 && label.back() == ']' &&
+           label.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_-", open + 1) == label.size() - 1;
+}
+
 // [variant."BASE[NAME]"]: keys of the scene's [backend.BASE] table, kept as text. The label's
 // shape is checked here; whether BASE exists is known only to select_backends().
 std::vector<BackendVariant> read_variants(const toml::table& root, const std::string& file) {
@@ -130,13 +137,11 @@ std::vector<BackendVariant> read_variants(const toml::table& root, const std::st
     for (const auto& [key, sub] : *table) {
         const std::string label(key.str());
         TableReader r(*table, file, "variant");
-        const auto open = label.find('[');
-        const bool shaped = open != std::string::npos && open > 0 && label.back() == ']' && label.size() > open + 2 &&
-                            label.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_-", open + 1) == label.size() - 1;
-        if (!shaped) r.fail(label, "a label \"backend[name]\" (name: lower-case letters, digits, _ or -)");
+        if (!is_variant_label(label)) r.fail(label, "a label \"backend[name]\" (name: lower-case letters, digits, _ or -)");
+        const std::string base = label.substr(0, label.find('['));
         const toml::table* settings = sub.as_table();
-        if (!settings || settings->empty()) r.fail(label, "a table of [backend." + label.substr(0, open) + "] keys");
-        BackendVariant v{label, label.substr(0, open), {}};
+        if (!settings || settings->empty()) r.fail(label, "a table of [backend." + base + "] keys");
+        BackendVariant v{label, base, {}};
         for (const auto& [k, value] : *settings) {
             if (!value.is_string() && !value.is_number() && !value.is_boolean())
                 TableReader(*settings, file, "variant." + label).fail(std::string(k.str()), "a string, number or boolean");
