@@ -1,14 +1,16 @@
 // Suite `throughput`: ParticleBox's headless benchmark made real. Every registered stepped
 // backend that supports the scene runs the benchmark gas (area fraction 0.3, collide-first)
-// for 240 fixed-timestep frames at N = 10^3 ... 10^6; `cpu` at 1 and 2 threads. A backend
-// stops at the first N where one frame takes longer than max_seconds / frames. The event
-// solver has its own suite (its cost is per collision, not per frame).
+// for 240 fixed-timestep frames at N = 10^3 ... 10^6; `cpu` at 1 and 2 threads; `box2d` once
+// per preset (tuned and shipped, docs/box2d-baseline.md) so the speed cost of tuning shows. A
+// backend stops at the first N where one frame takes longer than max_seconds / frames. The
+// event solver has its own suite (its cost is per collision, not per frame).
 #include <algorithm>
 #include <cstdio>
 
 #include "frame_timing.h"
 
 namespace collide::bench {
+namespace {
 
 std::vector<int> thread_counts(const BenchArgs& args, const std::string& backend) {
     if (!args.threads.empty()) return args.threads;
@@ -16,36 +18,58 @@ std::vector<int> thread_counts(const BenchArgs& args, const std::string& backend
     return {0};  // the backend's default
 }
 
+// One way to run a backend: the name the rows carry and the [backend.NAME] keys it sets.
+struct Configuration {
+    std::string label;
+    std::map<std::string, std::string> options;
+};
+
+std::vector<Configuration> configurations(const std::string& backend) {
+    if (backend == "box2d") return {{"box2d", {{"preset", "tuned"}}}, {"box2d[shipped]", {{"preset", "shipped"}}}};
+    return {{backend, {}}};
+}
+
+// One backend, configuration and thread count over the sizes, up to the first too-slow frame.
+void run_sizes(const BenchArgs& args, BenchReport& report, const BackendInfo& backend, const Configuration& config,
+               int threads, const std::vector<std::int64_t>& sizes) {
+    const double frame_limit = args.max_seconds_per_case / args.frames;
+    for (std::int64_t n : sizes) {
+        GasCase gas = gas_case(n);
+        if (!config.options.empty()) gas.scene.backend_options[backend.name] = config.options;
+        if (auto reason = backend.supports(gas.scene)) {
+            report.note(config.label + " left out: " + *reason);
+            return;
+        }
+        BackendOptions options;
+        options.threads = threads;
+        const FrameTiming t = measure_frames(backend, options, gas, args.frames, frame_limit);
+        if (t.stopped) {
+            char text[200];
+            std::snprintf(text, sizeof text, "%s (threads %s) stopped at N = %lld: one frame took %.3g s > %.3g s",
+                          config.label.c_str(), t.threads.c_str(), static_cast<long long>(n), t.first_frame_seconds,
+                          frame_limit);
+            report.note(text);
+            return;
+        }
+        Row row{{"backend", config.label}, {"rule", "collide-first"}, {"area_fraction", 0.3},
+                {"frames", std::int64_t(args.frames)}};
+        add_timing(row, t, n);
+        report.add(row);
+    }
+}
+
+}  // namespace
+
 void run_throughput_suite(const BenchArgs& args, BenchReport& report) {
     std::vector<std::int64_t> sizes = args.sizes;
     if (sizes.empty()) sizes = args.quick ? std::vector<std::int64_t>{1000, 10000}
                                           : std::vector<std::int64_t>{1000, 10000, 100000, 1000000};
-    const double frame_limit = args.max_seconds_per_case / args.frames;
     for (const auto& backend : all_backends()) {
-        if (backend.name == "event" || !wanted(args, backend.name)) continue;
-        for (int threads : thread_counts(args, backend.name)) {
-            for (std::int64_t n : sizes) {
-                const GasCase gas = gas_case(n);
-                if (auto reason = backend.supports(gas.scene)) {
-                    report.note(backend.name + " left out: " + *reason);
-                    break;
-                }
-                BackendOptions options;
-                options.threads = threads;
-                const FrameTiming t = measure_frames(backend, options, gas, args.frames, frame_limit);
-                if (t.stopped) {
-                    char text[200];
-                    std::snprintf(text, sizeof text, "%s (threads %s) stopped at N = %lld: one frame took %.3g s > %.3g s",
-                                  backend.name.c_str(), t.threads.c_str(), static_cast<long long>(n),
-                                  t.first_frame_seconds, frame_limit);
-                    report.note(text);
-                    break;
-                }
-                Row row{{"backend", backend.name}, {"rule", "collide-first"}, {"area_fraction", 0.3},
-                        {"frames", std::int64_t(args.frames)}};
-                add_timing(row, t, n);
-                report.add(row);
-            }
+        if (backend.name == "event") continue;
+        for (const Configuration& config : configurations(backend.name)) {
+            // --backend box2d runs both presets; --backend "box2d[shipped]" only that one.
+            if (!wanted(args, backend.name) && !wanted(args, config.label)) continue;
+            for (int threads : thread_counts(args, backend.name)) run_sizes(args, report, backend, config, threads, sizes);
         }
     }
 }

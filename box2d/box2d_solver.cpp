@@ -62,10 +62,11 @@ void Box2dSolver::load(const Scene& scene, const ParticleState<double>& initial)
 
     world_ = std::make_unique<b2World>(b2Vec2(float(units_.to_box2d_length(scene.physics.gravity_x)),
                                               float(units_.to_box2d_length(scene.physics.gravity_y))));
-    // Sleeping freezes bodies whose speed stays below a threshold: never true for a gas, and
-    // a frozen body would silently stop being validated.
-    world_->SetAllowSleeping(false);
-    world_->SetContinuousPhysics(true);  // time of impact against static bodies (walls, stones)
+    // Sleeping freezes bodies whose speed stays below a threshold: the tuned preset turns it
+    // off, since a frozen body would silently stop being validated; `shipped` keeps Box2D's on.
+    world_->SetAllowSleeping(options_.sleeping);
+    world_->SetWarmStarting(options_.warm_starting);
+    world_->SetContinuousPhysics(options_.continuous);  // time of impact against walls and stones
     wall_fixture_ = nullptr;
     wall_restitution_.reset();
     create_walls();
@@ -92,7 +93,7 @@ void Box2dSolver::create_walls() {
     fixture.shape = &chain;
     fixture.restitution = float(scene_.physics.wall_restitution);
     fixture.friction = 0;  // the walls of the exact model are smooth: b2MixFriction(mu, 0) = 0
-    fixture.restitutionThreshold = float(units_.to_box2d_length(options_.restitution_threshold));
+    fixture.restitutionThreshold = restitution_threshold();
     wall_fixture_ = walls->CreateFixture(&fixture);
 
     if (scene_.physics.wall_restitution != scene_.physics.restitution) {
@@ -109,17 +110,17 @@ void Box2dSolver::create_disks() {
     fixture.shape = &circle;
     fixture.restitution = float(scene_.physics.restitution);
     fixture.friction = float(scene_.physics.friction);
-    fixture.restitutionThreshold = float(units_.to_box2d_length(options_.restitution_threshold));
+    fixture.restitutionThreshold = restitution_threshold();
     for (std::size_t i = 0; i < s.size(); ++i) {
         const bool stone = s.is_stone(i);
         b2BodyDef def;
         def.type = stone ? b2_staticBody : b2_dynamicBody;
         def.position.Set(float(units_.to_box2d_x(s.x[i])), float(units_.to_box2d_y(s.y[i])));
         if (!stone) def.linearVelocity.Set(float(units_.to_box2d_length(s.vx[i])), float(units_.to_box2d_length(s.vy[i])));
-        def.allowSleep = false;
-        // The exact model's disks carry no spin; without fixed rotation friction would feed
-        // energy into rotation that the model does not have.
-        def.fixedRotation = true;
+        def.allowSleep = options_.sleeping;
+        // The exact model's disks carry no spin; without fixed rotation friction feeds energy
+        // into rotation that the model does not have (and that the metrics do not count).
+        def.fixedRotation = options_.fixed_rotation;
         // Box2D's damping is v <- v / (1 + h c) per step, the implicit form of dv/dt = -c v.
         def.linearDamping = float(scene_.physics.damping);
         def.bullet = options_.bullet;
@@ -131,6 +132,11 @@ void Box2dSolver::create_disks() {
         body->CreateFixture(&fixture);
         bodies_[i] = body;
     }
+}
+
+float Box2dSolver::restitution_threshold() const {
+    if (options_.restitution_threshold) return float(units_.to_box2d_length(*options_.restitution_threshold));
+    return b2FixtureDef().restitutionThreshold;  // Box2D's own, in its metres per second
 }
 
 void Box2dSolver::advance_to(double t) {
@@ -185,23 +191,35 @@ SolverStats Box2dSolver::stats() const {
     s.counters["translation_cap_steps"] = double(cap_steps_);
     s.counters["translation_cap_body_steps"] = double(cap_body_steps_);
     s.counters["sleeping_allowed"] = (world_ && world_->GetAllowSleeping()) ? 1 : 0;
+    std::int64_t asleep = 0;
+    for (const b2Body* body : bodies_) asleep += body->GetType() == b2_dynamicBody && !body->IsAwake();
+    s.counters["asleep_bodies"] = double(asleep);  // frozen now: not simulated, still in the metrics
     s.counters["length_scale"] = units_.scale;
     s.counters["box2d_substeps"] = substeps_;
     if (stats_.steps > 0) s.counters["seconds_per_step"] = stats_.phase_seconds.at("box2d_step") / double(stats_.steps);
     return s;
 }
 
+// The preset and every effective setting, so that a run file says which Box2D it measured.
 std::map<std::string, std::string> Box2dSolver::provenance() const {
     const b2Version v = b2_version;
+    auto flag = [](bool b) { return std::string(b ? "true" : "false"); };
+    const double threshold = restitution_threshold();
     return {
         {"box2d_version", std::to_string(v.major) + "." + std::to_string(v.minor) + "." + std::to_string(v.revision)},
+        {"box2d_preset", options_.preset},
         {"box2d_length_scale", std::to_string(units_.scale)},
         {"box2d_time_step", std::to_string(scene_.run.dt / substeps_)},
+        {"box2d_substeps", std::to_string(substeps_)},
         {"box2d_velocity_iterations", std::to_string(options_.velocity_iterations)},
         {"box2d_position_iterations", std::to_string(options_.position_iterations)},
-        {"box2d_restitution_threshold", std::to_string(options_.restitution_threshold)},
-        {"box2d_bullet", options_.bullet ? "true" : "false"},
-        {"box2d_sleeping", "off"},
+        {"box2d_restitution_threshold", std::to_string(units_.from_box2d_length(threshold))},
+        {"box2d_restitution_threshold_box2d_units", std::to_string(threshold)},
+        {"box2d_bullet", flag(options_.bullet)},
+        {"box2d_sleeping", flag(options_.sleeping)},
+        {"box2d_warm_starting", flag(options_.warm_starting)},
+        {"box2d_continuous", flag(options_.continuous)},
+        {"box2d_fixed_rotation", flag(options_.fixed_rotation)},
     };
 }
 

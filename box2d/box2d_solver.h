@@ -38,6 +38,9 @@ public:
 
     const Box2dOptions& options() const { return options_; }
     const Box2dUnits& units() const { return units_; }
+    // The world and disk i's body as built, so tests can read back what Box2D was told.
+    const b2World* world() const { return world_.get(); }
+    const b2Body* body(std::size_t i) const { return bodies_.at(i); }
 
 private:
     void create_walls();
@@ -47,6 +50,8 @@ private:
     // Counts the touching contacts and the bodies that hit b2_maxTranslation in the last
     // Box2D step of length h.
     void record_box2d_step(double h);
+    // The restitution threshold in Box2D's units: the option scaled, or Box2D's own default.
+    float restitution_threshold() const;
 
     Scene scene_;
     ParticleState<double> initial_;  // radii, masses and stones, which Box2D does not change

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "backend_variant.h"
+
 namespace collide::validation {
 namespace {
 
@@ -12,7 +14,7 @@ std::string format_number(double v) {
 }
 
 std::string make_id(const CaseSpec& c) {
-    std::string id = c.scene + "__" + c.backend;
+    std::string id = c.scene + "__" + backend_id_token(c.backend);
     if (!c.parameters.empty()) id += "__" + parameter_label(c);
     if (c.dt) id += "__dt" + format_number(*c.dt);
     if (c.substeps) id += "__sub" + std::to_string(*c.substeps);
@@ -50,36 +52,62 @@ std::vector<std::vector<std::pair<std::string, double>>> parameter_points(const 
     return points;
 }
 
-std::vector<const BackendInfo*> select_backends(const Suite& suite, const std::vector<BackendInfo>& available) {
-    std::vector<const BackendInfo*> out;
+namespace {
+
+const BackendInfo* find_available(const std::string& name, const std::vector<BackendInfo>& available) {
+    for (const auto& b : available)
+        if (b.name == name) return &b;
+    return nullptr;
+}
+
+const BackendVariant* find_variant(const std::string& label, const Suite& suite) {
+    for (const auto& v : suite.variants)
+        if (v.label == label) return &v;
+    return nullptr;
+}
+
+[[noreturn]] void unknown_backend(const Suite& suite, const std::string& name, const std::vector<BackendInfo>& available) {
+    std::string names;
+    for (const auto& b : available) names += (names.empty() ? "" : ", ") + b.name;
+    for (const auto& v : suite.variants) names += ", " + v.label;
+    throw SuiteError(suite.source_path + ": backends: unknown backend '" + name +
+                     "'; expected \"all\" or names from: " + names);
+}
+
+}  // namespace
+
+std::vector<BackendInfo> select_backends(const Suite& suite, const std::vector<BackendInfo>& available) {
+    std::vector<BackendInfo> out;
     if (suite.backends.size() == 1 && suite.backends[0] == "all") {
-        for (const auto& b : available) out.push_back(&b);
+        out = available;
+        // A variant of a backend this build lacks is left out like the backend itself.
+        for (const auto& v : suite.variants)
+            if (const BackendInfo* base = find_available(v.base, available)) out.push_back(variant_backend(*base, v));
         return out;
     }
     for (const auto& name : suite.backends) {
-        const BackendInfo* found = nullptr;
-        std::string names;
-        for (const auto& b : available) {
-            if (b.name == name) found = &b;
-            names += (names.empty() ? "" : ", ") + b.name;
+        if (const BackendInfo* b = find_available(name, available)) {
+            out.push_back(*b);
+        } else if (const BackendVariant* v = find_variant(name, suite)) {
+            const BackendInfo* base = find_available(v->base, available);
+            if (!base) unknown_backend(suite, v->base + " (the base of " + name + ")", available);
+            out.push_back(variant_backend(*base, *v));
+        } else {
+            unknown_backend(suite, name, available);
         }
-        if (!found)
-            throw SuiteError(suite.source_path + ": backends: unknown backend '" + name +
-                             "'; expected \"all\" or names from: " + names);
-        out.push_back(found);
     }
     return out;
 }
 
 std::vector<CaseSpec> plan_cases(const Suite& suite, const std::vector<Scene>& scenes,
-                                 const std::vector<const BackendInfo*>& backends) {
+                                 const std::vector<BackendInfo>& backends) {
     std::vector<CaseSpec> cases;
     for (std::size_t s = 0; s < suite.scenes.size(); ++s) {
         const SuiteScene& entry = suite.scenes[s];
         const auto& seeds = entry.seeds.empty() ? suite.seeds : entry.seeds;
-        for (const BackendInfo* backend : backends) {
-            const bool reference = backend->name == suite.reference;
-            const auto refused = backend->supports(case_scene(scenes[s], entry, CaseSpec{}));
+        for (const BackendInfo& backend : backends) {
+            const bool reference = backend.name == suite.reference;
+            const auto refused = backend.supports(case_scene(scenes[s], entry, CaseSpec{}));
             // The reference solves the exact dynamics: dt, substeps and iterations mean nothing to
             // it. Trajectory scenes are the exception for dt: their replicates start at a collision
             // phase that is a fraction of each dt (phase_shift.h), so the reference runs once per dt.
@@ -95,7 +123,7 @@ std::vector<CaseSpec> plan_cases(const Suite& suite, const std::vector<Scene>& s
                             CaseSpec c;
                             c.scene_index = s;
                             c.scene = entry.name;
-                            c.backend = backend->name;
+                            c.backend = backend.name;
                             c.reference = reference;
                             c.dt = dt;
                             c.substeps = sub;

@@ -6,6 +6,8 @@
 #include <sstream>
 #include <toml++/toml.h>
 
+#include "core/toml_fields.h"
+
 namespace collide::validation {
 
 const char* to_string(Comparison c) {
@@ -117,6 +119,39 @@ void read_tolerances(const toml::table& root, const std::string& file, Tolerance
     }
 }
 
+// "BASE[NAME]": the brackets end the label, NAME is plain (it becomes part of file names).
+bool is_variant_label(const std::string& label) {
+    const auto open = label.find('[');
+    return open != std::string::npos && open > 0 && label.size() > open + 2 && label.back() == ']' &&
+           label.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_-", open + 1) == label.size() - 1;
+}
+
+// [variant."BASE[NAME]"]: keys of the scene's [backend.BASE] table, kept as text. The label's
+// shape is checked here; whether BASE exists is known only to select_backends().
+std::vector<BackendVariant> read_variants(const toml::table& root, const std::string& file) {
+    std::vector<BackendVariant> out;
+    const toml::node* node = root.get("variant");
+    if (!node) return out;
+    const toml::table* table = node->as_table();
+    if (!table) TableReader(root, file, "").fail("variant", "a table of [variant.\"backend[name]\"] tables");
+    for (const auto& [key, sub] : *table) {
+        const std::string label(key.str());
+        TableReader r(*table, file, "variant");
+        if (!is_variant_label(label)) r.fail(label, "a label \"backend[name]\" (name: lower-case letters, digits, _ or -)");
+        const std::string base = label.substr(0, label.find('['));
+        const toml::table* settings = sub.as_table();
+        if (!settings || settings->empty()) r.fail(label, "a table of [backend." + base + "] keys");
+        BackendVariant v{label, base, {}};
+        for (const auto& [k, value] : *settings) {
+            if (!value.is_string() && !value.is_number() && !value.is_boolean())
+                TableReader(*settings, file, "variant." + label).fail(std::string(k.str()), "a string, number or boolean");
+            v.settings[std::string(k.str())] = value.is_string() ? *value.value<std::string>() : toml_value_text(value);
+        }
+        out.push_back(std::move(v));
+    }
+    return out;
+}
+
 // set = { "particles.0.disks.1.mass" = [1.0, 1e9] }: each key a quoted path into the scene
 // file, each value an array of numbers. An unquoted dotted key would make TOML nest tables,
 // so a table where an array belongs gets a hint to quote the path.
@@ -188,7 +223,7 @@ Suite parse_suite(const std::string& text, const std::string& file, const std::s
     }
     TableReader r(root, file, "");
     r.only({"name", "description", "scene_dir", "backends", "reference", "seeds", "time_limit",
-            "warmup_fraction", "stability", "output", "tolerances", "scene"});
+            "warmup_fraction", "stability", "output", "tolerances", "scene", "variant"});
     Suite suite;
     suite.source_path = file;
     suite.name = r.string("name").value_or(std::filesystem::path(file).stem().string());
@@ -227,6 +262,7 @@ Suite parse_suite(const std::string& text, const std::string& file, const std::s
         if (auto v = out.positive("max_trajectory_disks")) suite.output.max_trajectory_disks = std::size_t(*v);
     }
     read_tolerances(root, file, suite.tolerances);
+    suite.variants = read_variants(root, file);
     const std::string scene_dir = r.string("scene_dir").value_or("../../data/scenes");
     const toml::node* scenes = root.get("scene");
     if (!scenes || !scenes->is_array_of_tables() || scenes->as_array()->empty())

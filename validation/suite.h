@@ -51,6 +51,16 @@ struct SuiteScene {
     std::optional<double> output_interval;
 };
 
+// One backend run with settings of its own, reported as a backend of its own: the suite's
+// [variant."box2d[shipped]"] table gives label "box2d[shipped]", base "box2d", and settings
+// that every case of this variant writes into the scene's [backend.box2d] table (over the
+// scene's own keys), e.g. {"preset": "shipped"}. Tolerances: [tolerances."box2d[shipped]"].
+struct BackendVariant {
+    std::string label;
+    std::string base;
+    std::map<std::string, std::string> settings;  // values as text, like Scene::backend_options
+};
+
 struct OutputOptions {
     bool hdf5 = true;                 // one HDF5 file per case (RunWriter)
     bool frames = false;              // positions and velocities at every output time
@@ -62,7 +72,9 @@ struct Suite {
     std::string name;
     std::string description;
     std::string source_path;          // the suite file ("" when built in code)
-    std::vector<std::string> backends;  // names; {"all"} = every backend given to the runner
+    std::vector<std::string> backends;  // names; {"all"} = every backend given to the runner,
+                                        // then every variant whose base is among them
+    std::vector<BackendVariant> variants;
     std::string reference = "event";  // the backend the comparisons are made against
     std::vector<std::uint64_t> seeds = {1};
     double time_limit_seconds = 120;  // per case; a case running longer is killed and fails

@@ -107,7 +107,7 @@ void classify_all(SuiteOutcome& outcome, const CaseScenes& case_scenes, const st
 
 SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& available, const RunnerOptions& options) {
     const auto start = std::chrono::steady_clock::now();
-    const std::vector<const BackendInfo*> backends = select_backends(suite, available);
+    const std::vector<BackendInfo> backends = select_backends(suite, available);
     const std::vector<Scene> scenes = load_scenes(suite);  // bad scene files fail here, before any case
     const CaseScenes case_scenes(suite, scenes);
     std::vector<SceneFeatures> features;
@@ -127,7 +127,7 @@ SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& avail
         if (!results.count(spec.id)) to_run.push_back(spec);
 
     std::map<std::string, const BackendInfo*> by_name;
-    for (const BackendInfo* b : backends) by_name[b->name] = b;
+    for (const BackendInfo& b : backends) by_name[b.name] = &b;
     IsolationOptions isolation{options.jobs, suite.time_limit_seconds, result_dir};
     auto run_case = [&](const CaseSpec& spec) {
         CaseContext context{&suite, &case_scenes.scene(spec), by_name.at(spec.backend), options.output_dir};
@@ -147,7 +147,7 @@ SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& avail
 
     // Judge every case in plan order, then the comparisons with the reference.
     std::map<std::string, Tolerances> tolerances;
-    for (const BackendInfo* b : backends) tolerances[b->name] = suite.tolerances.for_backend(b->name, b->precision);
+    for (const BackendInfo& b : backends) tolerances[b.name] = suite.tolerances.for_backend(b.name, b.precision);
     for (const CaseSpec& spec : specs) {
         outcome.cases.push_back(results.at(spec.id));
         const auto checks = case_checks(outcome.cases.back(), case_scenes.feature(spec), tolerances.at(spec.backend));

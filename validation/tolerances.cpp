@@ -69,11 +69,15 @@ Tolerances default_tolerances(const std::string& backend, const std::string& pre
     return t;
 }
 
+// A variant "box2d[shipped]" starts from its base's limits (defaults, then [tolerances.box2d])
+// and [tolerances."box2d[shipped]"] overrides them.
 Tolerances ToleranceTable::for_backend(const std::string& backend, const std::string& precision) const {
-    Tolerances t = default_tolerances(backend, precision);
+    const std::string base = backend.substr(0, backend.find('['));
+    Tolerances t = default_tolerances(base, precision);
     for (const auto& [key, value] : all_backends) tolerance_field(t, key) = value;
-    if (auto it = per_backend.find(backend); it != per_backend.end())
-        for (const auto& [key, value] : it->second) tolerance_field(t, key) = value;
+    for (const std::string& name : {base, backend})  // twice the same name: harmless
+        if (auto it = per_backend.find(name); it != per_backend.end())
+            for (const auto& [key, value] : it->second) tolerance_field(t, key) = value;
     return t;
 }
 

@@ -34,6 +34,9 @@ TEST(Box2dOptions, DefaultsAreBox2dRecommendedIterationsAndNoThreshold) {
     EXPECT_FALSE(o.substeps.has_value());
     EXPECT_FALSE(o.bullet);
     EXPECT_FALSE(o.length_scale.has_value());
+    EXPECT_EQ(o.preset, "tuned");
+    EXPECT_FALSE(o.sleeping);
+    EXPECT_TRUE(o.fixed_rotation);
 }
 
 TEST(Box2dOptions, ReadsEveryKey) {
@@ -42,13 +45,21 @@ TEST(Box2dOptions, ReadsEveryKey) {
                                                            {"position_iterations", "6"},
                                                            {"substeps", "4"},
                                                            {"bullet", "true"},
-                                                           {"length_scale", "0.25"}}));
+                                                           {"length_scale", "0.25"},
+                                                           {"sleeping", "true"},
+                                                           {"warm_starting", "false"},
+                                                           {"continuous", "false"},
+                                                           {"fixed_rotation", "false"}}));
     EXPECT_EQ(o.restitution_threshold, 1.5);
     EXPECT_EQ(o.velocity_iterations, 20);
     EXPECT_EQ(o.position_iterations, 6);
     EXPECT_EQ(o.substeps, 4);
     EXPECT_TRUE(o.bullet);
     EXPECT_EQ(o.length_scale, 0.25);
+    EXPECT_TRUE(o.sleeping);
+    EXPECT_FALSE(o.warm_starting);
+    EXPECT_FALSE(o.continuous);
+    EXPECT_FALSE(o.fixed_rotation);
 }
 
 TEST(Box2dOptions, UnknownKeyIsNamedWithTheValidOnes) {
@@ -67,6 +78,8 @@ TEST(Box2dOptions, BadValuesSayWhatWasExpected) {
     EXPECT_NE(error_of({{"length_scale", "-1"}}).find("scale > 0"), std::string::npos);
     EXPECT_NE(error_of({{"restitution_threshold", "-0.1"}}).find("speed >= 0"), std::string::npos);
     EXPECT_NE(error_of({{"restitution_threshold", "fast"}}).find("a number"), std::string::npos);
+    EXPECT_NE(error_of({{"sleeping", "1"}}).find("true or false"), std::string::npos);
+    EXPECT_NE(error_of({{"preset", "default"}}).find("\"tuned\" or \"shipped\""), std::string::npos);
 }
 
 }  // namespace

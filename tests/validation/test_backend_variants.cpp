@@ -1,0 +1,149 @@
+// One backend twice in one suite: `box2d` and `box2d[shipped]` are separate backends with their
+// own settings, cases, result files, tolerances and report columns.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "box2d/box2d_solver.h"
+#include "test_backends.h"
+#include "validation/case_isolation.h"
+#include "validation/case_plan.h"
+#include "validation/suite_runner.h"
+
+namespace collide::validation {
+namespace {
+
+BackendInfo box2d_backend() {
+    return {"box2d", "float", "Box2D", box2d_supports,
+            [](const BackendOptions&) -> std::unique_ptr<Solver> { return std::make_unique<Box2dSolver>(); }};
+}
+
+// Equal disks meeting head-on at relative speed 0.5, below Box2D's shipped restitution
+// threshold (1 m/s; radius 0.5 maps 1:1 in both presets): tuned bounces, shipped stops dead.
+Scene slow_head_on() {
+    Scene s = test::two_disk_scene("slow_head_on");
+    s.run.duration = 3.0;
+    s.run.output_interval = 0.5;
+    s.generators[0].disks = {{4, 5, 0.25, 0, 0.5, 1, false}, {6, 5, -0.25, 0, 0.5, 1, false}};
+    return s;
+}
+
+Suite suite_with_shipped(const std::vector<std::string>& backends) {
+    Suite suite = test::test_suite(slow_head_on(), backends);
+    suite.seeds = {1};
+    suite.variants = {{"box2d[shipped]", "box2d", {{"preset", "shipped"}}}};
+    return suite;
+}
+
+const CheckResult* find_check(const SuiteOutcome& o, const std::string& backend, const std::string& check) {
+    for (const auto& c : o.checks)
+        if (c.backend == backend && c.check == check) return &c;
+    return nullptr;
+}
+
+std::string file_text(const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+TEST(BackendVariants, SuiteFileDeclaresAVariantAndItsTolerances) {
+    const auto dir = std::filesystem::path(test::fresh_output_dir("variant_suite"));
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "gas.toml") << "# placeholder\n";
+    const Suite suite = parse_suite(R"(
+scene_dir = "."
+[variant."box2d[shipped]"]
+preset = "shipped"
+velocity_iterations = 10
+[tolerances."box2d[shipped]"]
+energy_drift = 0.5
+[[scene]]
+name = "gas"
+)", "suites/v.toml", dir.string());
+    ASSERT_EQ(suite.variants.size(), 1u);
+    EXPECT_EQ(suite.variants[0].label, "box2d[shipped]");
+    EXPECT_EQ(suite.variants[0].base, "box2d");
+    EXPECT_EQ(suite.variants[0].settings.at("preset"), "shipped");
+    EXPECT_EQ(suite.variants[0].settings.at("velocity_iterations"), "10");
+    const Tolerances shipped = suite.tolerances.for_backend("box2d[shipped]", "float");
+    EXPECT_EQ(shipped.energy_drift, 0.5);
+    // Everything not overridden is the base backend's limit, not a float stepper's.
+    EXPECT_EQ(shipped.max_overlap, suite.tolerances.for_backend("box2d", "float").max_overlap);
+    EXPECT_NE(shipped.max_overlap, suite.tolerances.for_backend("cpu", "float").max_overlap);
+}
+
+TEST(BackendVariants, BadLabelNamesTheShapeExpected) {
+    const auto dir = test::fresh_output_dir("variant_bad");
+    std::filesystem::create_directories(dir);
+    std::ofstream(std::filesystem::path(dir) / "gas.toml") << "# placeholder\n";
+    for (const char* label : {"box2d", "box2d[]", "[shipped]", "box2d[Shipped]", "box2d[a b]"}) {
+        const std::string text = std::string("scene_dir = \".\"\n[variant.\"") + label +
+                                 "\"]\npreset = \"shipped\"\n[[scene]]\nname = \"gas\"\n";
+        try {
+            parse_suite(text, "suites/bad.toml", dir);
+            ADD_FAILURE() << "no error for " << label;
+        } catch (const SuiteError& e) {
+            EXPECT_NE(std::string(e.what()).find("backend[name]"), std::string::npos) << e.what();
+        }
+    }
+}
+
+TEST(BackendVariants, UnknownVariantOrMissingBaseIsAnError) {
+    EXPECT_THROW(select_backends(suite_with_shipped({"box2d[tuned]"}), {box2d_backend()}), SuiteError);
+    EXPECT_THROW(select_backends(suite_with_shipped({"box2d[shipped]"}), {}), SuiteError);
+    // With "all", a variant whose base this build lacks is left out like the base itself.
+    EXPECT_TRUE(select_backends(suite_with_shipped({"all"}), {}).empty());
+}
+
+TEST(BackendVariants, TwoConfigurationsGetDistinctCasesFilesChecksAndColumns) {
+    const Suite suite = suite_with_shipped({"all"});
+    const std::string dir = test::fresh_output_dir("variants_run");
+    RunnerOptions options;
+    options.output_dir = dir;
+    options.jobs = 1;
+    const SuiteOutcome outcome = run_suite(suite, {box2d_backend()}, options);
+
+    ASSERT_EQ(outcome.cases.size(), 2u);
+    EXPECT_EQ(outcome.cases[0].spec.backend, "box2d");
+    EXPECT_EQ(outcome.cases[1].spec.backend, "box2d[shipped]");
+    EXPECT_NE(outcome.cases[0].spec.id, outcome.cases[1].spec.id);
+    // File names carry no brackets (shell globs, URLs): "box2d-shipped".
+    EXPECT_EQ(outcome.cases[1].spec.id.find('['), std::string::npos) << outcome.cases[1].spec.id;
+    for (const auto& c : outcome.cases) EXPECT_TRUE(std::filesystem::exists(result_path(dir + "/cases", c.spec.id)));
+    EXPECT_NE(result_path(dir, outcome.cases[0].spec.id), result_path(dir, outcome.cases[1].spec.id));
+
+    // The variant's settings reached its solver: tuned keeps the energy, shipped loses it all.
+    const CheckResult* tuned = find_check(outcome, "box2d", "energy_drift");
+    const CheckResult* shipped = find_check(outcome, "box2d[shipped]", "energy_drift");
+    ASSERT_NE(tuned, nullptr);
+    ASSERT_NE(shipped, nullptr);
+    EXPECT_EQ(tuned->status, CheckStatus::pass);
+    EXPECT_EQ(shipped->status, CheckStatus::fail);
+    EXPECT_NEAR(shipped->value, 1.0, 1e-5);
+
+    // summary.json, which the report reads, names both backends.
+    const std::string summary = file_text(dir + "/summary.json");
+    EXPECT_NE(summary.find("\"backend\": \"box2d[shipped]\""), std::string::npos);
+    EXPECT_NE(summary.find("\"backend\": \"box2d\""), std::string::npos);
+}
+
+TEST(BackendVariants, DefaultSuiteRunsBothBox2dConfigurationsWithTheirOwnLimits) {
+    const Suite suite = load_suite(COLLIDE_SOURCE_DIR "/validation/suites/default.toml");
+    std::vector<std::string> names;
+    for (const BackendInfo& b : select_backends(suite, all_backends())) names.push_back(b.name);
+    EXPECT_NE(std::find(names.begin(), names.end(), "box2d"), names.end());
+    EXPECT_NE(std::find(names.begin(), names.end(), "box2d[shipped]"), names.end());
+    const Tolerances tuned = suite.tolerances.for_backend("box2d", "float");
+    const Tolerances shipped = suite.tolerances.for_backend("box2d[shipped]", "float");
+    EXPECT_GT(shipped.energy_drift, tuned.energy_drift);
+    // A stated limit, not "anything": a run that loses all its energy still fails.
+    EXPECT_LT(shipped.energy_drift, 1.0);
+}
+
+}  // namespace
+}  // namespace collide::validation
