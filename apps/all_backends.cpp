@@ -14,17 +14,17 @@ namespace collide {
 const std::vector<BackendInfo>& all_backends() {
     static const std::vector<BackendInfo> backends = {
         {"event", "double", "exact event-driven hard disks (EDMD), serial: the reference", &EventSolver::supports,
-         [](const BackendOptions&) -> std::unique_ptr<Solver> { return std::make_unique<EventSolver>(); }},
-        {"step", "double", "time-stepped rules of seeds 000/001, serial reference",
+         [](const BackendOptions&) -> std::unique_ptr<Solver> { return std::make_unique<EventSolver>(); }, false},
+        {"step", "double", "time-stepped rules of the OpenCL engine and ParticleBox, serial reference",
          [](const Scene&) -> std::optional<std::string> { return std::nullopt; },
-         [](const BackendOptions&) -> std::unique_ptr<Solver> { return std::make_unique<StepSolver>(); }},
+         [](const BackendOptions&) -> std::unique_ptr<Solver> { return std::make_unique<StepSolver>(); }, false},
         {"cpu", "float", "the same rules in float, multi-threaded (OpenMP), ParticleBox's engine",
          [](const Scene&) -> std::optional<std::string> { return std::nullopt; },
-         [](const BackendOptions& o) -> std::unique_ptr<Solver> { return std::make_unique<cpu::CpuSolver>(o); }},
+         [](const BackendOptions& o) -> std::unique_ptr<Solver> { return std::make_unique<cpu::CpuSolver>(o); }, false},
         {"opencl", "float|double", "stepping rules as OpenCL kernels (the OpenCL engine), float or --real double",
-         [](const Scene&) -> std::optional<std::string> { return std::nullopt; }, opencl::make_opencl_solver},
+         [](const Scene&) -> std::optional<std::string> { return std::nullopt; }, opencl::make_opencl_solver, false},
         {"box2d", "float", "Box2D 2.4 world of circle bodies, the baseline", box2d_supports,
-         [](const BackendOptions&) -> std::unique_ptr<Solver> { return std::make_unique<Box2dSolver>(); }},
+         [](const BackendOptions& o) -> std::unique_ptr<Solver> { return std::make_unique<Box2dSolver>(o); }, true},
     };
     return backends;
 }

@@ -42,7 +42,20 @@ std::optional<std::string> box2d_supports(const Scene& scene) {
     return std::nullopt;
 }
 
-Box2dSolver::Box2dSolver() = default;
+Box2dSolver::Box2dSolver(const BackendOptions& options) {
+    const auto it = options.extra.find("iterations");
+    if (it == options.extra.end()) return;
+    std::size_t used = 0;
+    int value = 0;
+    try {
+        value = std::stoi(it->second, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used != it->second.size() || value < 1)
+        throw std::invalid_argument("box2d: option iterations = '" + it->second + "': expected a positive integer");
+    iterations_ = value;
+}
 Box2dSolver::~Box2dSolver() = default;
 
 void Box2dSolver::load(const Scene& scene, const ParticleState<double>& initial) {
@@ -51,6 +64,7 @@ void Box2dSolver::load(const Scene& scene, const ParticleState<double>& initial)
     scene_ = scene;
     initial_ = initial;
     options_ = parse_box2d_options(scene);
+    if (iterations_) options_.velocity_iterations = *iterations_;
     units_ = Box2dUnits(options_.length_scale.value_or(default_box2d_scale(mean_radius(initial))), scene.world);
     substeps_ = options_.substeps.value_or(scene.run.substeps);
     if (!(scene.run.dt > 0) || substeps_ < 1)

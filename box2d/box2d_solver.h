@@ -25,7 +25,9 @@ std::optional<std::string> box2d_supports(const Scene& scene);
 
 class Box2dSolver : public Solver {
 public:
-    Box2dSolver();
+    // options.extra["iterations"], where a suite sweeps it, replaces the scene's
+    // velocity_iterations (Box2D's contact solver iterations).
+    explicit Box2dSolver(const BackendOptions& options = {});
     ~Box2dSolver() override;
 
     std::string name() const override { return "box2d"; }
@@ -57,6 +59,7 @@ private:
     ParticleState<double> initial_;  // radii, masses and stones, which Box2D does not change
     Box2dOptions options_;
     Box2dUnits units_;
+    std::optional<int> iterations_;  // the suite's sweep value, if any
     int substeps_ = 1;
     std::unique_ptr<b2World> world_;
     std::unique_ptr<b2ContactListener> wall_restitution_;

@@ -20,6 +20,10 @@ struct BackendInfo {
     // (e.g. box2d has no periodic boundaries). The scene is then left out, not faked.
     std::function<std::optional<std::string>(const Scene&)> supports;
     std::function<std::unique_ptr<Solver>(const BackendOptions&)> create;
+    // Whether the backend has an iterative contact solver that takes a suite's `iterations`
+    // sweep (option "iterations"). The others run once per sweep instead of repeating
+    // identical cases under different names.
+    bool sweeps_iterations = false;
 };
 
 // Every backend compiled into this build, in a fixed order (event first: the reference).

@@ -114,7 +114,7 @@ std::vector<CaseSpec> plan_cases(const Suite& suite, const std::vector<Scene>& s
             const bool per_dt = !reference || entry.comparison == Comparison::trajectory;
             const auto dts = per_dt ? sweep(entry.dt) : sweep<double>({});
             const auto subs = reference ? sweep<int>({}) : sweep(entry.substeps);
-            const auto its = reference ? sweep<int>({}) : sweep(entry.iterations);
+            const auto its = reference || !backend.sweeps_iterations ? sweep<int>({}) : sweep(entry.iterations);
             for (const auto& parameters : parameter_points(entry))
             for (const auto& dt : dts)
                 for (const auto& sub : subs)

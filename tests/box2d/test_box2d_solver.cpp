@@ -47,6 +47,19 @@ TEST(Box2dSolver, HeadOnEqualMassesExchangeVelocities) {
     EXPECT_EQ(solver.stats().steps, 2000);
 }
 
+TEST(Box2dSolver, SuiteIterationsOptionReplacesTheScenesVelocityIterations) {
+    BackendOptions options;
+    options.extra["iterations"] = "17";
+    Box2dSolver solver(options);
+    Scene scene = test::box_scene(10, 4);
+    scene.run.dt = 1e-3;
+    solver.load(scene, test::make_state({{3, 2, 1, 0, 0.5, 1}, {7, 2, -1, 0, 0.5, 1}}));
+    EXPECT_EQ(solver.options().velocity_iterations, 17);
+    EXPECT_EQ(solver.provenance().at("box2d_velocity_iterations"), "17");
+    options.extra["iterations"] = "many";
+    EXPECT_THROW(Box2dSolver{options}, std::invalid_argument);
+}
+
 TEST(Box2dSolver, WallsReflectOnAllFourSides) {
     // The chain loop is one-sided: a wrong winding would let the disks fly through the walls.
     Scene scene = test::box_scene(20, 20);

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 
 #include "test_backends.h"
@@ -67,6 +68,25 @@ TEST(SuiteFile, PlanIsScenesTimesBackendsTimesSweepTimesSeedsWithTheReferenceRun
     std::set<std::string> ids;
     for (const auto& c : cases) ids.insert(c.id);
     EXPECT_EQ(ids.size(), cases.size()) << "case ids must be unique";
+}
+
+TEST(SuiteFile, IterationsSweepOnlyMultipliesBackendsThatHaveIterations) {
+    auto suite = test::test_suite(test::two_disk_scene(), {"all"});
+    suite.scenes[0].iterations = {8, 16, 32};
+    BackendInfo iterative = test::test_backend("iterative", test::Fault::none);
+    iterative.sweeps_iterations = true;
+    const std::vector<BackendInfo> backends = {test::test_backend("event", test::Fault::none),
+                                               test::test_backend("step", test::Fault::none), iterative};
+    const auto cases = plan_cases(suite, {test::two_disk_scene()}, select_backends(suite, backends));
+    std::map<std::string, int> per_backend;
+    for (const auto& c : cases) {
+        ++per_backend[c.backend];
+        EXPECT_EQ(c.iterations.has_value(), c.backend == "iterative") << c.id;
+    }
+    // 2 seeds each; only the iterative backend is run once per sweep value.
+    EXPECT_EQ(per_backend["event"], 2);
+    EXPECT_EQ(per_backend["step"], 2);
+    EXPECT_EQ(per_backend["iterative"], 6);
 }
 
 TEST(SuiteFile, ErrorsNameTheFileTheKeyAndWhatWasExpected) {
