@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <pybind11/stl.h>
+
 #include "core/scene_loader.h"
 #include "core/state_hash.h"
 
