@@ -58,3 +58,19 @@ def test_run_refuses_frames_without_a_file(small_gas):
 def test_run_into_a_missing_directory_fails_before_running(small_gas, tmp_path):
     with pytest.raises(RuntimeError, match="no_such_dir"):
         collide.run(small_gas, "event", out=tmp_path / "no_such_dir" / "x.h5", progress=False)
+
+
+def test_ctrl_c_in_run_leaves_no_file(tmp_path, root):
+    import signal
+    text = (root / "data" / "scenes" / "box_gas_1000.toml").read_text().replace("duration = 10.0", "duration = 500.0")
+    scene = collide.Scene.from_toml(text, "long_gas")
+    out = tmp_path / "run.h5"
+    signal.setitimer(signal.ITIMER_REAL, 0.3)
+    old = signal.signal(signal.SIGALRM, lambda *_: signal.raise_signal(signal.SIGINT))
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            collide.run(scene, "event", out=out, progress=False)
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, old)
+    assert list(tmp_path.iterdir()) == []  # neither the file nor its temporary
