@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <memory>
+#include <regex>
 #include <stdexcept>
 
 #include <pybind11/pybind11.h>
@@ -115,6 +116,26 @@ py::dict validate(const std::string& suite_path, const std::string& out, int job
     return d;
 }
 
+// Raises `type` with the message and its parts as attributes: "FILE:LINE: DETAIL" or
+// "FILE: DETAIL" gives source, line (None without one) and detail (the key and what was expected).
+void raise_located(const py::object& type, const std::string& message) {
+    static const std::regex with_line(R"(^(.*?):([0-9]+): (.*)$)"), without_line(R"(^(.*?): (.*)$)");
+    py::object error = type(message);
+    std::smatch part;
+    error.attr("source") = py::none();
+    error.attr("line") = py::none();
+    error.attr("detail") = message;
+    if (std::regex_match(message, part, with_line)) {
+        error.attr("source") = part[1].str();
+        error.attr("line") = std::stoi(part[2].str());
+        error.attr("detail") = part[3].str();
+    } else if (std::regex_match(message, part, without_line)) {
+        error.attr("source") = part[1].str();
+        error.attr("detail") = part[2].str();
+    }
+    PyErr_SetObject(type.ptr(), error.ptr());
+}
+
 py::list backends() {
     py::list list;
     for (const BackendInfo& b : all_backends()) {
@@ -136,9 +157,18 @@ PYBIND11_MODULE(_collide, m) {
     m.doc() = "collide: 2D hard-disk collisions (the C++ solvers, scene reader and suite runner)";
 
     // Bad scene and suite files: ValueError subclasses whose text is the CLI's message, which
-    // names the file, the line, the key and what was expected.
-    py::register_exception<SceneError>(m, "SceneError", PyExc_ValueError);
-    py::register_exception<validation::SuiteError>(m, "SuiteError", PyExc_ValueError);
+    // names the file, the line, the key and what was expected; the parts are attributes too.
+    static py::exception<SceneError> scene_error(m, "SceneError", PyExc_ValueError);
+    static py::exception<validation::SuiteError> suite_error(m, "SuiteError", PyExc_ValueError);
+    py::register_exception_translator([](std::exception_ptr p) {
+        try {
+            if (p) std::rethrow_exception(p);
+        } catch (const SceneError& e) {
+            raise_located(scene_error, e.what());
+        } catch (const validation::SuiteError& e) {
+            raise_located(suite_error, e.what());
+        }
+    });
 
     // Provenance of the HDF5 files written from Python: the interpreter's command line.
     {
@@ -201,6 +231,8 @@ PYBIND11_MODULE(_collide, m) {
 
     m.def("_run", &run, py::arg("scene"), py::arg("backend"), py::arg("out"), py::arg("frames"), py::arg("progress"));
     m.def("_validate", &validate, py::arg("suite"), py::arg("out"), py::arg("jobs"), py::arg("resume"));
+    m.def("toml_from_dict", &toml_text_from_dict, py::arg("d"),
+          "The TOML text Scene.from_dict reads (the lines its error messages name)");
     m.def("backends", &backends, "The backends compiled into this build: name, precision, description");
     m.def("build_provenance", &build_provenance, "Commit, compiler, flags and library versions of this build");
 }

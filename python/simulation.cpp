@@ -94,12 +94,22 @@ Simulation::Simulation(const Scene& scene, const std::string& backend, const Bac
     solver_->load(scene_, initial);
 }
 
+void Simulation::check_idle() const {
+    // The GIL is held here and wherever busy_ changes, so a plain bool is enough.
+    if (busy_)
+        throw std::runtime_error(backend_ + ": this simulation is advancing in another thread; wait for advance_to() to return");
+}
+
 void Simulation::check_usable() const {
+    check_idle();
     if (!failure_.empty())
         throw std::runtime_error(backend_ + ": this simulation failed earlier and cannot go on (" + failure_ + ")");
 }
 
-double Simulation::time() const { return solver_->time(); }
+double Simulation::time() const {
+    check_idle();
+    return solver_->time();
+}
 
 // Chunks end on whole time steps k dt: the stepped backends then take exactly the steps one
 // call would (they step to round(t / dt)), and the event solver processes the same events in
@@ -110,6 +120,11 @@ void Simulation::advance_to(double t) {
     state_current_ = false;
     const double dt = scene_.run.dt;
     std::int64_t step = std::llround(solver_->time() / dt), chunk = 1;
+    busy_ = true;
+    struct Done {
+        bool& busy;
+        ~Done() { busy = false; }  // runs with the GIL held again (the release scopes ended)
+    } done{busy_};
     try {
         while (std::isfinite(t) && t >= solver_->time() && double(step + chunk) * dt < t) {
             step += chunk;
@@ -145,8 +160,14 @@ const ParticleState<double>& Simulation::state() {
 
 py::dict Simulation::metrics() { return metrics_dict(compute_metrics(scene_, state(), time())); }
 
-py::dict Simulation::stats() const { return stats_dict(solver_->stats()); }
+py::dict Simulation::stats() const {
+    check_idle();
+    return stats_dict(solver_->stats());
+}
 
-py::dict Simulation::provenance() const { return py::cast(solver_->provenance()); }
+py::dict Simulation::provenance() const {
+    check_idle();
+    return py::cast(solver_->provenance());
+}
 
 }  // namespace collide::python

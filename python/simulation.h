@@ -45,7 +45,8 @@ public:
     pybind11::dict provenance() const;
 
 private:
-    void check_usable() const;
+    void check_idle() const;    // not advancing in another thread
+    void check_usable() const;  // idle, and the solver has not failed
 
     Scene scene_;
     std::string backend_;
@@ -53,6 +54,7 @@ private:
     std::size_t initial_size_ = 0;
     ParticleState<double> state_;
     bool state_current_ = false;
+    bool busy_ = false;    // advance_to is running with the GIL released (another thread may call in)
     std::string failure_;  // set when the solver threw mid-step: its state is then unknown
 };
 

@@ -24,11 +24,14 @@ from ._collide import (  # noqa: F401  (re-exported)
     SuiteError,
     backends,
     build_provenance,
+    toml_from_dict,
 )
 from . import _collide
 
+__version__ = build_provenance().get("collide_version", "")
+
 __all__ = ["Scene", "SceneError", "Simulation", "SuiteError", "RunResult", "run", "validate",
-           "backends", "build_provenance"]
+           "backends", "build_provenance", "toml_from_dict"]
 
 
 class RunResult(dict):

@@ -55,12 +55,17 @@ def test_bad_scene_files_raise_the_cli_message(root, collide_exe):
 
 
 def test_scene_error_is_a_value_error_naming_the_key():
+    bad = {"description": "x", "world": {"box": [0, 0, 1, 1], "bogus": 1},
+           "particles": [{"kind": "gas", "count": 1, "radius": 0.1}]}
     with pytest.raises(collide.SceneError) as info:
-        collide.Scene.from_dict({"description": "x", "world": {"box": [0, 0, 1, 1], "bogus": 1},
-                                 "particles": [{"kind": "gas", "count": 1, "radius": 0.1}]}, "mine")
+        collide.Scene.from_dict(bad, "mine")
     assert isinstance(info.value, ValueError)
     assert "unknown key [world].bogus" in str(info.value)
     assert str(info.value).startswith("mine:")
+    # For a dict, the line is that of the TOML text made from it (collide.toml_from_dict).
+    assert info.value.source == "mine"
+    assert "bogus" in collide.toml_from_dict(bad).splitlines()[info.value.line - 1]
+    assert info.value.detail == "unknown key [world].bogus: expected one of box, boundary"
     with pytest.raises(collide.SceneError, match="restitution = 1.5: expected a number in"):
         collide.Scene.from_toml('description = "x"\n[world]\nbox = [0, 0, 1, 1]\n[physics]\nrestitution = 1.5\n')
 

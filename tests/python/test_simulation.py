@@ -89,3 +89,22 @@ def test_ctrl_c_raises_keyboard_interrupt_and_leaves_a_usable_simulation(root):
     assert sim.metrics()["overlapping_pairs"] == 0
     sim.advance_to(t + 0.1)
     assert sim.time == t + 0.1
+
+
+def test_gil_released_while_advancing_and_other_threads_are_told_to_wait(root):
+    import threading
+    import time
+    sim = collide.Simulation(collide.Scene.from_file(str(root / "data" / "scenes" / "box_gas_1000.toml")), "event")
+    worker = threading.Thread(target=sim.advance_to, args=(10.0,))
+    worker.start()
+    refused = 0
+    while worker.is_alive():  # this loop runs at all only because advance_to released the GIL
+        try:
+            sim.positions
+        except RuntimeError as e:
+            assert "advancing in another thread" in str(e)
+            refused += 1
+        time.sleep(0.01)
+    worker.join()
+    assert refused > 0
+    assert sim.time == 10.0 and sim.metrics()["overlapping_pairs"] == 0
