@@ -61,10 +61,14 @@ py::dict run(const Scene& scene, const std::string& backend_name, const std::str
 
     py::dict metrics;
     const auto& series = result.series;
+    // One array per Metrics field, with the field's type (the counts are int64, as in the HDF5 file).
     auto column = [&series](auto field) {
-        std::vector<double> v;
-        for (const Metrics& m : series) v.push_back(double(field(m)));
-        return read_only_array(v);
+        using T = decltype(field(series.front()));
+        std::vector<T> v;
+        for (const Metrics& m : series) v.push_back(field(m));
+        py::array_t<T> a(py::ssize_t(v.size()), v.data());
+        a.attr("flags").attr("writeable") = false;
+        return a;
     };
     metrics["time"] = column([](const Metrics& m) { return m.time; });
     metrics["momentum_x"] = column([](const Metrics& m) { return m.momentum_x; });

@@ -27,6 +27,7 @@ def test_python_run_and_cli_run_are_bit_identical(tmp_path, collide_exe, backend
         for name, series in result["metrics"].items():
             if name == "total_energy":
                 continue  # derived (kinetic + potential), not stored
+            assert series.dtype == cli["metrics"][name].dtype, name
             assert np.array_equal(series, cli["metrics"][name][...]), name
             assert np.array_equal(py["metrics"][name][...], cli["metrics"][name][...]), name
         final_x, final_v = cli["frames/position"][-1], cli["frames/velocity"][-1]
