@@ -1,0 +1,94 @@
+"""collide: 2D hard-disk collisions from Python.
+
+The solvers, the scene reader, the run driver and the suite runner are the C++ code of the
+`collide` program (this package binds them; it computes no physics of its own). docs/python.md
+describes the API; the short version:
+
+    scene = collide.Scene.from_file("data/scenes/box_gas_1000.toml")
+    sim = collide.Simulation(scene, backend="event")
+    sim.advance_to(1.0)
+    sim.positions, sim.velocities, sim.metrics(), sim.stats()
+
+    result = collide.run(scene, "step", out="run.h5")   # metric series as NumPy arrays
+    summary = collide.validate("validation/suites/default.toml", "results")
+"""
+
+import json
+import os
+import sys
+
+from ._collide import (  # noqa: F401  (re-exported)
+    Scene,
+    SceneError,
+    Simulation,
+    SuiteError,
+    backends,
+    build_provenance,
+    toml_from_dict,
+)
+from . import _collide
+
+__version__ = build_provenance().get("collide_version", "")
+
+__all__ = ["Scene", "SceneError", "Simulation", "SuiteError", "RunResult", "run", "validate",
+           "backends", "build_provenance", "toml_from_dict"]
+
+
+class RunResult(dict):
+    """What `run` returns: a dict with
+
+    metrics      name -> NumPy array, one entry per output time (time, kinetic_energy,
+                 momentum_x, ..., the fields of docs/output-format.md's /metrics group)
+    positions, velocities    the final state, (N, 2) float64
+    state_hash   the 64-bit hash of the final state's bits
+    stats        steps, contacts, phase_seconds, counters (as Simulation.stats())
+    wall_seconds time spent inside the solver
+    backend      the backend's name; out: the HDF5 file written, or None
+
+    `result["kinetic_energy"]` is a shortcut for `result["metrics"]["kinetic_energy"]`.
+    """
+
+    def __missing__(self, key):
+        return self["metrics"][key]
+
+
+def _scene(scene):
+    if isinstance(scene, Scene):
+        return scene
+    if isinstance(scene, dict):
+        return Scene.from_dict(scene)
+    if isinstance(scene, (str, os.PathLike)):
+        return Scene.from_file(os.fspath(scene))
+    raise TypeError("scene: expected a collide.Scene, a dict or a path, not %s" % type(scene).__name__)
+
+
+def run(scene, backend="event", out=None, frames=False, progress=True, **options):
+    """Runs `scene` (a Scene, dict or path) on `backend` through its output times, exactly as
+    `collide run` does, and returns a RunResult. With `out`, writes the same HDF5 file as
+    `collide run --out` (with `frames`, positions and velocities at every output time).
+    `options` are the backend's: threads, real ("float"/"double"), device, or backend-specific.
+    Ctrl-C stops at the next output time with KeyboardInterrupt; no file is then written."""
+    if frames and out is None:
+        raise ValueError("frames=True needs out= (frames are written to the HDF5 file)")
+    result = RunResult(_collide._run(_scene(scene), backend, os.fspath(out) if out is not None else "",
+                                     bool(frames), bool(progress), **options))
+    result["out"] = os.fspath(out) if out is not None else None
+    return result
+
+
+def validate(suite, out="results", jobs=1, resume=False):
+    """Runs a validation suite as `collide validate SUITE --out OUT` does (progress on stderr,
+    the same summary on stdout) and returns summary.json as a dict. Failed checks do not raise:
+    look at summary["checks"] (or the counts printed)."""
+    counts = _collide._validate(os.fspath(suite), os.fspath(out), int(jobs), bool(resume))
+    print("suite     %s: %d cases (%d run, %d resumed) in %.1f s" % (
+        counts["suite"], counts["cases"], counts["cases_run"], counts["cases_resumed"], counts["wall_seconds"]))
+    print("checks    %d passed, %d failed, %d left out" % (counts["passed"], counts["failed"], counts["left_out"]))
+    with open(os.path.join(os.fspath(out), "summary.json"), encoding="utf-8") as f:
+        summary = json.load(f)
+    for c in summary.get("checks", []):
+        if c.get("status") == "fail":
+            print("FAIL      %s: %s: %s" % (c.get("subject"), c.get("check"), c.get("detail")))
+    print("output    %s/summary.json, %s/junit.xml" % (out, out))
+    sys.stdout.flush()
+    return summary

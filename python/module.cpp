@@ -1,0 +1,242 @@
+// The extension module collide._collide: the scene reader, the backend registry, the run
+// driver and the suite runner of the C++ code, bound for Python (docs/python.md). Nothing here
+// computes physics; python/collide/__init__.py adds the few conveniences written in Python.
+#include <unistd.h>
+
+#include <cstdio>
+#include <memory>
+#include <regex>
+#include <stdexcept>
+
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "apps/progress_line.h"
+#include "core/provenance.h"
+#include "core/run_driver.h"
+#include "core/scene_loader.h"
+#include "core/state_hash.h"
+#include "scene_from_dict.h"
+#include "simulation.h"
+#include "validation/suite_runner.h"
+
+namespace py = pybind11;
+
+namespace collide::python {
+namespace {
+
+// Thrown out of run_scene's output callback when Ctrl-C was pressed: unwinds the run (the
+// RunWriter is destroyed uncommitted, so no half-written file is left) back to Python.
+struct Interrupted {};
+
+py::dict run(const Scene& scene, const std::string& backend_name, const std::string& out, bool frames,
+             bool progress, const py::kwargs& options) {
+    const BackendInfo& backend = backend_for(scene, backend_name);
+    const ParticleState<double> initial = generate_initial_state(scene);
+    auto solver = backend.create(backend_options(options));
+    std::unique_ptr<RunWriter> writer;
+    if (!out.empty()) writer = std::make_unique<RunWriter>(out, frames);
+
+    std::unique_ptr<cli::ProgressLine> line;
+    if (progress) line = std::make_unique<cli::ProgressLine>(stderr);
+    RunOptions run_options;
+    run_options.writer = writer.get();
+    run_options.on_output = [&line](double time, double duration) {
+        if (line) line->update(time, duration);
+        py::gil_scoped_acquire gil;
+        if (PyErr_CheckSignals() != 0) throw Interrupted{};
+    };
+    RunResult result;
+    try {
+        py::gil_scoped_release release;
+        result = run_scene(scene, *solver, initial, run_options);
+        if (line) line->finish();
+        if (writer) {
+            writer->write_attributes(run_provenance(scene, backend.name, *solver));
+            writer->commit();
+        }
+    } catch (const Interrupted&) {
+        throw py::error_already_set();  // the KeyboardInterrupt PyErr_CheckSignals set
+    }
+
+    py::dict metrics;
+    const auto& series = result.series;
+    // One array per Metrics field, with the field's type (the counts are int64, as in the HDF5 file).
+    auto column = [&series](auto field) {
+        using T = decltype(field(series.front()));
+        std::vector<T> v;
+        for (const Metrics& m : series) v.push_back(field(m));
+        py::array_t<T> a(py::ssize_t(v.size()), v.data());
+        a.attr("flags").attr("writeable") = false;
+        return a;
+    };
+    metrics["time"] = column([](const Metrics& m) { return m.time; });
+    metrics["momentum_x"] = column([](const Metrics& m) { return m.momentum_x; });
+    metrics["momentum_y"] = column([](const Metrics& m) { return m.momentum_y; });
+    metrics["kinetic_energy"] = column([](const Metrics& m) { return m.kinetic_energy; });
+    metrics["potential_energy"] = column([](const Metrics& m) { return m.potential_energy; });
+    metrics["total_energy"] = column([](const Metrics& m) { return m.total_energy(); });
+    metrics["overlapping_pairs"] = column([](const Metrics& m) { return m.overlapping_pairs; });
+    metrics["max_overlap"] = column([](const Metrics& m) { return m.max_overlap; });
+    metrics["mean_overlap"] = column([](const Metrics& m) { return m.mean_overlap; });
+    metrics["max_wall_penetration"] = column([](const Metrics& m) { return m.max_wall_penetration; });
+    metrics["nonfinite"] = column([](const Metrics& m) { return m.nonfinite; });
+
+    const ParticleState<double>& s = result.final_state;
+    py::dict d;
+    d["metrics"] = metrics;
+    d["positions"] = read_only_pairs(s.x, s.y);
+    d["velocities"] = read_only_pairs(s.vx, s.vy);
+    d["state_hash"] = state_hash(s);
+    d["stats"] = stats_dict(result.stats);
+    d["wall_seconds"] = result.wall_seconds;
+    d["backend"] = backend.name;
+    return d;
+}
+
+// Runs the suite as `collide validate` does (progress on stderr); the caller reads summary.json.
+py::dict validate(const std::string& suite_path, const std::string& out, int jobs, bool resume) {
+    const validation::Suite suite = validation::load_suite(suite_path);
+    validation::RunnerOptions options;
+    options.output_dir = out;
+    options.jobs = jobs;
+    options.resume = resume;
+    options.progress = stderr;
+    options.progress_is_terminal = ::isatty(STDERR_FILENO) != 0;
+    validation::SuiteOutcome outcome;
+    {
+        py::gil_scoped_release release;  // the cases run in forked children that never touch Python
+        outcome = validation::run_suite(suite, all_backends(), options);
+    }
+    py::dict d;
+    d["suite"] = suite.name;
+    d["cases"] = outcome.cases.size();
+    d["cases_run"] = outcome.cases_run;
+    d["cases_resumed"] = outcome.cases_resumed;
+    d["wall_seconds"] = outcome.wall_seconds;
+    d["passed"] = outcome.count(validation::CheckStatus::pass);
+    d["failed"] = outcome.count(validation::CheckStatus::fail);
+    d["left_out"] = outcome.count(validation::CheckStatus::left_out);
+    return d;
+}
+
+// Raises `type` with the message and its parts as attributes: "FILE:LINE: DETAIL" or
+// "FILE: DETAIL" gives source, line (None without one) and detail (the key and what was expected).
+void raise_located(const py::object& type, const std::string& message) {
+    static const std::regex with_line(R"(^(.*?):([0-9]+): (.*)$)"), without_line(R"(^(.*?): (.*)$)");
+    py::object error = type(message);
+    std::smatch part;
+    error.attr("source") = py::none();
+    error.attr("line") = py::none();
+    error.attr("detail") = message;
+    if (std::regex_match(message, part, with_line)) {
+        error.attr("source") = part[1].str();
+        error.attr("line") = std::stoi(part[2].str());
+        error.attr("detail") = part[3].str();
+    } else if (std::regex_match(message, part, without_line)) {
+        error.attr("source") = part[1].str();
+        error.attr("detail") = part[2].str();
+    }
+    PyErr_SetObject(type.ptr(), error.ptr());
+}
+
+py::list backends() {
+    py::list list;
+    for (const BackendInfo& b : all_backends()) {
+        py::dict d;
+        d["name"] = b.name;
+        d["precision"] = b.precision;
+        d["description"] = b.description;
+        list.append(d);
+    }
+    return list;
+}
+
+}  // namespace
+}  // namespace collide::python
+
+PYBIND11_MODULE(_collide, m) {
+    using namespace collide;
+    using namespace collide::python;
+    m.doc() = "collide: 2D hard-disk collisions (the C++ solvers, scene reader and suite runner)";
+
+    // Bad scene and suite files: ValueError subclasses whose text is the CLI's message, which
+    // names the file, the line, the key and what was expected; the parts are attributes too.
+    static py::exception<SceneError> scene_error(m, "SceneError", PyExc_ValueError);
+    static py::exception<validation::SuiteError> suite_error(m, "SuiteError", PyExc_ValueError);
+    py::register_exception_translator([](std::exception_ptr p) {
+        try {
+            if (p) std::rethrow_exception(p);
+        } catch (const SceneError& e) {
+            raise_located(scene_error, e.what());
+        } catch (const validation::SuiteError& e) {
+            raise_located(suite_error, e.what());
+        }
+    });
+
+    // Provenance of the HDF5 files written from Python: the interpreter's command line.
+    {
+        static std::vector<std::string> args;
+        static std::vector<char*> argv;
+        args.push_back(py::module_::import("sys").attr("executable").cast<std::string>());
+        for (const auto& a : py::module_::import("sys").attr("argv")) args.push_back(py::str(a).cast<std::string>());
+        for (auto& a : args) argv.push_back(a.data());
+        set_command_line(int(argv.size()), argv.data());
+    }
+
+    py::class_<Scene>(m, "Scene", "A scene (docs/scenes.md): read from a file, TOML text or a dict")
+        .def_static("from_file", &load_scene, py::arg("path"), "Reads a scene file, as `collide run` does")
+        .def_static("from_toml", &parse_scene, py::arg("text"), py::arg("name") = "scene",
+                    "Reads scene TOML text; `name` stands for the file name in messages")
+        .def_static(
+            "from_dict",
+            [](const py::dict& d, const std::string& name) { return parse_scene(toml_text_from_dict(d), name); },
+            py::arg("d"), py::arg("name") = "scene",
+            "Reads a dict with the keys of a scene file (tables as dicts, [[particles]] as a list of dicts)")
+        .def_readonly("name", &Scene::name)
+        .def_readonly("description", &Scene::description)
+        .def_readonly("seed", &Scene::seed)
+        .def_readonly("source_path", &Scene::source_path)
+        .def_readonly("source_text", &Scene::source_text, "The scene's TOML text (for a dict: the text made from it)")
+        .def_property_readonly("box", [](const Scene& s) {
+            return py::make_tuple(s.world.xmin, s.world.ymin, s.world.xmax, s.world.ymax);
+        })
+        .def_property_readonly("periodic", &Scene::periodic)
+        .def_property_readonly("duration", [](const Scene& s) { return s.run.duration; })
+        .def_property_readonly("output_interval", [](const Scene& s) { return s.run.output_interval; })
+        .def_property_readonly("dt", [](const Scene& s) { return s.run.dt; })
+        .def("initial_state_hash", [](const Scene& s) { return state_hash(generate_initial_state(s)); },
+             "The 64-bit FNV-1a hash of the generated initial state's bits (core/state_hash.h)")
+        .def("__repr__", [](const Scene& s) { return "<collide.Scene '" + s.name + "'>"; });
+
+    py::class_<Simulation>(m, "Simulation", "One scene on one backend; state read back as NumPy arrays (copies)")
+        .def(py::init([](const Scene& scene, const std::string& backend, const py::kwargs& options) {
+                 return std::make_unique<Simulation>(scene, backend, backend_options(options));
+             }),
+             py::arg("scene"), py::arg("backend") = "event")
+        .def("advance_to", &Simulation::advance_to, py::arg("t"),
+             "Advances to absolute time t (stepped backends: to the nearest whole step)")
+        .def_property_readonly("time", &Simulation::time)
+        .def_property_readonly("backend", &Simulation::backend)
+        .def_property_readonly("scene", &Simulation::scene)
+        .def("__len__", &Simulation::size)
+        .def_property_readonly("positions", [](Simulation& s) { return read_only_pairs(s.state().x, s.state().y); })
+        .def_property_readonly("velocities", [](Simulation& s) { return read_only_pairs(s.state().vx, s.state().vy); })
+        .def_property_readonly("radii", [](Simulation& s) { return read_only_array(s.state().radius); })
+        .def_property_readonly("masses", [](Simulation& s) { return read_only_array(s.state().mass); })
+        .def("state_hash", [](Simulation& s) { return state_hash(s.state()); },
+             "The hash of the current state's bits (core/state_hash.h)")
+        .def("metrics", &Simulation::metrics)
+        .def("stats", &Simulation::stats)
+        .def("provenance", &Simulation::provenance)
+        .def("__repr__", [](const Simulation& s) {
+            return "<collide.Simulation '" + s.scene().name + "' on " + s.backend() + " at t = " + std::to_string(s.time()) + ">";
+        });
+
+    m.def("_run", &run, py::arg("scene"), py::arg("backend"), py::arg("out"), py::arg("frames"), py::arg("progress"));
+    m.def("_validate", &validate, py::arg("suite"), py::arg("out"), py::arg("jobs"), py::arg("resume"));
+    m.def("toml_from_dict", &toml_text_from_dict, py::arg("d"),
+          "The TOML text Scene.from_dict reads (the lines its error messages name)");
+    m.def("backends", &backends, "The backends compiled into this build: name, precision, description");
+    m.def("build_provenance", &build_provenance, "Commit, compiler, flags and library versions of this build");
+}
