@@ -83,6 +83,14 @@ def load_case(directory, case):
         raise ReportInputError(f"{path}: cannot read: {e.strerror or e}") from None
     except (tomllib.TOMLDecodeError, UnicodeDecodeError) as e:
         raise ReportInputError(f"{path}: not a valid case result (TOML): {e}") from None
+    missing = [k for k in ("series", "initial", "final", "spec") if not isinstance(result.get(k), dict)]
+    if missing:
+        raise ReportInputError(f"{path}: not a complete case result: no table {', '.join(missing)} "
+                               "(a truncated file?)")
+    for k in ("initial", "final"):
+        snap = result[k]
+        if not all(isinstance(snap.get(v), list) for v in ("x", "y", "vx", "vy", "radius")):
+            raise ReportInputError(f"{path}: table '{k}' lacks one of x, y, vx, vy, radius (a truncated file?)")
     series = result.get("series")
     if not isinstance(series, dict) or not all(isinstance(series.get(k), list) for k in
                                                ("time", "kinetic_energy", "total_energy", "momentum_x", "momentum_y")):

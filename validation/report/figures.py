@@ -12,6 +12,7 @@ matplotlib.use("Agg")  # no display: render to memory
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.collections import PatchCollection  # noqa: E402
+from matplotlib.lines import Line2D  # noqa: E402
 from matplotlib.patches import Circle  # noqa: E402
 
 # One fixed colour per backend, so a backend looks the same in every figure.
@@ -46,7 +47,7 @@ def tex(text):
     return str(text).replace("$", r"\$")
 
 
-def draw_points(ax, points, colour_, label, marker="o", annotate=True):
+def draw_points(ax, points, colour_, label, marker="o", annotate=True, label_unresolved=True):
     """One line of a work-precision diagram. points: [{'x', 'y', 'se', 'resolved', 'label'}]
     sorted as they are to be joined. A resolved point is filled, with its error bar (±1 SE);
     an unresolved one (difference below 2 SE) is drawn hollow at its 2 SE bound and labelled
@@ -55,7 +56,7 @@ def draw_points(ax, points, colour_, label, marker="o", annotate=True):
     line = None
     if resolved:
         line, = ax.plot([p["x"] for p in resolved], [p["y"] for p in resolved], "-", marker=marker,
-                        color=colour_, label=tex(label), markersize=6)
+                        color=colour_, label=tex(label) if label else None, markersize=6)
         ax.errorbar([p["x"] for p in resolved], [p["y"] for p in resolved],
                     yerr=[[min(p["se"], p["y"] * 0.999) for p in resolved], [p["se"] for p in resolved]],
                     fmt="none", ecolor=colour_, elinewidth=1, capsize=3)
@@ -64,9 +65,10 @@ def draw_points(ax, points, colour_, label, marker="o", annotate=True):
             continue
         y = max(2 * p["se"], 1e-17)
         ax.plot([p["x"]], [y], linestyle="none", marker=marker, markerfacecolor="none", markeredgecolor=colour_,
-                markersize=7, label=None if (line or resolved) else tex(label) + " (not resolved)")
-        ax.annotate("not resolved", (p["x"], y), textcoords="offset points", xytext=(5, -9), fontsize=6.5,
-                    color=colour_)
+                markersize=7, label=None if (line or resolved or not label) else tex(label) + " (not resolved)")
+        if label_unresolved:
+            ax.annotate("not resolved", (p["x"], y), textcoords="offset points", xytext=(5, -9), fontsize=6.5,
+                        color=colour_)
     if annotate:
         for p in points:
             if p.get("label"):
@@ -115,32 +117,36 @@ def headline(summary, digest, aliases):
         return None
     fig, axes = plt.subplots(1, panels, figsize=(5.0 * panels, 3.9), squeeze=False)
     axes = list(axes[0])
+    used_scenes = []
+    every_scene = list(dict.fromkeys(l["scene"] for l in lines))
+
+    def scene_marker(scene):
+        return SCENE_MARKERS[every_scene.index(scene) % len(SCENE_MARKERS)]
     names = {b: " = ".join([b] + [x for x, y in aliases.items() if y == b]) for b in
              dict.fromkeys(l["backend"] for l in lines)}
     if trajectory:
         ax = axes.pop(0)
         scenes = list(dict.fromkeys(l["scene"] for l in trajectory))
         for line in trajectory:
-            marker = SCENE_MARKERS[scenes.index(line["scene"]) % len(SCENE_MARKERS)]
-            draw_points(ax, trajectory_points(line), colour(line["backend"]),
-                        f"{names[line['backend']]}, {line['scene']}", marker, annotate=False)
+            marker = scene_marker(line["scene"])
+            draw_points(ax, trajectory_points(line), colour(line["backend"]), None, marker, annotate=False)
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_title("trajectory scenes: mean error ± SE over phase replicates", fontsize=9)
         ax.set_ylabel("trajectory error / r_min [dimensionless]")
-        _legend(ax, "backend, scene")
+        used_scenes += [(sc, scene_marker(sc)) for sc in scenes]
     for check, title, ylabel in (("pressure", "pressure Z", "|Z − Z_ref| / Z_ref [dimensionless]"),
                                  ("collision_rate", "collision rate", "|ν − ν_ref| / ν_ref [dimensionless]")):
         if not statistical_scenes:
             break
         ax = axes.pop(0)
         for si, scene in enumerate(statistical_scenes):
-            marker = SCENE_MARKERS[si % len(SCENE_MARKERS)]
+            marker = scene_marker(scene)
             for backend, stats in digest.statistical_points(summary, scene, check).items():
                 if backend in aliases:
                     continue
-                draw_points(ax, statistical_line_points(stats), colour(backend), f"{names.get(backend, backend)}, {scene}",
-                            marker, annotate=False)
+                draw_points(ax, statistical_line_points(stats), colour(backend), None, marker, annotate=False,
+                            label_unresolved=False)
             cost = digest.reference_cost(summary, scene)
             if cost:
                 ax.axvline(cost, color=colour(summary["reference"]), linestyle="--", linewidth=1)
@@ -148,13 +154,26 @@ def headline(summary, digest, aliases):
                             rotation=90, fontsize=6.5, xytext=(3, 0), textcoords="offset points")
         ax.set_xscale("log")
         ax.set_yscale("log")
-        ax.set_title(f"{title}: relative difference of means ± SE (hollow: not resolved)", fontsize=9)
+        ax.set_title(f"{title}: relative difference of means ± SE", fontsize=9)
         ax.set_ylabel(ylabel)
-        _legend(ax, "backend, scene")
+        if check == "pressure":
+            used_scenes += [(sc, scene_marker(sc)) for sc in statistical_scenes]
     for ax in fig.axes:
         ax.set_xlabel("wall time per simulated time unit [s]")
         ax.grid(True, which="both", alpha=0.3)
-    fig.tight_layout()
+    handles = [Line2D([], [], color=colour(b), marker="o", label=tex(names[b])) for b in names]
+    seen = set()
+    for scene, marker in used_scenes:
+        if (scene, marker) not in seen:
+            seen.add((scene, marker))
+            handles.append(Line2D([], [], color="0.3", marker=marker, linestyle="none", label=tex(scene)))
+    handles.append(Line2D([], [], color="0.3", marker="o", markerfacecolor="none", linestyle="none",
+                          label="hollow: not resolved (< 2 SE), drawn at 2 SE"))
+    if statistical_scenes:
+        handles.append(Line2D([], [], color=colour(summary["reference"]), linestyle="--",
+                              label=tex(f"{summary['reference']} (exact): its cost per time unit")))
+    fig.tight_layout(rect=(0, 0.1, 1, 1))
+    fig.legend(handles=handles, loc="lower center", ncol=min(len(handles), 7), fontsize=7.5, frameon=False)
     return _png(fig)
 
 

@@ -32,8 +32,22 @@ CHECK_ORDER = ["run", "momentum_drift", "energy_drift", "max_overlap", "mean_ove
                "stability"]
 
 
+_CASES = {}
+
+
 def load_case(directory, case):
-    return digest.load_case(directory, case)
+    key = (directory, case["id"])
+    if key not in _CASES:
+        _CASES[key] = digest.load_case(directory, case)
+    return _CASES[key]
+
+
+def verify_cases(summary, directory):
+    """Reads every finished case's result file, so that a truncated or unreadable one stops
+    the report with its name rather than being skipped or drawn half."""
+    for case in summary["cases"]:
+        if case["status"] == "completed" and case.get("result_file"):
+            load_case(directory, case)
 
 
 def scene_box(path):
@@ -160,7 +174,7 @@ def margin_text(worst, link=True):
     if worst is None:
         return "n/a"
     m, subject, check = worst
-    text = "∞" if m == math.inf else f"{m:.2f}"
+    text = "∞" if m == math.inf else f"{m:.2f}" if m >= 0.01 else fmt(m)
     where = f"{subject}: {check.replace('_', ' ')}"
     return f"{text} <span class='where'>({html.escape(where)})</span>" if link else f"{text} ({where})"
 
@@ -599,6 +613,7 @@ def write_markdown_full(summary, path, a=None):
 
 def render(directory):
     summary = digest.load_summary(directory)
+    verify_cases(summary, directory)
     out = os.path.join(directory, "report")
     os.makedirs(out, exist_ok=True)
     a = Analysis(summary)
