@@ -239,6 +239,8 @@ def toc(a):
 
 def headline_figure(a):
     png = figures.headline(a.summary, digest, a.aliases)
+    if png is None and a.stability:
+        return "<p id='headline'>A stability suite draws maps instead of work-precision figures.</p>"
     if png is None:
         return (f"<p id='headline'>No work-precision data: it needs the reference backend "
                 f"'{html.escape(a.summary['reference'])}' and a scene compared by trajectory or statistics.</p>")
@@ -462,7 +464,7 @@ table.checks { font-size: 10.5px; } table.checks td { white-space: nowrap; }
 table.digest { font-size: 12px; margin: 0.2em 0 0.4em 0; } table.digest tr.total td { background: #f6f6f6; }
 .where { color: #666; font-size: 10.5px; }
 .top { display: flex; gap: 14px; align-items: flex-start; }
-.top .main { flex: 1 1 auto; }
+.top .main { flex: 1 1 auto; min-width: 0; overflow-x: auto; }
 nav#toc { flex: 0 0 290px; font-size: 12px; border: 1px solid #ddd; padding: 4px 8px; background: #fafafa; }
 nav#toc ul { margin: 2px 0; padding-left: 16px; } nav#toc p { margin: 4px 0; }
 figure { margin: 0.6em 0 1.6em 0; } figure img { max-width: 100%; border: 1px solid #ddd; }
@@ -480,15 +482,17 @@ def write_html(summary, directory, path, a=None):
     verdict = verdict_text(a)
     stability_first = ""
     if a.stability:
-        stability_first = ("<h2 id='stability-first'>First failure of each backend</h2>"
-                           + stability.first_failure_table(summary))
+        stability_first = ("<h2 id='stability-first'>First failure of each backend</h2><p class='where'>Each cell: the "
+                           "first failure on that scene (smallest failing dt, then smallest swept value) and failed / "
+                           "classified cases; hover for the measured value. Maps and the full table: "
+                           "<a href='#stability'>Stability</a>.</p>" + stability.first_failure_matrix(summary))
     body = f"""<!DOCTYPE html><html><head><meta charset="utf-8">
 <title>collide validation report: {html.escape(summary['suite'])}</title><style>{STYLE}</style></head><body>
 <h1>Validation report: suite '{html.escape(summary['suite'])}'</h1>
 <div class="top"><div class="main">
 <p class="verdict {'pass' if a.passed else 'failed'}" id="verdict">{html.escape(verdict)}.</p>
 {stability_first}
-{digest_table(a)}
+{'<h2>Digest</h2>' if a.stability else ''}{digest_table(a)}
 {identical_line(a)}
 </div>{toc(a)}</div>
 {headline_figure(a)}

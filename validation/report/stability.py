@@ -166,6 +166,32 @@ def first_failure_table(summary):
     return "\n".join(out)
 
 
+def first_failure_matrix(summary):
+    """The stability suite's first screen: one row per scene, one column per backend, each cell
+    the backend's first failure on that scene (smallest failing dt, then smallest value)."""
+    rows = first_failures(summary)
+    scenes = list(OrderedDict.fromkeys(s for s, _ in rows))
+    backends = list(OrderedDict.fromkeys(b for _, b in rows))
+    out = ["<table id='first-failures' class='checks'><tr><th>scene</th>"
+           + "".join(f"<th>{html.escape(b)}</th>" for b in backends) + "</tr>"]
+    for scene in scenes:
+        out.append(f"<tr><td>{html.escape(scene)}</td>")
+        for b in backends:
+            row = rows.get((scene, b))
+            if row is None:
+                out.append("<td class='left_out'>left out</td>")
+            elif not row["failed"]:
+                out.append(f"<td class='pass'>stable ({row['cases']})</td>")
+            else:
+                first = min(row["failed"], key=lambda c: (c["dt"], min(c.get("parameters", {}).values(), default=0.0)))
+                title = html.escape(first.get("outcome_reason", ""), quote=True)
+                out.append(f"<td class='fail' title='{title}'>{describe(first, summary)} "
+                           f"({len(row['failed'])}/{row['cases']})</td>")
+        out.append("</tr>")
+    out.append("</table>")
+    return "\n".join(out)
+
+
 def section(summary, image):
     """The report's stability section (HTML), or "" without stability outcomes."""
     if not has_outcomes(summary):
@@ -185,7 +211,8 @@ def section(summary, image):
                            "axes list the swept values, equally spaced, so a geometric sweep reads as a log axis), "
                            "coloured by its outcome (legend). The exact reference has no dt and is not drawn; "
                            "white: no case.", f"stability map of {scene}"))
-    parts.append("<p>The first failure of each backend is the table at the top of this page.</p>")
+    parts.append("<h3 id='first-failures-detail'>First failure of each backend, by dt and by parameter</h3>")
+    parts.append(first_failure_table(summary))
     return "\n".join(parts)
 
 
