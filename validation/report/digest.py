@@ -385,4 +385,4 @@ def energy_jumps(result, threshold=1e-3, factor=10.0):
     median = sorted(abs(x) for x in steps)[len(steps) // 2]
     if abs(steps[i]) < threshold or abs(steps[i]) < factor * median:
         return None
-    return {"t0": t[i], "t1": t[i + 1], "change": steps[i]}
+    return {"t0": t[i], "t1": t[i + 1], "change": steps[i], "median": median}

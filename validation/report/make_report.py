@@ -386,14 +386,14 @@ def jump_notes(scene, chosen, a):
     if not conserved:
         return jumps, ""
     for backend, case, result in chosen:
-        if backend == a.summary["reference"]:
+        if backend == a.summary["reference"] or backend in a.aliases:
             continue
         j = digest.energy_jumps(result)
         if j:
             jumps[backend] = j
             notes.append(f"<li><b>{html.escape(backend)}</b> ({html.escape(case['id'])}): the energy changes by "
                          f"{100 * j['change']:+.2g} % of max K between t = {j['t0']:g} and t = {j['t1']:g}, one output "
-                         "interval, against a median change per interval ten times smaller.</li>")
+                         f"interval; the median interval changes it by {100 * j['median']:.2g} %.</li>")
     if not notes:
         return jumps, ""
     return jumps, ("<p>Energy jumps in the cases shown:</p><ul>" + "".join(notes) + "</ul><p>The run files keep "
