@@ -283,7 +283,7 @@ def predicted_text(c, percent=False):
     if percent:
         v = c.get("value")
         unc = f" ± {100 * u:.2g}" if isinstance(u, (int, float)) else ""
-        verb = "loses" if c.get("signed_value", v) is None or (v or 0) >= 0 else "gains"
+        verb = "loses" if (v or 0) >= 0 else "gains"  # the drift is recorded as a loss
         return f"{verb} {100 * abs(v):.2g} % where the rule is expected to lose {100 * p:.2g}{unc} %"
     return f"expected {fmt(p)}" + (f" ± {fmt(u)}" if isinstance(u, (int, float)) else "")
 
