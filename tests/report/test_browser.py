@@ -107,6 +107,17 @@ class FirstScreen(unittest.TestCase):
                 self.assertTrue(os.path.exists(os.path.join(os.path.dirname(self.index), href.split("#")[0])),
                                 f"link {href} names a file that does not exist")
 
+    def test_digest_link_opens_its_table(self):
+        from selenium.webdriver.common.by import By
+        links = self.driver.find_elements(By.CSS_SELECTOR, "#digest a[href^='#backend-']")
+        if not links:
+            self.skipTest("no backend links in the digest")
+        target = links[-1].get_attribute("href").split("#", 1)[1]
+        links[-1].click()
+        element = self.driver.find_element(By.ID, target)
+        self.assertTrue(element.is_displayed(), f"#{target} stays hidden in a collapsed table after its link")
+        self.driver.get("file://" + self.index)  # back to the first screen for the other tests
+
     def test_ids_unique(self):
         ids = self.driver.execute_script("return Array.from(document.querySelectorAll('[id]')).map(e => e.id);")
         self.assertEqual(len(ids), len(set(ids)), "duplicate ids: " + str(sorted({i for i in ids if ids.count(i) > 1})))

@@ -520,6 +520,16 @@ every point that the summary records, for comparison.</p>
 warm-up run. Each case runs in its own process; timings on a shared machine are noisy.</p>
 {timing_table(summary)}
 <h2 id="provenance">6. Provenance</h2>{provenance_table(summary)}
+<script>
+// A link into a collapsed table opens the <details> around its target.
+function openTarget() {{
+  const t = location.hash && document.getElementById(decodeURIComponent(location.hash.slice(1)));
+  for (let e = t; e; e = e.parentElement) if (e.tagName === "DETAILS") e.open = true;
+  if (t) t.scrollIntoView();
+}}
+window.addEventListener("hashchange", openTarget);
+openTarget();
+</script>
 </body></html>"""
     with open(path, "w", encoding="utf-8") as f:
         f.write(body)
