@@ -212,14 +212,16 @@ def work_precision(summary, scene, digest, aliases):
     return _png(fig)
 
 
-def conservation(case_results, scene, jumps=None):
+def conservation(case_results, scene, jumps=None, labels=None):
     """Relative drift of energy and momentum against time, one line per backend; `jumps`:
     backend -> {'t0', 't1', 'change'}, the interval where its energy jumped, marked."""
     if not case_results:
         return None
     fig, (ax_e, ax_p) = plt.subplots(1, 2, figsize=(10, 3.8))
+    labels = labels or {}
     for index, (backend, result) in enumerate(case_results):
         style, width = STYLES[index % len(STYLES)]
+        name = labels.get(backend, backend)
         s = result["series"]
         t = np.asarray(s["time"], dtype=float)
         if t.size == 0:
@@ -228,7 +230,7 @@ def conservation(case_results, scene, jumps=None):
         total = np.asarray(s["total_energy"], dtype=float)
         scale = max(float(np.nanmax(kinetic)), 1e-300)
         energy = total if abs(total[0] - kinetic[0]) > 0 else kinetic
-        ax_e.plot(t, (energy - energy[0]) / scale, color=colour(backend), label=tex(backend), linestyle=style,
+        ax_e.plot(t, (energy - energy[0]) / scale, color=colour(backend), label=tex(name), linestyle=style,
                   linewidth=width, alpha=0.85)
         jump = (jumps or {}).get(backend)
         if jump:
@@ -238,7 +240,7 @@ def conservation(case_results, scene, jumps=None):
         px = np.asarray(s["momentum_x"], dtype=float)
         py = np.asarray(s["momentum_y"], dtype=float)
         mscale = np.sqrt(2 * max(result.get("total_mass", 0.0), 1e-300) * max(kinetic[0], 1e-300))
-        ax_p.plot(t, np.hypot(px - px[0], py - py[0]) / mscale, color=colour(backend), label=tex(backend),
+        ax_p.plot(t, np.hypot(px - px[0], py - py[0]) / mscale, color=colour(backend), label=tex(name),
                   linestyle=style, linewidth=width, alpha=0.85)
     ax_e.set_xlabel("simulated time [scene time units]")
     ax_e.set_ylabel("(E(t) - E(0)) / max K [dimensionless]")
@@ -253,7 +255,7 @@ def conservation(case_results, scene, jumps=None):
     return _png(fig)
 
 
-def overlap_histogram(case_results, scene):
+def overlap_histogram(case_results, scene, labels=None):
     """Distribution of relative overlap depths in the final state, per backend."""
     depths = [(b, np.asarray(r["overlap_depths"], dtype=float)) for b, r in case_results]
     depths = [(b, d[d > 0]) for b, d in depths]
@@ -265,7 +267,8 @@ def overlap_histogram(case_results, scene):
     bins = np.logspace(np.log10(max(low, 1e-17)), np.log10(max(high, low * 10)), 30)
     for backend, d in depths:
         if d.size:
-            ax.hist(d, bins=bins, histtype="step", color=colour(backend), label=tex(f"{backend} ({d.size} pairs)"))
+            name = (labels or {}).get(backend, backend)
+            ax.hist(d, bins=bins, histtype="step", color=colour(backend), label=tex(f"{name} ({d.size} pairs)"))
     ax.set_xscale("log")
     ax.set_xlabel("relative overlap depth (r_i + r_j - d) / (r_i + r_j) [dimensionless]")
     ax.set_ylabel("overlapping pairs [count]")

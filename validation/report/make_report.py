@@ -414,6 +414,7 @@ def scene_sections(summary, directory, a=None):
             continue
         results = [(b, r) for b, _, r in chosen]
         shown = [(b, r) for b, r in results if b not in a.aliases]
+        labels = {b: " = ".join([b] + [x for x, y in a.aliases.items() if y == b]) for b, _ in shown}
         parts.append(image(figures.work_precision(summary, scene, digest, a.aliases),
                            f"<b>Work against precision, {html.escape(scene)}.</b> Each point is one time step "
                            "(labelled dt) of one backend: horizontal, the wall-clock seconds it needs per unit of "
@@ -425,7 +426,7 @@ def scene_sections(summary, directory, a=None):
                            "work-precision diagram"))
         which = ", ".join(f"{b} at dt = {c['dt']:g}, seed {c['seed']}" for b, c, _ in chosen)
         jumps, notes = jump_notes(scene, chosen, a)
-        parts.append(image(figures.conservation(shown, scene, jumps),
+        parts.append(image(figures.conservation(shown, scene, jumps, labels),
                            f"<b>Conservation, {html.escape(scene)}.</b> Left: change of the energy (total energy "
                            "under gravity, else kinetic) since t = 0, divided by the largest kinetic energy seen. "
                            "Right: change of the total momentum, divided by sqrt(2 M K(0)). Exact dynamics keeps both "
@@ -433,7 +434,7 @@ def scene_sections(summary, directory, a=None):
                            "drawn with different dashes and widths, so lines that coincide stay visible. "
                            f"Cases shown: {html.escape(which)}.", "conservation time series"))
         parts.append(notes)
-        hist = figures.overlap_histogram(shown, scene)
+        hist = figures.overlap_histogram(shown, scene, labels)
         if hist:
             parts.append(image(hist, f"<b>Overlaps, {html.escape(scene)}.</b> Histogram of how deep overlapping "
                                "pairs of disks intersect in the final state, relative to their contact distance "
