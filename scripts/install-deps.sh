@@ -11,6 +11,7 @@ packages=(
   clang libclang-rt-14-dev libomp-dev
   python3 python3-matplotlib python3-numpy python3-h5py
   python3-dev pybind11-dev python3-pybind11 python3-pytest
+  chromium chromium-driver python3-selenium
 )
 
 missing=()

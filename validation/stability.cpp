@@ -114,4 +114,22 @@ Classification classify(const CaseResult& r, const CaseResult* reference, const 
     return {Outcome::stable, notes.empty() ? "no failure mode found" : "no failure mode found; " + notes};
 }
 
+std::vector<std::string> unexpected_outcomes(const std::vector<CaseResult>& cases,
+                                             const std::vector<Classification>& classifications) {
+    std::vector<std::string> out;
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+        const CaseResult& c = cases[i];
+        if (i >= classifications.size()) {
+            out.push_back(c.spec.id + ": not classified");
+            continue;
+        }
+        const Classification& k = classifications[i];
+        if (c.spec.reference && k.outcome != Outcome::stable && k.outcome != Outcome::left_out)
+            out.push_back(c.spec.id + ": the reference backend is not stable: " + to_string(k.outcome) + ": " + k.reason);
+        else if (k.outcome == Outcome::crash)
+            out.push_back(c.spec.id + ": crash: " + k.reason);
+    }
+    return out;
+}
+
 }  // namespace collide::validation

@@ -19,6 +19,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "applicability.h"
 #include "case_result.h"
@@ -46,5 +47,14 @@ double median_displacement(const CaseResult& result);
 // Largest rise of energy above its initial value divided by K(0) (by max K if K(0) = 0);
 // `total` selects kinetic + potential. 0 when it never rises.
 double energy_growth(const MetricSeries& series, bool total);
+
+// A stability suite maps where methods break: a case that breaks is a finding, not a failed
+// run. What is unexpected there: a case left unclassified, the reference backend (the exact
+// solver) not finishing stably, or any crash (a process dying is a defect, not a stability
+// limit). A hang of a stepped backend is a finding (too many steps for the time limit).
+// Returns one line per unexpected case; empty: every case classified, nothing unexpected.
+// `classifications` is parallel to `cases`.
+std::vector<std::string> unexpected_outcomes(const std::vector<CaseResult>& cases,
+                                             const std::vector<Classification>& classifications);
 
 }  // namespace collide::validation

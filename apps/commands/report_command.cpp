@@ -28,6 +28,9 @@ void execute(const std::string& dir) {
     }
     int status = 0;
     ::waitpid(pid, &status, 0);
+    // Exit status 2: an input file is malformed; the renderer has named it and what is wrong.
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 2)
+        throw std::runtime_error("no report written: " + dir + " holds a malformed input (named above)");
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
         throw std::runtime_error(std::string("the report renderer failed (") + COLLIDE_PYTHON + " " + script + ")");
 }

@@ -37,6 +37,16 @@ void execute(const ValidateArgs& args) {
         if (c.status == validation::CheckStatus::fail)
             std::printf("FAIL      %s: %s: %s\n", c.subject.c_str(), c.check.c_str(), c.detail.c_str());
     std::printf("output    %s/summary.json, %s/junit.xml\n", args.out.c_str(), args.out.c_str());
+    if (suite.stability) {
+        // A stability suite's product is the classification: breaking cases are findings.
+        // It fails only where something unexpected happened (validation/stability.h).
+        const auto unexpected = validation::unexpected_outcomes(outcome.cases, outcome.classifications);
+        for (const auto& line : unexpected) std::printf("UNEXPECTED %s\n", line.c_str());
+        std::printf("stability %zu cases classified, %zu unexpected%s\n", outcome.classifications.size(),
+                    unexpected.size(), unexpected.empty() ? " (failed checks above are findings of the map)" : "");
+        if (!unexpected.empty()) throw CLI::RuntimeError(1);
+        return;
+    }
     if (!outcome.passed()) throw CLI::RuntimeError(1);  // exit status 1, the summary above says why
 }
 

@@ -141,5 +141,25 @@ TEST(Stability, StalledWhenTheDisksBarelyMoveWhereTheReferenceMovesThem) {
     EXPECT_EQ(classify(broken, &reference, walls(), tol).outcome, Outcome::nan);
 }
 
+// A stability suite maps failures: a stepped backend breaking is a finding; the exact solver
+// breaking, a crash, or a case left unclassified is not (validate exits 1 only for those).
+TEST(Stability, OnlyTheReferenceFailingACrashOrAnUnclassifiedCaseIsUnexpected) {
+    CaseResult stepped, exact;
+    stepped.spec.id = "s__step__dt0.01__seed1";
+    exact.spec.id = "s__event__seed1";
+    exact.spec.reference = true;
+    const Classification stable{Outcome::stable, ""}, tunnelled{Outcome::tunnelling, "1 pair"},
+        hang{Outcome::hang, "time limit"}, crash{Outcome::crash, "signal 6"};
+    EXPECT_TRUE(unexpected_outcomes({stepped, exact}, {tunnelled, stable}).empty());
+    EXPECT_TRUE(unexpected_outcomes({stepped, exact}, {hang, stable}).empty());
+    const auto crashed = unexpected_outcomes({stepped, exact}, {crash, stable});
+    ASSERT_EQ(crashed.size(), 1u);
+    EXPECT_NE(crashed[0].find("s__step__dt0.01__seed1: crash"), std::string::npos);
+    const auto exact_failed = unexpected_outcomes({stepped, exact}, {stable, hang});
+    ASSERT_EQ(exact_failed.size(), 1u);
+    EXPECT_NE(exact_failed[0].find("reference backend is not stable: hang"), std::string::npos);
+    EXPECT_EQ(unexpected_outcomes({stepped, exact}, {stable}).size(), 1u);  // one case not classified
+}
+
 }  // namespace
 }  // namespace collide::validation

@@ -12,6 +12,7 @@ matplotlib.use("Agg")  # no display: render to memory
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.collections import PatchCollection  # noqa: E402
+from matplotlib.lines import Line2D  # noqa: E402
 from matplotlib.patches import Circle  # noqa: E402
 
 # One fixed colour per backend, so a backend looks the same in every figure.
@@ -19,8 +20,19 @@ BACKEND_COLOURS = {"event": "black", "step": "tab:blue", "cpu": "tab:orange",
                    "opencl": "tab:green", "box2d": "tab:red"}
 
 
+VARIANT_COLOURS = ["tab:purple", "tab:brown", "tab:pink", "tab:olive", "tab:cyan", "tab:gray"]
+
+
 def colour(backend):
-    return BACKEND_COLOURS.get(backend, "tab:purple")
+    """A backend's colour; a variant such as 'box2d[shipped]' gets its own, stable one."""
+    if backend in BACKEND_COLOURS:
+        return BACKEND_COLOURS[backend]
+    return VARIANT_COLOURS[sum(map(ord, backend)) % len(VARIANT_COLOURS)]
+
+
+# Backends drawn in the same plot get different dash patterns and widths, widest first, so
+# series that coincide (exact and stepped energy both at zero) stay visible one over the other.
+STYLES = [("-", 3.2), ("--", 2.2), (":", 2.0), ("-.", 1.5), ((0, (1, 1)), 1.2), ((0, (5, 1)), 1.0)]
 
 
 def _png(fig):
@@ -30,37 +42,186 @@ def _png(fig):
     return buffer.getvalue()
 
 
-def work_precision(lines, scene):
-    """Error against wall time per simulated time unit, one line per backend, dt as labels."""
-    lines = [l for l in lines if l["scene"] == scene and l["points"]]
-    if not lines:
+def tex(text):
+    """A label from data (scene or backend names) as literal text: '$' would start mathtext."""
+    return str(text).replace("$", r"\$")
+
+
+def draw_points(ax, points, colour_, label, marker="o", annotate=True, label_unresolved=True):
+    """One line of a work-precision diagram. points: [{'x', 'y', 'se', 'resolved', 'label'}]
+    sorted as they are to be joined. A resolved point is filled, with its error bar (±1 SE);
+    an unresolved one (difference below 2 SE) is drawn hollow at its 2 SE bound and labelled
+    "not resolved": its true error is somewhere below. Returns the resolved points' line."""
+    resolved = [p for p in points if p["resolved"]]
+    line = None
+    if resolved:
+        line, = ax.plot([p["x"] for p in resolved], [p["y"] for p in resolved], "-", marker=marker,
+                        color=colour_, label=tex(label) if label else None, markersize=6)
+        ax.errorbar([p["x"] for p in resolved], [p["y"] for p in resolved],
+                    yerr=[[min(p["se"], p["y"] * 0.999) for p in resolved], [p["se"] for p in resolved]],
+                    fmt="none", ecolor=colour_, elinewidth=1, capsize=3)
+    for p in points:
+        if p["resolved"]:
+            continue
+        y = max(2 * p["se"], 1e-17)
+        ax.plot([p["x"]], [y], linestyle="none", marker=marker, markerfacecolor="none", markeredgecolor=colour_,
+                markersize=7, label=None if (line or resolved or not label) else tex(label) + " (not resolved)")
+        if label_unresolved:
+            ax.annotate("not resolved", (p["x"], y), textcoords="offset points", xytext=(5, -9), fontsize=6.5,
+                        color=colour_)
+    if annotate:
+        for p in points:
+            if p.get("label"):
+                ax.annotate(p["label"], (p["x"], p["y"] if p["resolved"] else max(2 * p["se"], 1e-17)),
+                            textcoords="offset points", xytext=(4, 4), fontsize=6.5)
+    return line
+
+
+def _dt_label(dt, substeps):
+    return f"dt={dt:g}" + (f"/{substeps}" if substeps and substeps > 1 else "")
+
+
+def trajectory_points(line):
+    pts = sorted(line["points"], key=lambda p: -p["dt"])
+    return [{"x": p["seconds_per_time_unit"], "y": max(p["error"] or 0, 1e-17),
+             "se": p.get("error_standard_error") or 0.0, "resolved": True,
+             "label": _dt_label(p["dt"], p.get("substeps", 1))} for p in pts if p["error"] is not None]
+
+
+def statistical_line_points(stats):
+    return [{"x": p["seconds"], "y": max(p["error"], 1e-17), "se": p["se"], "resolved": p["resolved"],
+             "label": _dt_label(p["dt"], p["substeps"])} for p in sorted(stats, key=lambda p: -p["dt"])]
+
+
+SCENE_MARKERS = ["o", "s", "^", "D", "v", "P", "X", "*"]
+
+
+def _legend(ax, title="backend"):
+    handles, labels = ax.get_legend_handles_labels()
+    if handles:
+        ax.legend(title=title, fontsize=7, title_fontsize=7)
+
+
+def headline(summary, digest, aliases):
+    """The first screen's figure: work against precision for the trajectory scenes (mean
+    error over phase replicates ± SE), pressure Z and collision rate (relative difference of
+    the replicate means ± SE; hollow where not resolved), every backend, one marker per scene.
+    The exact solver's own cost per time unit is a dashed vertical line on the statistical
+    panels (its error is statistical only). `aliases`: backend -> the backend it equals bit
+    for bit (drawn once)."""
+    lines = [l for l in summary["work_precision"] if l["points"] and l["backend"] not in aliases]
+    trajectory = [l for l in lines if l["error_kind"].startswith("trajectory")]
+    statistical_scenes = list(dict.fromkeys(l["scene"] for l in lines if not l["error_kind"].startswith("trajectory")))
+    panels = (1 if trajectory else 0) + 2 * (1 if statistical_scenes else 0)
+    if not panels:
         return None
-    fig, ax = plt.subplots(figsize=(6.4, 4.2))
-    for line in lines:
-        points = sorted(line["points"], key=lambda p: -p["dt"])
-        x = [p["seconds_per_time_unit"] for p in points]
-        y = [max(p["error"] or 0, 1e-17) for p in points]
-        label = line["backend"]
-        if line["order"] is not None:
-            label += f" (order {line['order']:.2f})"
-        ax.loglog(x, y, "o-", color=colour(line["backend"]), label=label)
-        for p, xi, yi in zip(points, x, y):
-            ax.annotate(f"dt={p['dt']:g}" + (f"/{p['substeps']}" if p["substeps"] > 1 else ""),
-                        (xi, yi), textcoords="offset points", xytext=(4, 4), fontsize=7)
-    ax.set_xlabel("wall time per simulated time unit [s]")
-    ax.set_ylabel(lines[0]["error_kind"] + " [dimensionless]")
-    ax.set_title(f"{scene}: work against precision")
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(title="backend")
+    fig, axes = plt.subplots(1, panels, figsize=(5.0 * panels, 3.9), squeeze=False)
+    axes = list(axes[0])
+    used_scenes = []
+    every_scene = list(dict.fromkeys(l["scene"] for l in lines))
+
+    def scene_marker(scene):
+        return SCENE_MARKERS[every_scene.index(scene) % len(SCENE_MARKERS)]
+    names = {b: " = ".join([b] + [x for x, y in aliases.items() if y == b]) for b in
+             dict.fromkeys(l["backend"] for l in lines)}
+    if trajectory:
+        ax = axes.pop(0)
+        scenes = list(dict.fromkeys(l["scene"] for l in trajectory))
+        for line in trajectory:
+            marker = scene_marker(line["scene"])
+            draw_points(ax, trajectory_points(line), colour(line["backend"]), None, marker, annotate=False)
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_title("trajectory scenes: mean error ± SE over phase replicates", fontsize=9)
+        ax.set_ylabel("trajectory error / r_min [dimensionless]")
+        used_scenes += [(sc, scene_marker(sc)) for sc in scenes]
+    for check, title, ylabel in (("pressure", "pressure Z", "|Z − Z_ref| / Z_ref [dimensionless]"),
+                                 ("collision_rate", "collision rate", "|ν − ν_ref| / ν_ref [dimensionless]")):
+        if not statistical_scenes:
+            break
+        ax = axes.pop(0)
+        for si, scene in enumerate(statistical_scenes):
+            marker = scene_marker(scene)
+            for backend, stats in digest.statistical_points(summary, scene, check).items():
+                if backend in aliases:
+                    continue
+                draw_points(ax, statistical_line_points(stats), colour(backend), None, marker, annotate=False,
+                            label_unresolved=False)
+            cost = digest.reference_cost(summary, scene)
+            if cost:
+                ax.axvline(cost, color=colour(summary["reference"]), linestyle="--", linewidth=1)
+                ax.annotate(tex(f"{summary['reference']} (exact), {scene}"), (cost, 0.02), xycoords=("data", "axes fraction"),
+                            rotation=90, fontsize=6.5, xytext=(3, 0), textcoords="offset points")
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_title(f"{title}: relative difference of means ± SE", fontsize=9)
+        ax.set_ylabel(ylabel)
+        if check == "pressure":
+            used_scenes += [(sc, scene_marker(sc)) for sc in statistical_scenes]
+    for ax in fig.axes:
+        ax.set_xlabel("wall time per simulated time unit [s]")
+        ax.grid(True, which="both", alpha=0.3)
+    handles = [Line2D([], [], color=colour(b), marker="o", label=tex(names[b])) for b in names]
+    seen = set()
+    for scene, marker in used_scenes:
+        if (scene, marker) not in seen:
+            seen.add((scene, marker))
+            handles.append(Line2D([], [], color="0.3", marker=marker, linestyle="none", label=tex(scene)))
+    handles.append(Line2D([], [], color="0.3", marker="o", markerfacecolor="none", linestyle="none",
+                          label="hollow: not resolved (< 2 SE), drawn at 2 SE"))
+    if statistical_scenes:
+        handles.append(Line2D([], [], color=colour(summary["reference"]), linestyle="--",
+                              label=tex(f"{summary['reference']} (exact): its cost per time unit")))
+    fig.tight_layout(rect=(0, 0.1, 1, 1))
+    fig.legend(handles=handles, loc="lower center", ncol=min(len(handles), 7), fontsize=7.5, frameon=False)
     return _png(fig)
 
 
-def conservation(case_results, scene):
-    """Relative drift of energy and momentum against time, one line per backend."""
+def work_precision(summary, scene, digest, aliases):
+    """One scene's work-precision diagram: one line per backend (bit-identical backends once),
+    dt as labels, error bars ±1 SE, unresolved statistical points hollow; for a statistical
+    scene the exact solver's cost per time unit as a dashed line."""
+    lines = [l for l in summary["work_precision"] if l["scene"] == scene and l["points"] and l["backend"] not in aliases]
+    if not lines:
+        return None
+    fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    fits = {(f["scene"], f["backend"]): f for f in digest.all_orders(summary)}
+    statistical = not lines[0]["error_kind"].startswith("trajectory")
+    stats = digest.statistical_points(summary, scene, "pressure") if statistical else {}
+    for line in lines:
+        b = line["backend"]
+        label = " = ".join([b] + [x for x, y in aliases.items() if y == b])
+        fit = fits.get((scene, b))
+        if fit and fit["order"] is not None:
+            label += f" (order {fit['order']:.2f})"
+        points = statistical_line_points(stats.get(b, [])) if statistical else trajectory_points(line)
+        draw_points(ax, points, colour(b), label)
+    if statistical:
+        cost = digest.reference_cost(summary, scene)
+        if cost:
+            ax.axvline(cost, color=colour(summary["reference"]), linestyle="--", linewidth=1,
+                       label=tex(f"{summary['reference']} (exact): cost only"))
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("wall time per simulated time unit [s]")
+    ax.set_ylabel("|Z − Z_ref| / Z_ref (means ± SE) [dimensionless]" if statistical
+                  else "trajectory error / r_min, mean ± SE [dimensionless]")
+    ax.set_title(tex(f"{scene}: work against precision"))
+    ax.grid(True, which="both", alpha=0.3)
+    _legend(ax)
+    return _png(fig)
+
+
+def conservation(case_results, scene, jumps=None, labels=None):
+    """Relative drift of energy and momentum against time, one line per backend; `jumps`:
+    backend -> {'t0', 't1', 'change'}, the interval where its energy jumped, marked."""
     if not case_results:
         return None
     fig, (ax_e, ax_p) = plt.subplots(1, 2, figsize=(10, 3.8))
-    for backend, result in case_results:
+    labels = labels or {}
+    for index, (backend, result) in enumerate(case_results):
+        style, width = STYLES[index % len(STYLES)]
+        name = labels.get(backend, backend)
         s = result["series"]
         t = np.asarray(s["time"], dtype=float)
         if t.size == 0:
@@ -69,17 +230,24 @@ def conservation(case_results, scene):
         total = np.asarray(s["total_energy"], dtype=float)
         scale = max(float(np.nanmax(kinetic)), 1e-300)
         energy = total if abs(total[0] - kinetic[0]) > 0 else kinetic
-        ax_e.plot(t, (energy - energy[0]) / scale, color=colour(backend), label=backend)
+        ax_e.plot(t, (energy - energy[0]) / scale, color=colour(backend), label=tex(name), linestyle=style,
+                  linewidth=width, alpha=0.85)
+        jump = (jumps or {}).get(backend)
+        if jump:
+            ax_e.axvspan(jump["t0"], jump["t1"], color=colour(backend), alpha=0.2)
+            ax_e.annotate(tex(f"{backend}: {100 * jump['change']:+.2g} % in one interval"), (jump["t1"], 0.05),
+                          xycoords=("data", "axes fraction"), fontsize=7, color=colour(backend))
         px = np.asarray(s["momentum_x"], dtype=float)
         py = np.asarray(s["momentum_y"], dtype=float)
         mscale = np.sqrt(2 * max(result.get("total_mass", 0.0), 1e-300) * max(kinetic[0], 1e-300))
-        ax_p.plot(t, np.hypot(px - px[0], py - py[0]) / mscale, color=colour(backend), label=backend)
+        ax_p.plot(t, np.hypot(px - px[0], py - py[0]) / mscale, color=colour(backend), label=tex(name),
+                  linestyle=style, linewidth=width, alpha=0.85)
     ax_e.set_xlabel("simulated time [scene time units]")
     ax_e.set_ylabel("(E(t) - E(0)) / max K [dimensionless]")
-    ax_e.set_title(f"{scene}: energy drift")
+    ax_e.set_title(tex(f"{scene}: energy drift"))
     ax_p.set_xlabel("simulated time [scene time units]")
     ax_p.set_ylabel("|P(t) - P(0)| / sqrt(2 M K(0)) [dimensionless]")
-    ax_p.set_title(f"{scene}: momentum drift")
+    ax_p.set_title(tex(f"{scene}: momentum drift"))
     for ax in (ax_e, ax_p):
         ax.grid(True, alpha=0.3)
         ax.legend(title="backend", fontsize=8)
@@ -87,7 +255,7 @@ def conservation(case_results, scene):
     return _png(fig)
 
 
-def overlap_histogram(case_results, scene):
+def overlap_histogram(case_results, scene, labels=None):
     """Distribution of relative overlap depths in the final state, per backend."""
     depths = [(b, np.asarray(r["overlap_depths"], dtype=float)) for b, r in case_results]
     depths = [(b, d[d > 0]) for b, d in depths]
@@ -99,11 +267,12 @@ def overlap_histogram(case_results, scene):
     bins = np.logspace(np.log10(max(low, 1e-17)), np.log10(max(high, low * 10)), 30)
     for backend, d in depths:
         if d.size:
-            ax.hist(d, bins=bins, histtype="step", color=colour(backend), label=f"{backend} ({d.size} pairs)")
+            name = (labels or {}).get(backend, backend)
+            ax.hist(d, bins=bins, histtype="step", color=colour(backend), label=tex(f"{name} ({d.size} pairs)"))
     ax.set_xscale("log")
     ax.set_xlabel("relative overlap depth (r_i + r_j - d) / (r_i + r_j) [dimensionless]")
     ax.set_ylabel("overlapping pairs [count]")
-    ax.set_title(f"{scene}: overlaps in the final state")
+    ax.set_title(tex(f"{scene}: overlaps in the final state"))
     ax.legend(title="backend", fontsize=8)
     ax.grid(True, alpha=0.3)
     return _png(fig)
@@ -128,7 +297,7 @@ def configuration(result, world, scene, backend):
         ax.set_aspect("equal")
         ax.set_xlabel("x [scene length units]")
         ax.set_ylabel("y [scene length units]")
-        ax.set_title(f"{scene} ({backend}): {title}")
+        ax.set_title(tex(f"{scene} ({backend}): {title}"))
         fig.colorbar(collection, ax=ax, label="speed |v| [length / time]", shrink=0.8)
     fig.tight_layout()
     return _png(fig)

@@ -6,6 +6,7 @@ suite file): one panel per backend, one cell per (dt, value), coloured by the ca
 With several seeds per cell the most severe outcome is shown.
 """
 import html
+import tomllib
 from collections import OrderedDict
 
 import matplotlib
@@ -28,6 +29,47 @@ PARAMETER_LABELS = {"mass": "mass (scene mass units)", "vx": "speed v_x (length 
                     "vy": "speed v_y (length / time)", "radius": "radius (length)",
                     "spacing": "lattice spacing (length)", "count": "number of disks",
                     "restitution": "restitution e (dimensionless)", "maxwell": "kT (energy)"}
+
+
+_SCENE_DT = {}
+
+
+def scene_dt(summary, scene):
+    """The time step in the scene file (a case that sweeps no dt runs at it), or None."""
+    path = summary.get("scene_files", {}).get(scene)
+    if path not in _SCENE_DT:
+        try:
+            with open(path, "rb") as f:
+                _SCENE_DT[path] = tomllib.load(f).get("run", {}).get("dt")
+        except (OSError, TypeError, tomllib.TOMLDecodeError):
+            _SCENE_DT[path] = None
+    return _SCENE_DT[path]
+
+
+def dt_text(summary, case):
+    """'dt = 0.001', or for a case at the scene's own step 'dt = 0.002 (the scene's)'; the exact
+    solver has none."""
+    if case["dt"]:
+        return f"dt = {case['dt']:g}"
+    if case.get("reference"):
+        return "no dt (exact)"
+    dt = scene_dt(summary, case["scene"])
+    return f"dt = {dt:g} (the scene's)" if isinstance(dt, (int, float)) else "the scene's dt"
+
+
+def unexpected(summary):
+    """The cases a stability suite does not expect (validation/stability.h, unexpected_outcomes):
+    unclassified, the exact solver not stable, or a crash."""
+    out = []
+    for c in summary["cases"]:
+        outcome = c.get("outcome")
+        if outcome is None:
+            out.append(f"{c['id']}: not classified")
+        elif c.get("reference") and outcome not in ("stable", "left_out"):
+            out.append(f"{c['id']}: the reference backend is not stable: {outcome}: {c.get('outcome_reason', '')}")
+        elif outcome == "crash":
+            out.append(f"{c['id']}: crash: {c.get('outcome_reason', '')}")
+    return out
 
 
 def has_outcomes(summary):
@@ -74,12 +116,12 @@ def stability_map(scene, path, backends):
         ax.set_xticks([i + 0.5 for i in range(len(dts))], [f"{d:g}" for d in dts], rotation=45)
         ax.set_yticks([j + 0.5 for j in range(len(values))], [f"{v:g}" for v in values])
         ax.set_xlabel("time step dt (time)")
-        ax.set_title(backend, color=figures.colour(backend))
-    axes[0][0].set_ylabel(parameter_label(path))
+        ax.set_title(figures.tex(backend), color=figures.colour(backend))
+    axes[0][0].set_ylabel(figures.tex(parameter_label(path)))
     present = [o for o in OUTCOMES if any(o in cells.values() for cells in backends.values())]
     fig.legend(handles=[Patch(facecolor=OUTCOME_COLOURS[o], label=o) for o in present],
                loc="center left", bbox_to_anchor=(1.0, 0.5), frameon=False)
-    fig.suptitle(f"Stability map: {scene}", y=1.04)
+    fig.suptitle(figures.tex(f"Stability map: {scene}"), y=1.04)
     return figures._png(fig)
 
 
@@ -96,9 +138,9 @@ def first_failures(summary):
     return rows
 
 
-def describe(case):
+def describe(case, summary=None):
     params = ", ".join(f"{p.split('.')[-1]} = {v:g}" for p, v in case.get("parameters", {}).items())
-    where = f"dt = {case['dt']:g}" + (f", {params}" if params else "")
+    where = (dt_text(summary, case) if summary else f"dt = {case['dt']:g}") + (f", {params}" if params else "")
     return f"{html.escape(case['outcome'])} at {html.escape(where)}"
 
 
@@ -116,10 +158,36 @@ def first_failure_table(summary):
             by_dt = min(failed, key=lambda c: (c["dt"], value(c)))
             by_value = min(failed, key=lambda c: (value(c), c["dt"]))
             title = html.escape(by_dt.get("outcome_reason", ""))
-            cells = (f"<td class='fail' title='{title}'>{describe(by_dt)}</td>"
-                     f"<td class='fail'>{describe(by_value) if by_value.get('parameters') else ''}</td>")
+            cells = (f"<td class='fail' title='{title}'>{describe(by_dt, summary)}</td>"
+                     f"<td class='fail'>{describe(by_value, summary) if by_value.get('parameters') else ''}</td>")
         out.append(f"<tr><td>{html.escape(scene)}</td><td>{html.escape(backend)}</td><td>{row['cases']}</td>"
                    f"<td>{len(failed)}</td>{cells}</tr>")
+    out.append("</table>")
+    return "\n".join(out)
+
+
+def first_failure_matrix(summary):
+    """The stability suite's first screen: one row per scene, one column per backend, each cell
+    the backend's first failure on that scene (smallest failing dt, then smallest value)."""
+    rows = first_failures(summary)
+    scenes = list(OrderedDict.fromkeys(s for s, _ in rows))
+    backends = list(OrderedDict.fromkeys(b for _, b in rows))
+    out = ["<table id='first-failures' class='checks'><tr><th>scene</th>"
+           + "".join(f"<th>{html.escape(b)}</th>" for b in backends) + "</tr>"]
+    for scene in scenes:
+        out.append(f"<tr><td>{html.escape(scene)}</td>")
+        for b in backends:
+            row = rows.get((scene, b))
+            if row is None:
+                out.append("<td class='left_out'>left out</td>")
+            elif not row["failed"]:
+                out.append(f"<td class='pass'>stable ({row['cases']})</td>")
+            else:
+                first = min(row["failed"], key=lambda c: (c["dt"], min(c.get("parameters", {}).values(), default=0.0)))
+                title = html.escape(first.get("outcome_reason", ""), quote=True)
+                out.append(f"<td class='fail' title='{title}'>{describe(first, summary)} "
+                           f"({len(row['failed'])}/{row['cases']})</td>")
+        out.append("</tr>")
     out.append("</table>")
     return "\n".join(out)
 
@@ -128,7 +196,7 @@ def section(summary, image):
     """The report's stability section (HTML), or "" without stability outcomes."""
     if not has_outcomes(summary):
         return ""
-    parts = ["<h2>Stability</h2>",
+    parts = ["<h2 id='stability'>Stability</h2>",
              "<p>Every case is classified by its first failure mode, most severe first: crash (died or threw), "
              "hang (time limit), nan, stalled (the median disk moved less than a tenth as far as in the exact "
              "reference: motion lost, e.g. to float rounding), tunnelling (a pair passed through each other where the exact reference "
@@ -143,7 +211,7 @@ def section(summary, image):
                            "axes list the swept values, equally spaced, so a geometric sweep reads as a log axis), "
                            "coloured by its outcome (legend). The exact reference has no dt and is not drawn; "
                            "white: no case.", f"stability map of {scene}"))
-    parts.append("<h3>First failure of each backend</h3>")
+    parts.append("<h3 id='first-failures-detail'>First failure of each backend, by dt and by parameter</h3>")
     parts.append(first_failure_table(summary))
     return "\n".join(parts)
 
@@ -157,6 +225,6 @@ def markdown(summary):
         failed = row["failed"]
         first = min(failed, key=lambda c: (c["dt"], min(c.get("parameters", {}).values(), default=0.0))) \
             if failed else None
-        text = describe(first) + ": " + first.get("outcome_reason", "").replace("|", "/") if first else "none"
+        text = describe(first, summary) + ": " + first.get("outcome_reason", "").replace("|", "/") if first else "none"
         lines.append(f"| {scene} | {backend} | {row['cases']} | {len(failed)} | {html.unescape(text)} |")
     return lines

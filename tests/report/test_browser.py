@@ -1,0 +1,131 @@
+#!/usr/bin/env python3
+"""Opens a rendered report the way a reader does: chromium, headless, at 1400 x 900, and checks
+that the first screen holds the verdict, the per-backend digest and the whole headline
+work-precision figure, and that every in-page link (table of contents, digest) resolves.
+
+usage: test_browser.py RESULTS_DIR [SCREENSHOT.png]
+
+Needs the Debian packages chromium, chromium-driver and python3-selenium
+(scripts/install-deps.sh). A missing browser is a failure, not a skip: CI must run this.
+"""
+import os
+import shutil
+import sys
+import unittest
+
+RESULTS = None
+SCREENSHOT = None
+WIDTH, HEIGHT = 1400, 900
+
+
+def find(program, *candidates):
+    for c in (shutil.which(program),) + candidates:
+        if c and os.path.exists(c):
+            return c
+    return None
+
+
+class FirstScreen(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        try:
+            from selenium import webdriver
+            from selenium.webdriver.chrome.service import Service
+        except ImportError as e:
+            raise AssertionError(f"python3-selenium is missing ({e}); run scripts/install-deps.sh") from None
+        browser = find("chromium", "/usr/bin/chromium")
+        driver = find("chromedriver", "/usr/bin/chromedriver")
+        if not browser or not driver:
+            raise AssertionError("chromium and chromium-driver are needed for this test; run scripts/install-deps.sh")
+        options = webdriver.ChromeOptions()
+        options.binary_location = browser
+        for arg in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
+                    f"--window-size={WIDTH},{HEIGHT}", "--hide-scrollbars"):
+            options.add_argument(arg)
+        cls.driver = webdriver.Chrome(service=Service(driver), options=options)
+        cls.driver.set_window_size(WIDTH, HEIGHT)
+        # The window size includes no browser chrome in headless mode; make the viewport exact.
+        inner = cls.driver.execute_script("return [window.innerWidth, window.innerHeight]")
+        cls.driver.set_window_size(WIDTH + (WIDTH - inner[0]), HEIGHT + (HEIGHT - inner[1]))
+        cls.index = os.path.abspath(os.path.join(RESULTS, "report", "index.html"))
+        cls.driver.get("file://" + cls.index)
+        cls.driver.execute_script("return document.readyState")
+        if SCREENSHOT:
+            cls.driver.save_screenshot(SCREENSHOT)
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.driver.quit()
+
+    def rect(self, css):
+        from selenium.webdriver.common.by import By
+        elements = self.driver.find_elements(By.CSS_SELECTOR, css)
+        self.assertTrue(elements, f"{css} is not on the page")
+        return self.driver.execute_script(
+            "const r = arguments[0].getBoundingClientRect(); return [r.top, r.bottom, r.left, r.right];", elements[0])
+
+    def test_viewport(self):
+        inner = self.driver.execute_script("return [window.innerWidth, window.innerHeight]")
+        self.assertEqual(inner, [WIDTH, HEIGHT])
+
+    def stability_suite(self):
+        return self.driver.execute_script("return document.getElementById('stability-first') !== null;")
+
+    def test_verdict_and_digest_on_first_screen(self):
+        # A stability suite's first screen is its first-failure table; the digest follows it.
+        for css in ("#verdict", "#first-failures") if self.stability_suite() else ("#verdict", "#digest"):
+            top, bottom, left, right = self.rect(css)
+            self.assertGreaterEqual(top, 0, css)
+            self.assertLessEqual(bottom, HEIGHT, f"{css} ends at {bottom} px, below the first screen")
+            self.assertLessEqual(right, WIDTH, f"{css} is wider than the screen")
+
+    def test_headline_figure_on_first_screen(self):
+        if self.stability_suite():
+            self.skipTest("a stability suite has no work-precision figure")
+        top, bottom, left, right = self.rect("figure#headline img")
+        self.assertTrue(self.driver.execute_script(
+            "return document.querySelector('figure#headline img').complete"), "the figure did not load")
+        self.assertLess(top, HEIGHT)
+        self.assertLessEqual(bottom, HEIGHT, f"the headline figure ends at {bottom} px, below the first screen")
+        self.assertGreater(bottom - top, 200, "the headline figure is too small to read")
+
+    def test_contents_on_first_screen(self):
+        top, bottom, _, _ = self.rect("nav#toc")
+        self.assertLessEqual(bottom, HEIGHT)
+
+    def test_every_in_page_link_resolves(self):
+        links = self.driver.execute_script(
+            "return Array.from(document.querySelectorAll('a[href]')).map(a => a.getAttribute('href'));")
+        internal = [h for h in links if h.startswith("#")]
+        self.assertGreater(len(internal), 5, "the table of contents has too few links")
+        for href in internal:
+            target = self.driver.execute_script("return document.getElementById(arguments[0]) !== null;",
+                                                href[1:])
+            self.assertTrue(target, f"link {href} points nowhere")
+        for href in links:
+            if not href.startswith(("#", "http")):
+                self.assertTrue(os.path.exists(os.path.join(os.path.dirname(self.index), href.split("#")[0])),
+                                f"link {href} names a file that does not exist")
+
+    def test_digest_link_opens_its_table(self):
+        from selenium.webdriver.common.by import By
+        links = self.driver.find_elements(By.CSS_SELECTOR, "#digest a[href^='#backend-']")
+        if not links:
+            self.skipTest("no backend links in the digest")
+        target = links[-1].get_attribute("href").split("#", 1)[1]
+        links[-1].click()
+        element = self.driver.find_element(By.ID, target)
+        self.assertTrue(element.is_displayed(), f"#{target} stays hidden in a collapsed table after its link")
+        self.driver.get("file://" + self.index)  # back to the first screen for the other tests
+
+    def test_ids_unique(self):
+        ids = self.driver.execute_script("return Array.from(document.querySelectorAll('[id]')).map(e => e.id);")
+        self.assertEqual(len(ids), len(set(ids)), "duplicate ids: " + str(sorted({i for i in ids if ids.count(i) > 1})))
+
+
+if __name__ == "__main__":
+    if len(sys.argv) < 2:
+        sys.exit(__doc__)
+    RESULTS = sys.argv[1]
+    SCREENSHOT = sys.argv[2] if len(sys.argv) > 2 else None
+    unittest.main(argv=sys.argv[:1], verbosity=2)

@@ -1,0 +1,215 @@
+#!/usr/bin/env python3
+"""Tests of the report's numbers and drawing (validation/report/), on a real run of
+tests/report/mini.toml and on synthetic data.
+
+usage: test_report_data.py RESULTS_DIR
+"""
+import copy
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import unittest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPORT = os.path.join(HERE, "..", "..", "validation", "report")
+sys.path.insert(0, REPORT)
+
+import digest  # noqa: E402
+import figures  # noqa: E402
+import make_report  # noqa: E402
+import matplotlib.pyplot as plt  # noqa: E402
+
+RESULTS = None
+
+
+def render(directory):
+    return subprocess.run([sys.executable, os.path.join(REPORT, "make_report.py"), directory],
+                          capture_output=True, text=True)
+
+
+class DigestMatchesSummary(unittest.TestCase):
+    def setUp(self):
+        with open(os.path.join(RESULTS, "summary.json"), encoding="utf-8") as f:
+            self.summary = json.load(f)
+        self.rows = digest.digest(self.summary, digest.all_orders(self.summary))
+
+    def test_totals_equal_counts(self):
+        for key in ("pass", "fail", "left_out"):
+            self.assertEqual(sum(r[key] for r in self.rows), self.summary["counts"][key], key)
+        self.assertEqual(sum(r["cases"] for r in self.rows), len(self.summary["cases"]))
+
+    def test_each_backend_counted(self):
+        for r in self.rows:
+            checks = [c for c in self.summary["checks"] if c["backend"] == r["backend"]]
+            for key in ("pass", "fail", "left_out"):
+                self.assertEqual(r[key], sum(1 for c in checks if c["status"] == key), (r["backend"], key))
+            self.assertEqual(r["cases"], sum(1 for c in self.summary["cases"] if c["backend"] == r["backend"]))
+
+    def test_worst_margin_is_the_largest(self):
+        for r in self.rows:
+            margins = [digest.margin(c) for c in self.summary["checks"] if c["backend"] == r["backend"]]
+            margins = [m for m in margins if m is not None]
+            if margins:
+                self.assertEqual(r["worst"][0], max(margins))
+
+    def test_rendered_digest_and_summary(self):
+        html = open(os.path.join(RESULTS, "report", "index.html"), encoding="utf-8").read()
+        self.assertIn('id="digest"', html)
+        self.assertIn('id="headline"', html)
+        summary_md = open(os.path.join(RESULTS, "report", "summary.md"), encoding="utf-8").read().splitlines()
+        self.assertLessEqual(len(summary_md), 80)
+        for b in digest.backends_in_order(self.summary):
+            self.assertTrue(any(line.startswith(f"| {b}") for line in summary_md), f"{b} not in summary.md's digest")
+        for name in ("checks.html", "summary-full.md"):
+            self.assertTrue(os.path.exists(os.path.join(RESULTS, "report", name)), name)
+
+
+class OrderFit(unittest.TestCase):
+    def test_float_floor_excluded(self):
+        # First order down to dt = 1e-3, then rounding: the error rises again.
+        errors = {8e-3: 8e-3, 4e-3: 4e-3, 2e-3: 2e-3, 1e-3: 1e-3, 5e-4: 1.3e-3, 2.5e-4: 2.4e-3}
+        fit = digest.fit_order([{"dt": dt, "error": e} for dt, e in errors.items()], "cpu")
+        self.assertAlmostEqual(fit["order"], 1.0, places=6)
+        self.assertEqual(fit["used"], 4)
+        self.assertEqual(fit["floor"]["dt"], 1e-3)
+        self.assertEqual(fit["floor"]["excluded"], 2)
+        self.assertEqual(fit["floor"]["kind"], "float floor")
+        self.assertIn("float floor from dt ≈ 0.001", digest.describe_floor(fit["floor"]))
+
+    def test_flattening_is_a_floor(self):
+        errors = {8e-3: 8e-3, 4e-3: 4e-3, 2e-3: 2e-3, 1e-3: 1.9e-3, 5e-4: 1.85e-3}
+        fit = digest.fit_order([{"dt": dt, "error": e} for dt, e in errors.items()], "step")
+        self.assertAlmostEqual(fit["order"], 1.0, places=6)
+        self.assertEqual(fit["floor"]["kind"], "error floor")
+
+    def test_no_floor_in_a_clean_line(self):
+        fit = digest.fit_order([{"dt": 2.0 ** -k, "error": 3 * 4.0 ** -k} for k in range(5)], "step")
+        self.assertAlmostEqual(fit["order"], 2.0, places=6)
+        self.assertIsNone(fit["floor"])
+
+    def test_too_few_points(self):
+        fit = digest.fit_order([{"dt": 1e-3, "error": 1e-3}, {"dt": 5e-4, "error": 5e-4}])
+        self.assertIsNone(fit["order"])
+        self.assertIn("2 points", fit["note"])
+
+
+class Resolution(unittest.TestCase):
+    def check(self, mean, se, ref, ref_se):
+        return {"status": "pass", "check": "pressure",
+                "detail": f"Z = P/(rho kT) {mean} +- {se} vs reference {ref} +- {ref_se}"}
+
+    def test_unresolved_and_resolved(self):
+        d = digest.statistical_difference(self.check(1.66, 0.02, 1.64, 0.018))
+        self.assertFalse(d["resolved"])
+        self.assertAlmostEqual(d["error"], 0.02 / 1.64)
+        d = digest.statistical_difference(self.check(1.70, 0.005, 1.64, 0.005))
+        self.assertTrue(d["resolved"])
+        self.assertGreater(d["sigmas"], 8)
+
+    def test_unresolved_point_drawn_hollow(self):
+        fig, ax = plt.subplots()
+        figures.draw_points(ax, [{"x": 1.0, "y": 0.05, "se": 0.01, "resolved": True, "label": "dt=0.002"},
+                                 {"x": 2.0, "y": 0.01, "se": 0.02, "resolved": False, "label": "dt=0.001"}],
+                            "tab:blue", "step")
+        hollow = [l for l in ax.lines if l.get_markerfacecolor() == "none"]
+        filled = [l for l in ax.lines if l.get_markerfacecolor() != "none" and l.get_marker() == "o"]
+        self.assertEqual(len(hollow), 1)
+        self.assertEqual(list(hollow[0].get_xdata()), [2.0])
+        self.assertAlmostEqual(hollow[0].get_ydata()[0], 0.04)  # at its 2 SE bound
+        self.assertEqual([list(l.get_xdata()) for l in filled], [[1.0]])
+        self.assertIn("not resolved", [t.get_text() for t in ax.texts])
+        plt.close(fig)
+
+
+class PredictedDrift(unittest.TestCase):
+    def test_prediction_shown_beside_the_measurement(self):
+        c = {"subject": "g__step__dt0.001__seed1", "check": "energy_drift", "status": "pass", "value": 0.029,
+             "tolerance": 0.05, "comparison": "<=", "detail": "", "predicted": 0.025, "predicted_uncertainty": 0.008}
+        self.assertEqual(make_report.predicted_text(c, percent=True),
+                         "loses 2.9 % where the rule is expected to lose 2.5 ± 0.8 %")
+        self.assertIn("expected 0.025 ± 0.008", make_report.cell(c, "energy_drift"))
+        del c["predicted"]
+        self.assertEqual(make_report.predicted_text(c, percent=True), "")
+
+
+class IdenticalBackends(unittest.TestCase):
+    def test_detected(self):
+        checks = []
+        for b in ("cpu", "opencl", "step"):
+            for i in range(3):
+                checks.append({"subject": f"s__{b}__dt0.001__seed{i}", "backend": b, "check": "energy_drift",
+                               "status": "pass", "value": 0.1 * i + (0.01 if b == "step" else 0)})
+        summary = {"checks": checks, "work_precision": []}
+        self.assertEqual(digest.identical_backends(summary), [("cpu", "opencl", 3)])
+
+
+class HostileInputs(unittest.TestCase):
+    def setUp(self):
+        self.dir = tempfile.mkdtemp()
+        shutil.copytree(RESULTS, os.path.join(self.dir, "r"), ignore=shutil.ignore_patterns("report", "runs"))
+        self.results = os.path.join(self.dir, "r")
+        self.summary_path = os.path.join(self.results, "summary.json")
+        with open(self.summary_path, encoding="utf-8") as f:
+            self.summary = json.load(f)
+
+    def tearDown(self):
+        shutil.rmtree(self.dir)
+
+    def write(self, summary):
+        with open(self.summary_path, "w", encoding="utf-8") as f:
+            json.dump(summary, f)
+
+    def test_invalid_json_names_the_file(self):
+        with open(self.summary_path, "w") as f:
+            f.write('{"suite": "x", ')
+        r = render(self.results)
+        self.assertEqual(r.returncode, 2)
+        self.assertIn(self.summary_path, r.stderr)
+        self.assertIn("not valid JSON", r.stderr)
+        self.assertNotIn("Traceback", r.stderr)
+
+    def test_missing_key_named(self):
+        s = copy.deepcopy(self.summary)
+        del s["checks"][3]["status"]
+        self.write(s)
+        r = render(self.results)
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("checks[3]: missing key 'status'", r.stderr)
+        self.assertNotIn("Traceback", r.stderr)
+
+    def test_truncated_case_file_named(self):
+        case = next(c for c in self.summary["cases"] if c["status"] == "completed")
+        path = os.path.join(self.results, case["result_file"])
+        text = open(path, encoding="utf-8").read()
+        with open(path, "w", encoding="utf-8") as f:
+            f.write(text[: len(text) // 2])
+        r = render(self.results)
+        self.assertEqual(r.returncode, 2)
+        self.assertIn(path, r.stderr)
+        self.assertNotIn("Traceback", r.stderr)
+
+    def test_dollar_scene_and_bracket_backend(self):
+        def rename(text):
+            return text.replace("periodic_gas", "$x$ gas").replace('"cpu"', '"box2d[shipped]"').replace(
+                "__cpu__", "__box2d[shipped]__")
+        renamed = json.loads(rename(json.dumps(self.summary)))
+        for old, new in zip(self.summary["cases"], renamed["cases"]):
+            if old.get("result_file") and old["result_file"] != new["result_file"]:
+                os.rename(os.path.join(self.results, old["result_file"]), os.path.join(self.results, new["result_file"]))
+        self.write(renamed)
+        r = render(self.results)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        html = open(os.path.join(self.results, "report", "index.html"), encoding="utf-8").read()
+        self.assertIn("box2d[shipped]", html)
+        self.assertIn("$x$ gas", html)
+        self.assertIn(f'id="{digest.anchor("scene", "$x$ gas")}"'.replace('"', "'"), html)
+
+
+if __name__ == "__main__":
+    if len(sys.argv) < 2:
+        sys.exit(__doc__)
+    RESULTS = sys.argv[1]
+    unittest.main(argv=sys.argv[:1], verbosity=2)
