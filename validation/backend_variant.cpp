@@ -66,4 +66,13 @@ std::string backend_id_token(const std::string& label) {
     return token;
 }
 
+void apply_variant_leave_outs(std::vector<CheckResult>& checks, const std::vector<BackendVariant>& variants) {
+    for (const BackendVariant& v : variants)
+        for (CheckResult& c : checks)
+            if (c.backend == v.label && std::find(v.leave_out.begin(), v.leave_out.end(), c.check) != v.leave_out.end()) {
+                c.status = CheckStatus::left_out;
+                c.detail = v.leave_out_reason;
+            }
+}
+
 }  // namespace collide::validation

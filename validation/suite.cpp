@@ -1,5 +1,6 @@
 #include "suite.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -126,6 +127,37 @@ bool is_variant_label(const std::string& label) {
            label.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_-", open + 1) == label.size() - 1;
 }
 
+// The names of the comparison and case checks a variant may leave out (checks.cpp,
+// reference_comparison.cpp).
+const std::vector<std::string>& known_checks() {
+    static const std::vector<std::string> names = {
+        "run", "momentum_drift", "energy_drift", "max_overlap", "mean_overlap", "overlapping_pairs",
+        "wall_penetration", "trajectory_error", "pressure", "collision_rate", "speed_distribution"};
+    return names;
+}
+
+// leave_out = ["pressure", ...] and leave_out_reason = "...": both or neither, names known.
+void read_variant_leave_out(const toml::table& settings, const std::string& file, BackendVariant& v) {
+    TableReader r(settings, file, "variant." + v.label);
+    const toml::node* list = settings.get("leave_out");
+    const toml::node* reason = settings.get("leave_out_reason");
+    if (!list && !reason) return;
+    if (!list || !list->is_array() || !reason || !reason->is_string() || reason->value<std::string>()->empty())
+        r.fail(list ? "leave_out_reason" : "leave_out",
+               "leave_out (an array of check names) together with leave_out_reason (a non-empty string)");
+    for (const auto& item : *list->as_array()) {
+        const auto name = item.value<std::string>();
+        const auto& known = known_checks();
+        if (!name || std::find(known.begin(), known.end(), *name) == known.end()) {
+            std::string names;
+            for (const auto& k : known) names += (names.empty() ? "" : ", ") + k;
+            r.fail("leave_out", "check names, each one of " + names);
+        }
+        v.leave_out.push_back(*name);
+    }
+    v.leave_out_reason = *reason->value<std::string>();
+}
+
 // [variant."BASE[NAME]"]: keys of the scene's [backend.BASE] table, kept as text. The label's
 // shape is checked here; whether BASE exists is known only to select_backends().
 std::vector<BackendVariant> read_variants(const toml::table& root, const std::string& file) {
@@ -141,8 +173,10 @@ std::vector<BackendVariant> read_variants(const toml::table& root, const std::st
         const std::string base = label.substr(0, label.find('['));
         const toml::table* settings = sub.as_table();
         if (!settings || settings->empty()) r.fail(label, "a table of [backend." + base + "] keys");
-        BackendVariant v{label, base, {}};
+        BackendVariant v{label, base, {}, {}, {}};
+        read_variant_leave_out(*settings, file, v);
         for (const auto& [k, value] : *settings) {
+            if (k.str() == "leave_out" || k.str() == "leave_out_reason") continue;
             if (!value.is_string() && !value.is_number() && !value.is_boolean())
                 TableReader(*settings, file, "variant." + label).fail(std::string(k.str()), "a string, number or boolean");
             v.settings[std::string(k.str())] = value.is_string() ? *value.value<std::string>() : toml_value_text(value);

@@ -59,6 +59,10 @@ struct BackendVariant {
     std::string label;
     std::string base;
     std::map<std::string, std::string> settings;  // values as text, like Scene::backend_options
+    // Checks that do not apply to what this variant simulates (leave_out = [...]), each then
+    // reported as left out with leave_out_reason instead of judged against a tolerance.
+    std::vector<std::string> leave_out;
+    std::string leave_out_reason;
 };
 
 struct OutputOptions {

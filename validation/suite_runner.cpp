@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <map>
 
+#include "backend_variant.h"
 #include "case_execution.h"
 #include "case_isolation.h"
 #include "core/scene_loader.h"
@@ -156,6 +157,7 @@ SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& avail
     if (suite.stability) classify_all(outcome, case_scenes, tolerances);
     Comparisons comparisons = compare_with_reference(suite, outcome.cases, features, tolerances);
     outcome.checks.insert(outcome.checks.end(), comparisons.checks.begin(), comparisons.checks.end());
+    apply_variant_leave_outs(outcome.checks, suite.variants);
     outcome.work_precision = std::move(comparisons.work_precision);
     outcome.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 

@@ -10,6 +10,7 @@
 #include "box2d/box2d_solver.h"
 #include "test_backends.h"
 #include "validation/case_isolation.h"
+#include "validation/backend_variant.h"
 #include "validation/case_plan.h"
 #include "validation/suite_runner.h"
 
@@ -34,7 +35,7 @@ Scene slow_head_on() {
 Suite suite_with_shipped(const std::vector<std::string>& backends) {
     Suite suite = test::test_suite(slow_head_on(), backends);
     suite.seeds = {1};
-    suite.variants = {{"box2d[shipped]", "box2d", {{"preset", "shipped"}}}};
+    suite.variants = {{"box2d[shipped]", "box2d", {{"preset", "shipped"}}, {}, {}}};
     return suite;
 }
 
@@ -75,6 +76,47 @@ name = "gas"
     // Everything not overridden is the base backend's limit, not a float stepper's.
     EXPECT_EQ(shipped.max_overlap, suite.tolerances.for_backend("box2d", "float").max_overlap);
     EXPECT_NE(shipped.max_overlap, suite.tolerances.for_backend("cpu", "float").max_overlap);
+}
+
+TEST(BackendVariants, LeaveOutNeedsAReasonAndKnownCheckNames) {
+    const auto dir = std::filesystem::path(test::fresh_output_dir("variant_leave_out"));
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "gas.toml") << "# placeholder\n";
+    const auto parse = [&](const std::string& keys) {
+        return parse_suite("scene_dir = \".\"\n[variant.\"box2d[shipped]\"]\npreset = \"shipped\"\n" + keys +
+                               "[[scene]]\nname = \"gas\"\n",
+                           "suites/v.toml", dir.string());
+    };
+    const Suite suite = parse("leave_out = [\"pressure\", \"speed_distribution\"]\nleave_out_reason = \"cools\"\n");
+    EXPECT_EQ(suite.variants[0].leave_out, (std::vector<std::string>{"pressure", "speed_distribution"}));
+    EXPECT_EQ(suite.variants[0].leave_out_reason, "cools");
+    EXPECT_EQ(suite.variants[0].settings.count("leave_out"), 0u) << "not a key for the backend";
+    const auto error_of = [&](const std::string& keys) {
+        try {
+            parse(keys);
+        } catch (const SuiteError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_NE(error_of("leave_out = [\"pressure\"]\n").find("leave_out_reason"), std::string::npos);
+    EXPECT_NE(error_of("leave_out = [\"presure\"]\nleave_out_reason = \"x\"\n").find("collision_rate"),
+              std::string::npos);
+}
+
+TEST(BackendVariants, LeftOutChecksKeepTheirValueAndCarryTheReason) {
+    std::vector<CheckResult> checks(3);
+    checks[0].backend = "box2d[shipped]", checks[0].check = "pressure", checks[0].status = CheckStatus::fail;
+    checks[0].value = 40.1;
+    checks[1].backend = "box2d[shipped]", checks[1].check = "energy_drift", checks[1].status = CheckStatus::fail;
+    checks[2].backend = "box2d", checks[2].check = "pressure", checks[2].status = CheckStatus::fail;
+    BackendVariant shipped{"box2d[shipped]", "box2d", {{"preset", "shipped"}}, {"pressure"}, "cools"};
+    apply_variant_leave_outs(checks, {shipped});
+    EXPECT_EQ(checks[0].status, CheckStatus::left_out);
+    EXPECT_EQ(checks[0].detail, "cools");
+    EXPECT_EQ(checks[0].value, 40.1);
+    EXPECT_EQ(checks[1].status, CheckStatus::fail) << "not named: still judged";
+    EXPECT_EQ(checks[2].status, CheckStatus::fail) << "the base backend is not the variant";
 }
 
 TEST(BackendVariants, BadLabelNamesTheShapeExpected) {
@@ -143,6 +185,13 @@ TEST(BackendVariants, DefaultSuiteRunsBothBox2dConfigurationsWithTheirOwnLimits)
     EXPECT_GT(shipped.energy_drift, tuned.energy_drift);
     // A stated limit, not "anything": a run that loses all its energy still fails.
     EXPECT_LT(shipped.energy_drift, 1.0);
+    // Its gas statistics describe a cooling gas: left out with a reason, not given a wide limit.
+    const auto variant = std::find_if(suite.variants.begin(), suite.variants.end(),
+                                      [](const BackendVariant& v) { return v.label == "box2d[shipped]"; });
+    ASSERT_NE(variant, suite.variants.end());
+    for (const char* check : {"pressure", "collision_rate", "speed_distribution"})
+        EXPECT_NE(std::find(variant->leave_out.begin(), variant->leave_out.end(), check), variant->leave_out.end()) << check;
+    EXPECT_EQ(shipped.statistics_z, tuned.statistics_z);
 }
 
 }  // namespace

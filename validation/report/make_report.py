@@ -174,7 +174,7 @@ def margin_text(worst, link=True):
     if worst is None:
         return "n/a"
     m, subject, check = worst
-    text = "∞" if m == math.inf else f"{m:.2f}" if m >= 0.01 else fmt(m)
+    text = "∞" if m == math.inf else f"{m:.2f}" if 0.01 <= m < 1e4 else fmt(m)
     where = f"{subject}: {check.replace('_', ' ')}"
     return f"{text} <span class='where'>({html.escape(where)})</span>" if link else f"{text} ({where})"
 
