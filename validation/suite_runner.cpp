@@ -3,6 +3,7 @@
 #include <chrono>
 #include <filesystem>
 #include <map>
+#include <sstream>
 
 #include "case_execution.h"
 #include "case_isolation.h"
@@ -57,6 +58,23 @@ struct CaseScenes {
     const Scene& scene(const CaseSpec& c) const { return scenes.at({c.scene_index, parameter_label(c)}); }
     const SceneFeatures& feature(const CaseSpec& c) const { return features.at({c.scene_index, parameter_label(c)}); }
 };
+
+// A suite's overrides (dt, duration, output_interval) obey the rules a scene file does: a dt
+// that does not divide the output interval would stamp t = 0.1 on the state at t = 0.0999.
+void check_case_run_settings(const Suite& suite, const std::vector<Scene>& scenes, const std::vector<CaseSpec>& specs) {
+    for (const CaseSpec& spec : specs) {
+        const SuiteScene& entry = suite.scenes[spec.scene_index];
+        const Scene scene = case_scene(scenes[spec.scene_index], entry, spec);
+        const std::string problem = run_settings_problem(scene.run);
+        if (problem.empty()) continue;
+        std::ostringstream msg;
+        msg << (suite.source_path.empty() ? suite.name : suite.source_path);
+        if (entry.line) msg << ":" << entry.line;
+        msg << ": [[scene]] " << entry.name << " with dt = " << scene.run.dt << ", duration = " << scene.run.duration
+            << ", output_interval = " << scene.run.output_interval << ": " << problem;
+        throw SuiteError(msg.str());
+    }
+}
 
 // The reference run a case is classified against: same scene, parameters and seed, and the
 // same dt when the reference ran per dt (trajectory scenes).
@@ -114,6 +132,7 @@ SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& avail
     // Per scene for the comparisons (which only ask about the disks' radii): its first sweep point.
     for (std::size_t s = 0; s < scenes.size(); ++s) features.push_back(case_scenes.features.lower_bound({s, ""})->second);
     const std::vector<CaseSpec> specs = plan_cases(suite, scenes, backends);
+    check_case_run_settings(suite, scenes, specs);
 
     std::filesystem::create_directories(options.output_dir);
     const std::string result_dir = options.output_dir + "/cases";
