@@ -4,9 +4,11 @@
 #include <stdexcept>
 
 #include "commands/commands.h"
+#include "core/hdf5_handle.h"
 #include "core/provenance.h"
 
 int main(int argc, char** argv) {
+    collide::skip_hdf5_cleanup_at_exit();
     collide::set_command_line(argc, argv);
     CLI::App app{"collide: cross-validated 2D hard-disk collision solvers"};
     app.require_subcommand(1);

@@ -25,6 +25,7 @@ using Clock = std::chrono::steady_clock;
 
 struct Child {
     CaseSpec spec;
+    pid_t pid = 0;
     Clock::time_point start;
     bool killed_for_time = false;
 };
@@ -63,6 +64,10 @@ std::string log_tail(const std::string& path, std::size_t max_chars = 1500) {
 }
 
 CaseResult death_result(const Child& child, int wait_status, const IsolationOptions& options) {
+    // A child that died without cleaning up (a signal, the time limit) leaves its temporaries.
+    remove_temporaries(options.runs_dir, options.result_dir, child.pid);
+    std::error_code ignored;
+    std::filesystem::remove(result_path(options.result_dir, child.spec.id) + ".partial", ignored);
     const std::string path = result_path(options.result_dir, child.spec.id);
     const std::string log = options.result_dir + "/" + child.spec.id + ".log";
     if (!child.killed_for_time && WIFEXITED(wait_status) && WEXITSTATUS(wait_status) == 0 &&
@@ -102,6 +107,20 @@ CaseResult death_result(const Child& child, int wait_status, const IsolationOpti
 
 }  // namespace
 
+void remove_temporaries(const std::string& runs_dir, const std::string& result_dir, int pid) {
+    namespace fs = std::filesystem;
+    const std::string writer_mark = pid ? ".tmp-" + std::to_string(pid) + "-" : ".tmp-";
+    std::error_code error;
+    if (!runs_dir.empty())
+        for (const auto& entry : fs::directory_iterator(runs_dir, error)) {
+            const std::string name = entry.path().filename().string();
+            if (name.rfind('.', 0) == 0 && name.find(writer_mark) != std::string::npos) fs::remove(entry.path(), error);
+        }
+    if (pid) return;  // a case's .partial record has no process id in its name: only --resume
+    for (const auto& entry : fs::directory_iterator(result_dir, error))
+        if (entry.path().extension() == ".partial") fs::remove(entry.path(), error);
+}
+
 void run_isolated(const std::vector<CaseSpec>& specs, const IsolationOptions& options,
                   const std::function<CaseResult(const CaseSpec&)>& run_case,
                   const std::function<void(const CaseResult&)>& on_done) {
@@ -117,7 +136,7 @@ void run_isolated(const std::vector<CaseSpec>& specs, const IsolationOptions& op
             const pid_t pid = ::fork();
             if (pid < 0) throw std::runtime_error(std::string("fork failed: ") + std::strerror(errno));
             if (pid == 0) child_main(spec, options, run_case);
-            running[pid] = Child{spec, Clock::now()};
+            running[pid] = Child{spec, pid, Clock::now()};
         }
         int status = 0;
         const pid_t done = ::waitpid(-1, &status, WNOHANG);
