@@ -324,5 +324,22 @@ TEST(Robustness, MessagesNameTheRealProblem) {
     }
 }
 
+TEST(Robustness, OutOfMemoryIsNamed) {
+#if defined(__SANITIZE_ADDRESS__)
+    GTEST_SKIP() << "AddressSanitizer reserves more address space than the limit allows";
+#endif
+    ScratchDirectory dir;
+    // 5e6 disks need ~2 GiB: beyond an address-space limit of ~800 MB, well within the machine.
+    std::string text = test::read_text_file(test::scene_file("box_gas_1000.toml"));
+    text.replace(text.find("count = 1000"), 12, "count = 5000000");
+    text.replace(text.find("50.0, 50.0]"), 11, "50000.0, 50000.0]");
+    const std::string scene = dir.file("big.toml");
+    test::write_text_file(scene, text);
+    const auto result = test::run_program(
+        "/bin/sh", {"-c", "ulimit -v 800000; exec \"$0\" \"$@\"", COLLIDE_EXECUTABLE, "run", scene}, dir);
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_TRUE(contains(result.err, "collide: error: out of memory")) << result.err;
+}
+
 }  // namespace
 }  // namespace collide
