@@ -6,6 +6,8 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <csignal>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -40,8 +42,30 @@ std::string log_tail(const std::string& path, std::size_t max_chars = 1500) {
     return s;
 }
 
+// SIGINT, SIGTERM and SIGHUP end the suite, but not before the parent has stopped its cases
+// and removed their temporary files (a terminal's Ctrl-C reaches the children too; they die
+// without cleaning up). The handler only records the signal; the wait loop acts on it.
+volatile std::sig_atomic_t stop_signal = 0;
+extern "C" void record_stop_signal(int signal_number) { stop_signal = signal_number; }
+constexpr int stop_signals[] = {SIGINT, SIGTERM, SIGHUP};
+
+void stop_cases_and_die(std::map<pid_t, Child>& running, const IsolationOptions& options) {
+    for (const auto& [pid, child] : running) ::kill(pid, SIGKILL);
+    for (const auto& [pid, child] : running) {
+        ::waitpid(pid, nullptr, 0);
+        remove_temporaries(options.runs_dir, options.result_dir, pid);
+        std::error_code ignored;
+        std::filesystem::remove(result_path(options.result_dir, child.spec.id) + ".partial", ignored);
+    }
+    const int signal_number = stop_signal;
+    ::signal(signal_number, SIG_DFL);
+    ::raise(signal_number);
+    std::_Exit(128 + signal_number);  // not reached: the signal ends the program
+}
+
 [[noreturn]] void child_main(const CaseSpec& spec, const IsolationOptions& options,
                              const std::function<CaseResult(const CaseSpec&)>& run_case) {
+    for (int s : stop_signals) ::signal(s, SIG_DFL);  // a case just ends; the parent cleans up
     // The child's output goes to its own log so that parallel cases do not interleave.
     const std::string log = options.result_dir + "/" + spec.id + ".log";
     const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
@@ -127,8 +151,11 @@ void run_isolated(const std::vector<CaseSpec>& specs, const IsolationOptions& op
     std::filesystem::create_directories(options.result_dir);
     std::map<pid_t, Child> running;
     std::size_t next = 0;
+    stop_signal = 0;
+    for (int s : stop_signals) ::signal(s, record_stop_signal);
     const auto limit = std::chrono::duration<double>(options.time_limit_seconds);
     while (next < specs.size() || !running.empty()) {
+        if (stop_signal) stop_cases_and_die(running, options);
         while (next < specs.size() && running.size() < std::size_t(std::max(1, options.jobs))) {
             const CaseSpec& spec = specs[next++];
             std::filesystem::remove(result_path(options.result_dir, spec.id));
@@ -153,6 +180,7 @@ void run_isolated(const std::vector<CaseSpec>& specs, const IsolationOptions& op
             }
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
+    for (int s : stop_signals) ::signal(s, SIG_DFL);
 }
 
 }  // namespace collide::validation

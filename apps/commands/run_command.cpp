@@ -1,4 +1,5 @@
 // `collide run SCENE --backend NAME [--out FILE] [--frames]`: one scene on one backend.
+#include <signal.h>
 #include <unistd.h>
 
 #include <csignal>
@@ -6,6 +7,7 @@
 #include <cstdio>
 #include <map>
 #include <memory>
+#include <optional>
 
 #include "apps/progress_line.h"
 #include "commands.h"
@@ -28,6 +30,24 @@ extern "C" void remove_temporary_and_die(int signal_number) {
     ::signal(signal_number, SIG_DFL);
     ::raise(signal_number);
 }
+
+// Holds SIGINT, SIGTERM and SIGHUP back while it lives; a signal that arrives meanwhile is
+// delivered when it ends.
+class StopSignalsBlocked {
+public:
+    StopSignalsBlocked() {
+        sigset_t stop;
+        sigemptyset(&stop);
+        for (int s : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&stop, s);
+        ::sigprocmask(SIG_BLOCK, &stop, &previous_);
+    }
+    ~StopSignalsBlocked() { ::sigprocmask(SIG_SETMASK, &previous_, nullptr); }
+    StopSignalsBlocked(const StopSignalsBlocked&) = delete;
+    StopSignalsBlocked& operator=(const StopSignalsBlocked&) = delete;
+
+private:
+    sigset_t previous_;
+};
 
 // Arms the handlers for the writer's temporary file while it exists; disarms them after.
 class TemporaryFileGuard {
@@ -92,9 +112,14 @@ void execute(const RunArgs& args) {
     const ParticleState<double> initial = generate_initial_state(scene);
     auto solver = backend.create(args.options);
 
+    // The guard outlives the writer, so the handlers stay armed until the temporary file is gone.
+    std::optional<TemporaryFileGuard> guard;
     std::unique_ptr<RunWriter> writer;
-    if (!args.out.empty()) writer = std::make_unique<RunWriter>(args.out, args.frames);
-    const TemporaryFileGuard guard(writer.get());
+    {
+        const StopSignalsBlocked blocked;  // one arriving between creating the file and arming waits
+        if (!args.out.empty()) writer = std::make_unique<RunWriter>(args.out, args.frames);
+        guard.emplace(writer.get());
+    }
     ProgressLine progress;
     RunOptions run_options;
     run_options.writer = writer.get();

@@ -276,6 +276,19 @@ TEST(Robustness, ValidateRemovesTheTemporariesOfACaseKilledForTime) {
     EXPECT_TRUE(temporaries_in(out).empty());
 }
 
+TEST(Robustness, ValidateInterruptedFromTheTerminalLeavesNoTemporaries) {
+    ScratchDirectory dir;
+    const std::string suite = suite_file(dir, "path = \"" + long_scene(dir) + "\"\n");
+    const std::string out = dir.file("out");
+    const pid_t pid = start_collide({"validate", suite, "--out", out});
+    ASSERT_TRUE(wait_for([&] { return !temporaries_in(out + "/runs").empty(); })) << "the case never wrote";
+    ::kill(-pid, SIGINT);  // Ctrl-C: the terminal signals the whole process group
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGINT);
+    EXPECT_TRUE(temporaries_in(out).empty());
+}
+
 TEST(Robustness, ResumeRemovesTemporariesASigkillLeft) {
     ScratchDirectory dir;
     const std::string suite = suite_file(dir, "name = \"head_on_equal\"\npath = \"" +
