@@ -1,11 +1,14 @@
 // collide: the command-line program. Each subcommand lives in apps/commands/.
 #include <iostream>
+#include <new>
 #include <stdexcept>
 
 #include "commands/commands.h"
+#include "core/hdf5_handle.h"
 #include "core/provenance.h"
 
 int main(int argc, char** argv) {
+    collide::skip_hdf5_cleanup_at_exit();
     collide::set_command_line(argc, argv);
     CLI::App app{"collide: cross-validated 2D hard-disk collision solvers"};
     app.require_subcommand(1);
@@ -20,6 +23,11 @@ int main(int argc, char** argv) {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         return app.exit(e);
+    } catch (const std::bad_alloc&) {
+        // Named, since what() is only "std::bad_alloc".
+        std::cerr << "collide: error: out of memory (a memory allocation failed; the scene may be too large "
+                     "for the memory available, or a limit such as `ulimit -v` is set)\n";
+        return 1;
     } catch (const std::exception& e) {
         std::cerr << "collide: error: " << e.what() << "\n";
         return 1;

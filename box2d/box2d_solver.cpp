@@ -4,9 +4,11 @@
 
 #include "physics/step_schedule.h"
 
+#include <cfloat>
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <sstream>
 #include <stdexcept>
 
 namespace collide {
@@ -31,6 +33,41 @@ double mean_radius(const ParticleState<double>& s) {
     double sum = 0;
     for (double r : s.radius) sum += r;
     return sum / double(s.size());
+}
+
+// Box2D computes in float. A value beyond float's range becomes inf, on which Box2D stops
+// with an assertion (b2_body.cpp: b2IsValid); a density below float's smallest normal number
+// becomes 0, for which Box2D quietly gives the body a mass of 1 (and the energy is wrong).
+// So every value handed over must be finite in float, and radii and densities normal and > 0.
+void require_float(double value, bool positive, const std::string& scene, const std::string& what) {
+    const double size = std::fabs(value);
+    const bool ok = positive ? value >= FLT_MIN && value <= FLT_MAX : std::isfinite(value) && size <= FLT_MAX;
+    if (ok) return;
+    std::ostringstream msg;
+    msg << "box2d: scene '" << scene << "': " << what << " = " << value << " in Box2D's units is "
+        << (positive ? "outside the normal positive float range [1.2e-38, 3.4e38]" : "beyond float's range (3.4e38)")
+        << "; Box2D computes in float and cannot take it";
+    throw std::runtime_error(msg.str());
+}
+
+void check_float_inputs(const Scene& scene_, const ParticleState<double>& s, const Box2dUnits& units_, int substeps_) {
+    const std::string& name = scene_.name;
+    require_float(units_.to_box2d_length(scene_.physics.gravity_x), false, name, "gravity x");
+    require_float(units_.to_box2d_length(scene_.physics.gravity_y), false, name, "gravity y");
+    require_float(scene_.physics.damping, false, name, "damping");
+    require_float(scene_.run.dt / substeps_, true, name, "the step dt / substeps");
+    for (double x : {scene_.world.xmin, scene_.world.xmax}) require_float(units_.to_box2d_x(x), false, name, "a wall");
+    for (double y : {scene_.world.ymin, scene_.world.ymax}) require_float(units_.to_box2d_y(y), false, name, "a wall");
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        const std::string disk = "disk " + std::to_string(i) + " ";
+        require_float(units_.to_box2d_x(s.x[i]), false, name, disk + "x");
+        require_float(units_.to_box2d_y(s.y[i]), false, name, disk + "y");
+        require_float(units_.to_box2d_length(s.vx[i]), false, name, disk + "vx");
+        require_float(units_.to_box2d_length(s.vy[i]), false, name, disk + "vy");
+        const double r = units_.to_box2d_length(s.radius[i]);
+        require_float(r, true, name, disk + "radius");
+        if (!s.is_stone(i)) require_float(s.mass[i] / (std::numbers::pi * r * r), true, name, disk + "density (mass / area)");
+    }
 }
 
 }  // namespace
@@ -74,6 +111,7 @@ void Box2dSolver::load(const Scene& scene, const ParticleState<double>& initial)
     stats_ = SolverStats{};
     cap_steps_ = cap_body_steps_ = 0;
 
+    check_float_inputs(scene, initial, units_, substeps_);
     world_ = std::make_unique<b2World>(b2Vec2(float(units_.to_box2d_length(scene.physics.gravity_x)),
                                               float(units_.to_box2d_length(scene.physics.gravity_y))));
     // Sleeping freezes bodies whose speed stays below a threshold: the tuned preset turns it

@@ -26,6 +26,11 @@ public:
 // Stops HDF5 printing its error stack itself (errors are still recorded and reported by us).
 inline void silence_hdf5_error_printing() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
 
+// HDF5 1.10 crashes in its exit-time cleanup (H5F__close_cb) when closing a file failed, as
+// on a full disk. A program that closes its files itself calls this first thing in main(),
+// before any other HDF5 call, so the library skips that cleanup and exits cleanly.
+inline void skip_hdf5_cleanup_at_exit() { H5dont_atexit(); }
+
 // The description of the innermost entry on HDF5's current error stack, where the failure
 // was detected (e.g. the operating system's reason for a failed open), or "" if there is none.
 inline std::string hdf5_error_reason() {
@@ -37,6 +42,14 @@ inline std::string hdf5_error_reason() {
     };
     H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, take_innermost, &reason);
     H5Eclear2(H5E_DEFAULT);
+    // A failed write ("file write failed: time = ..., errno = 28, error message = 'No space
+    // left on device', buf = ...") is shortened to the system's reason.
+    const std::string marker = "error message = '";
+    const auto at = reason.find(marker), colon = reason.find(':');
+    if (at != std::string::npos && colon != std::string::npos) {
+        const auto begin = at + marker.size(), end = reason.find('\'', begin);
+        if (end != std::string::npos) reason = reason.substr(0, colon) + ": " + reason.substr(begin, end - begin);
+    }
     return reason;
 }
 

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace collide {
 
@@ -35,8 +36,34 @@ std::string describe_nonfinite(const std::string& solver_name, const ParticleSta
             << state.vx[i] << ", " << state.vy[i] << "))";
         break;
     }
-    msg << "; every disk was finite at t = " << last_finite_t
-        << ": the state broke in between (a smaller [run] output_interval narrows it down)";
+    if (t <= last_finite_t)  // the first output: nothing ran yet that could have broken it
+        msg << "; the backend's initial state already holds it (a value beyond the range of its "
+               "number type, e.g. float's 3.4e38?)";
+    else
+        msg << "; every disk was finite at t = " << last_finite_t
+            << ": the state broke in between (a smaller [run] output_interval narrows it down)";
+    return msg.str();
+}
+
+// The first metric that is NaN or Inf although every disk is finite (an energy that overflows
+// double with finite velocities, e.g. |v| = 1e200), or nullptr when all are finite.
+const char* nonfinite_metric(const Metrics& m) {
+    const std::pair<const char*, double> values[] = {
+        {"kinetic energy", m.kinetic_energy}, {"potential energy", m.potential_energy},
+        {"momentum x", m.momentum_x},         {"momentum y", m.momentum_y},
+        {"max overlap", m.max_overlap},       {"mean overlap", m.mean_overlap},
+        {"max wall penetration", m.max_wall_penetration}};
+    for (const auto& [name, value] : values)
+        if (!std::isfinite(value)) return name;
+    return nullptr;
+}
+
+std::string describe_nonfinite_metric(const std::string& solver_name, const Metrics& m, const char* name) {
+    std::ostringstream msg;
+    msg << solver_name << ": NaN/Inf metric at t = " << m.time << ": the " << name
+        << " is not finite (kinetic " << m.kinetic_energy << ", potential " << m.potential_energy
+        << ", momentum (" << m.momentum_x << ", " << m.momentum_y
+        << ")) although every disk is finite: the values overflow double (speeds, masses or gravity too large)";
     return msg.str();
 }
 
@@ -61,6 +88,9 @@ RunResult run_scene(const Scene& scene, Solver& solver, const ParticleState<doub
         if (options.on_output) options.on_output(t, scene.run.duration);
         if (options.stop_on_nonfinite && m.nonfinite > 0)
             throw std::runtime_error(describe_nonfinite(solver.name(), state, m.nonfinite, t, last_finite_t));
+        if (options.stop_on_nonfinite && m.nonfinite == 0)
+            if (const char* name = nonfinite_metric(m))
+                throw std::runtime_error(describe_nonfinite_metric(solver.name(), m, name));
         if (m.nonfinite == 0) last_finite_t = t;
     }
     result.final_state = std::move(state);

@@ -207,6 +207,16 @@ std::string temporary_path_for(const fs::path& target) {
     return (target.parent_path() / name).string();
 }
 
+std::string file_kind(fs::file_type type) {
+    switch (type) {
+        case fs::file_type::character: return "a character device";
+        case fs::file_type::block: return "a block device";
+        case fs::file_type::fifo: return "a FIFO";
+        case fs::file_type::socket: return "a socket";
+        default: return "not a regular file";
+    }
+}
+
 // Fails with a clear reason when `target` cannot be written, before the run starts.
 void check_target_is_writable_place(const std::string& path) {
     if (path.empty()) throw Hdf5Error("cannot write the output: the file name is empty");
@@ -220,8 +230,24 @@ void check_target_is_writable_place(const std::string& path) {
         throw Hdf5Error("cannot write '" + path + "': directory '" + directory.string() + "' does not exist");
     if (!fs::is_directory(directory_status))
         throw Hdf5Error("cannot write '" + path + "': '" + directory.string() + "' is not a directory");
-    if (fs::is_directory(fs::status(target, error)))
+    const fs::file_status existing = fs::status(target, error);  // follows a symbolic link
+    if (fs::is_directory(existing))
         throw Hdf5Error("cannot write '" + path + "': a directory of that name exists");
+    // The finished file is renamed over the target, which would turn a device (/dev/null), a
+    // FIFO or a socket into a regular file: only a regular file is ever replaced.
+    if (fs::exists(existing) && !fs::is_regular_file(existing))
+        throw Hdf5Error("cannot write '" + path + "': it exists and is not a regular file (" +
+                        file_kind(existing.type()) + "); collide writes only to a new or a regular file");
+    if (fs::is_symlink(fs::symlink_status(target, error)) && !fs::exists(existing))
+        throw Hdf5Error("cannot write '" + path + "': it is a symbolic link to nothing");
+}
+
+// A symbolic link is followed: the file it points to is replaced and the link stays a link
+// (renaming onto the link itself would replace the link with the new file).
+std::string resolved_target(const std::string& path) {
+    std::error_code error;
+    if (!fs::is_symlink(fs::symlink_status(path, error))) return path;
+    return fs::canonical(path).string();
 }
 
 struct TemporaryFile {
@@ -362,7 +388,7 @@ struct RunWriter::Impl {
 RunWriter::RunWriter(const std::string& path, bool write_frames) {
     silence_hdf5_error_printing();
     check_target_is_writable_place(path);
-    impl_ = std::make_unique<Impl>(path, write_frames);
+    impl_ = std::make_unique<Impl>(resolved_target(path), write_frames);
 }
 
 // Without commit(): the Impl's members close the file and remove the temporary file.

@@ -16,7 +16,9 @@
 // renamed into place by commit(), so an existing file is never left half-written; if the
 // writer is destroyed without commit() the temporary file is removed and the target is
 // untouched. A target that cannot be written (missing directory, no permission, a directory
-// in the way) fails in the constructor, before any simulation time is spent.
+// in the way, anything but a regular file: a device, a FIFO, a socket) fails in the
+// constructor, before any simulation time is spent. A symbolic link is followed: the regular
+// file it points to is replaced and the link is kept.
 //
 // Every failure throws Hdf5Error (a std::runtime_error) whose message names the file.
 #pragma once

@@ -44,11 +44,16 @@ Physics read_physics(const TomlFields& physics) {
     return p;
 }
 
-// True when t is a whole number (>= 1, at most 10^15) of steps dt, to a relative tolerance
-// of 1e-9: decimal values such as 0.1 / 1e-3 are not exact in binary floating point.
-bool whole_steps(double t, double dt) {
-    const double n = t / dt;
-    return std::round(n) >= 1 && std::round(n) <= 1e15 && std::fabs(n - std::round(n)) <= 1e-9 * std::round(n);
+// Why `t` is not a whole number (>= 1, at most max_steps) of steps dt, or "" when it is; whole
+// to a relative tolerance of 1e-9: decimal values such as 0.1 / 1e-3 are not exact in binary.
+std::string steps_problem(double t, double dt) {
+    const double n = std::round(t / dt);
+    if (n > max_steps)
+        return "at most " + toml_value_text(toml::value(max_steps)) + " steps of dt = " +
+               toml_value_text(toml::value(dt)) + " (this is " + toml_value_text(toml::value(n)) + " steps)";
+    if (n < 1 || std::fabs(t / dt - n) > 1e-9 * n)
+        return "a whole multiple of dt = " + toml_value_text(toml::value(dt));
+    return "";
 }
 
 RunSettings read_run(const TomlFields& run) {
@@ -58,11 +63,12 @@ RunSettings read_run(const TomlFields& run) {
     run.require(r.dt > 0, "dt", "a time step > 0");
     r.duration = run.number("duration", r.duration);
     run.require(r.duration > 0, "duration", "a time > 0");
-    run.require(whole_steps(r.duration, r.dt), "duration", "a whole multiple of dt = " + toml_value_text(toml::value(r.dt)));
+    const std::string duration_problem = steps_problem(r.duration, r.dt);
+    run.require(duration_problem.empty(), "duration", duration_problem);
     r.output_interval = run.number("output_interval", std::min(r.output_interval, r.duration));
     run.require(r.output_interval > 0 && r.output_interval <= r.duration, "output_interval", "a time in (0, duration]");
-    run.require(whole_steps(r.output_interval, r.dt), "output_interval",
-                "a whole multiple of dt = " + toml_value_text(toml::value(r.dt)));
+    const std::string interval_problem = steps_problem(r.output_interval, r.dt);
+    run.require(interval_problem.empty(), "output_interval", interval_problem);
     const std::int64_t substeps = run.integer("substeps", 1);
     run.require(substeps >= 1 && substeps <= 1000000, "substeps", "an integer in [1, 1000000]");
     r.substeps = int(substeps);
@@ -215,11 +221,18 @@ ParticleGenerator read_particles(const TomlFields& block, const World& world) {
     return g;
 }
 
-// [backend.NAME] tables: plain values kept as text; each backend validates its own keys.
+// [backend.NAME] tables: plain values kept as text; each backend validates its own keys. A
+// table for no backend (a typo) is refused here, as is any key under [backend.step]: the
+// stepping rules take all their settings from [run] and [physics].
 void read_backend_options(const TomlFields& root, Scene& scene) {
     const TomlFields backends = root.table("backend");
+    backends.allow_only({"event", "step", "cpu", "opencl", "box2d"});
     for (const auto& [name, node] : backends.raw()) {
         const TomlFields options = backends.table(name.str());
+        for (const auto& [key, value] : options.raw())
+            if (name.str() == "step")
+                options.fail(key.str(), "no key here: the step backend has no options (its settings are "
+                                        "[run] dt, substeps, order and the [physics] table)");
         auto& out = scene.backend_options[std::string(name.str())];
         for (const auto& [key, value] : options.raw()) {
             if (value.is_string()) out[std::string(key.str())] = value.as_string()->get();
@@ -328,7 +341,20 @@ Scene parse_scene(const std::string& text, const std::string& source_name) {
 // file (a device, a pipe) from being read into memory: reading stops once the limit is passed.
 constexpr std::size_t max_scene_file_bytes = 64u << 20;
 
+std::string run_settings_problem(const RunSettings& run) {
+    if (!(run.dt > 0)) return "dt: expected a time step > 0";
+    if (!(run.duration > 0)) return "duration: expected a time > 0";
+    if (auto why = steps_problem(run.duration, run.dt); !why.empty()) return "duration: expected " + why;
+    if (!(run.output_interval > 0 && run.output_interval <= run.duration))
+        return "output_interval: expected a time in (0, duration]";
+    if (auto why = steps_problem(run.output_interval, run.dt); !why.empty()) return "output_interval: expected " + why;
+    return "";
+}
+
 Scene load_scene(const std::string& path) {
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error))
+        throw SceneError(path + ": is a directory: expected a scene file (TOML)");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw SceneError(path + ": cannot open scene file");
     std::string text;

@@ -17,7 +17,16 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// The most steps of dt a run may take (duration / dt): more would not finish in any
+// reasonable time (10^12 steps of one disk take hours) and usually means a unit mistake.
+constexpr double max_steps = 1e12;
+
 Scene load_scene(const std::string& path);
+
+// Why the run settings break a scene rule (dt > 0; duration and output_interval whole
+// multiples of dt, at most max_steps steps), as "KEY: expected ...", or "" when they do not.
+// For settings changed after loading (a suite's overrides), which must obey the same rules.
+std::string run_settings_problem(const RunSettings& run);
 Scene parse_scene(const std::string& text, const std::string& source_name);
 
 // Places the scene's disks (GSL mt19937 seeded with scene.seed, GSL distributions), so a

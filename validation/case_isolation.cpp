@@ -6,6 +6,8 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <csignal>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -25,6 +27,7 @@ using Clock = std::chrono::steady_clock;
 
 struct Child {
     CaseSpec spec;
+    pid_t pid = 0;
     Clock::time_point start;
     bool killed_for_time = false;
 };
@@ -39,8 +42,30 @@ std::string log_tail(const std::string& path, std::size_t max_chars = 1500) {
     return s;
 }
 
+// SIGINT, SIGTERM and SIGHUP end the suite, but not before the parent has stopped its cases
+// and removed their temporary files (a terminal's Ctrl-C reaches the children too; they die
+// without cleaning up). The handler only records the signal; the wait loop acts on it.
+volatile std::sig_atomic_t stop_signal = 0;
+extern "C" void record_stop_signal(int signal_number) { stop_signal = signal_number; }
+constexpr int stop_signals[] = {SIGINT, SIGTERM, SIGHUP};
+
+void stop_cases_and_die(std::map<pid_t, Child>& running, const IsolationOptions& options) {
+    for (const auto& [pid, child] : running) ::kill(pid, SIGKILL);
+    for (const auto& [pid, child] : running) {
+        ::waitpid(pid, nullptr, 0);
+        remove_temporaries(options.runs_dir, options.result_dir, pid);
+        std::error_code ignored;
+        std::filesystem::remove(result_path(options.result_dir, child.spec.id) + ".partial", ignored);
+    }
+    const int signal_number = stop_signal;
+    ::signal(signal_number, SIG_DFL);
+    ::raise(signal_number);
+    std::_Exit(128 + signal_number);  // not reached: the signal ends the program
+}
+
 [[noreturn]] void child_main(const CaseSpec& spec, const IsolationOptions& options,
                              const std::function<CaseResult(const CaseSpec&)>& run_case) {
+    for (int s : stop_signals) ::signal(s, SIG_DFL);  // a case just ends; the parent cleans up
     // The child's output goes to its own log so that parallel cases do not interleave.
     const std::string log = options.result_dir + "/" + spec.id + ".log";
     const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
@@ -63,6 +88,10 @@ std::string log_tail(const std::string& path, std::size_t max_chars = 1500) {
 }
 
 CaseResult death_result(const Child& child, int wait_status, const IsolationOptions& options) {
+    // A child that died without cleaning up (a signal, the time limit) leaves its temporaries.
+    remove_temporaries(options.runs_dir, options.result_dir, child.pid);
+    std::error_code ignored;
+    std::filesystem::remove(result_path(options.result_dir, child.spec.id) + ".partial", ignored);
     const std::string path = result_path(options.result_dir, child.spec.id);
     const std::string log = options.result_dir + "/" + child.spec.id + ".log";
     if (!child.killed_for_time && WIFEXITED(wait_status) && WEXITSTATUS(wait_status) == 0 &&
@@ -102,14 +131,31 @@ CaseResult death_result(const Child& child, int wait_status, const IsolationOpti
 
 }  // namespace
 
+void remove_temporaries(const std::string& runs_dir, const std::string& result_dir, int pid) {
+    namespace fs = std::filesystem;
+    const std::string writer_mark = pid ? ".tmp-" + std::to_string(pid) + "-" : ".tmp-";
+    std::error_code error;
+    if (!runs_dir.empty())
+        for (const auto& entry : fs::directory_iterator(runs_dir, error)) {
+            const std::string name = entry.path().filename().string();
+            if (name.rfind('.', 0) == 0 && name.find(writer_mark) != std::string::npos) fs::remove(entry.path(), error);
+        }
+    if (pid) return;  // a case's .partial record has no process id in its name: only --resume
+    for (const auto& entry : fs::directory_iterator(result_dir, error))
+        if (entry.path().extension() == ".partial") fs::remove(entry.path(), error);
+}
+
 void run_isolated(const std::vector<CaseSpec>& specs, const IsolationOptions& options,
                   const std::function<CaseResult(const CaseSpec&)>& run_case,
                   const std::function<void(const CaseResult&)>& on_done) {
     std::filesystem::create_directories(options.result_dir);
     std::map<pid_t, Child> running;
     std::size_t next = 0;
+    stop_signal = 0;
+    for (int s : stop_signals) ::signal(s, record_stop_signal);
     const auto limit = std::chrono::duration<double>(options.time_limit_seconds);
     while (next < specs.size() || !running.empty()) {
+        if (stop_signal) stop_cases_and_die(running, options);
         while (next < specs.size() && running.size() < std::size_t(std::max(1, options.jobs))) {
             const CaseSpec& spec = specs[next++];
             std::filesystem::remove(result_path(options.result_dir, spec.id));
@@ -117,7 +163,7 @@ void run_isolated(const std::vector<CaseSpec>& specs, const IsolationOptions& op
             const pid_t pid = ::fork();
             if (pid < 0) throw std::runtime_error(std::string("fork failed: ") + std::strerror(errno));
             if (pid == 0) child_main(spec, options, run_case);
-            running[pid] = Child{spec, Clock::now()};
+            running[pid] = Child{spec, pid, Clock::now()};
         }
         int status = 0;
         const pid_t done = ::waitpid(-1, &status, WNOHANG);
@@ -134,6 +180,7 @@ void run_isolated(const std::vector<CaseSpec>& specs, const IsolationOptions& op
             }
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
+    for (int s : stop_signals) ::signal(s, SIG_DFL);
 }
 
 }  // namespace collide::validation

@@ -16,7 +16,14 @@ struct IsolationOptions {
     int jobs = 1;
     double time_limit_seconds = 120;
     std::string result_dir;  // <id>.toml (result) and <id>.log (the child's stdout and stderr)
+    std::string runs_dir;    // where children write HDF5 files ("" if none): cleaned as they die
 };
+
+// Removes the temporary files a writer leaves when its process dies without cleaning up
+// (SIGKILL, a crash, the time limit): ".NAME.tmp-PID-K" HDF5 files in `runs_dir` and
+// "NAME.partial" records in `result_dir`. With pid = 0 every one of them goes (for --resume,
+// which holds the output directory's lock, so no other run is writing them).
+void remove_temporaries(const std::string& runs_dir, const std::string& result_dir, int pid = 0);
 
 // Runs `run_case` for every spec in a child process; calls `on_done` in the parent (in
 // completion order) with each result. `run_case` runs only in children.

@@ -1,10 +1,20 @@
 #include "case_result.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <sstream>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
 #include <toml++/toml.h>
+
+#include "core/hdf5_handle.h"
 
 namespace collide::validation {
 
@@ -105,15 +115,45 @@ void write_case_result(const CaseResult& r, const std::string& path) {
                      {"overlap_depths", to_array(r.overlap_depths)},
                      {"compressibility", to_array(r.compressibility)},
                      {"hdf5_file", r.hdf5_file}};
-    // Written beside the target and renamed, so a reader (or --resume) never sees half a file.
-    const std::string temporary = path + ".partial";
-    {
-        std::ofstream out(temporary);
-        if (!out) throw std::runtime_error(temporary + ": cannot write the case result");
-        out << root << "\n";
-        if (!out) throw std::runtime_error(temporary + ": write failed");
+    std::ostringstream text;
+    text << root << "\n";
+    write_text_file_atomically(path, text.str());
+}
+
+namespace {
+
+// write(2) until all is written; false with errno set on failure (a full disk: ENOSPC).
+bool write_all(int fd, const std::string& text) {
+    for (std::size_t done = 0; done < text.size();) {
+        const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) return false;
+        done += std::size_t(n);
     }
-    std::filesystem::rename(temporary, path);
+    return true;
+}
+
+}  // namespace
+
+void write_text_file_atomically(const std::string& path, const std::string& text) {
+    // Written beside the target and renamed, so a reader (or --resume) never sees half a file.
+    // Plain POSIX calls, so every failure (a full disk shows only at write, fsync or close) is
+    // seen with its reason; the temporary file is removed on failure.
+    const std::string temporary = path + ".partial";
+    const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd < 0) throw std::runtime_error(temporary + ": cannot create (" + std::strerror(errno) + ")");
+    const bool ok = write_all(fd, text) && ::fsync(fd) == 0;
+    const int saved = errno;
+    if (::close(fd) != 0 || !ok) {
+        const std::string reason = std::strerror(ok ? errno : saved);
+        ::unlink(temporary.c_str());
+        throw std::runtime_error(path + ": cannot write (" + reason + ")");
+    }
+    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+        const std::string reason = std::strerror(errno);
+        ::unlink(temporary.c_str());
+        throw std::runtime_error(path + ": cannot rename '" + temporary + "' into place (" + reason + ")");
+    }
 }
 
 CaseResult read_case_result(const std::string& path) {
@@ -179,6 +219,36 @@ CaseResult read_case_result(const std::string& path) {
     r.compressibility = from_array(root, "compressibility");
     r.hdf5_file = root["hdf5_file"].value_or(std::string());
     return r;
+}
+
+}  // namespace collide::validation
+
+namespace collide::validation {
+
+std::string case_files_problem(const CaseResult& result, const std::string& output_dir) {
+    if (result.hdf5_file.empty()) return "";
+    const std::string path = output_dir + "/" + result.hdf5_file;
+    if (!std::filesystem::is_regular_file(path)) return path + ": missing";
+    silence_hdf5_error_printing();
+    try {
+        // HDF5 refuses a truncated file at open ("truncated file: eof = ..."); a file cut
+        // at a chunk boundary still has to hold one /metrics/time row per output in the record.
+        Hdf5Handle file = file_handle(checked(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), path, "open"));
+        Hdf5Handle time = dataset_handle(checked(H5Dopen2(file.get(), "/metrics/time", H5P_DEFAULT), path,
+                                                 "open /metrics/time"));
+        Hdf5Handle space = dataspace_handle(checked(H5Dget_space(time.get()), path, "read /metrics/time"));
+        hsize_t rows = 0;
+        checked(H5Sget_simple_extent_dims(space.get(), &rows, nullptr), path, "read /metrics/time");
+        if (rows != result.series.size())
+            return path + ": " + std::to_string(rows) + " outputs where the case record has " +
+                   std::to_string(result.series.size());
+        std::vector<double> values(rows);
+        if (rows) checked(H5Dread(time.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
+                          path, "read /metrics/time");
+    } catch (const Hdf5Error& e) {
+        return e.what();
+    }
+    return "";
 }
 
 }  // namespace collide::validation

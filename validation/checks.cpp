@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 namespace collide::validation {
 
@@ -21,10 +22,26 @@ std::string group_id(const CaseSpec& spec) {
 
 namespace {
 
+// The larger of a and b, where NaN wins: std::max(m, NaN) returns m and would let a NaN
+// metric pass as 0 (the `at_most` comparison fails on NaN, so it must reach it).
+double max_keeping_nan(double a, double b) { return std::isnan(a) || std::isnan(b) ? NAN : std::max(a, b); }
+
 double max_of(const std::vector<double>& v) {
     double m = 0;
-    for (double x : v) m = std::max(m, x);  // NaN never wins; the run check catches NaN
+    for (double x : v) m = max_keeping_nan(m, x);
     return m;
+}
+
+// The name of the first series holding a NaN or Inf, or "" when all are finite.
+std::string first_nonfinite_series(const MetricSeries& m) {
+    const std::pair<const char*, const std::vector<double>*> series[] = {
+        {"time", &m.time}, {"kinetic_energy", &m.kinetic_energy}, {"total_energy", &m.total_energy},
+        {"momentum_x", &m.momentum_x}, {"momentum_y", &m.momentum_y}, {"max_overlap", &m.max_overlap},
+        {"mean_overlap", &m.mean_overlap}, {"wall_penetration", &m.wall_penetration}};
+    for (const auto& [name, values] : series)
+        for (double x : *values)
+            if (!std::isfinite(x)) return name;
+    return "";
 }
 
 class CaseChecker {
@@ -33,6 +50,10 @@ public:
 
     void left_out(const std::string& check, const std::string& reason) {
         out_.push_back(base(check, CheckStatus::left_out, 0, 0, reason));
+    }
+
+    void fail(const std::string& check, const std::string& detail) {
+        out_.push_back(base(check, CheckStatus::fail, 0, 0, detail));
     }
 
     void at_most(const std::string& check, double value, double tolerance, const std::string& what) {
@@ -67,7 +88,7 @@ double momentum_drift(const CaseResult& r) {
     const double scale = std::sqrt(2 * r.total_mass * m.kinetic_energy.front());
     double drift = 0;
     for (std::size_t k = 0; k < m.size(); ++k)
-        drift = std::max(drift, std::hypot(m.momentum_x[k] - m.momentum_x[0], m.momentum_y[k] - m.momentum_y[0]));
+        drift = max_keeping_nan(drift, std::hypot(m.momentum_x[k] - m.momentum_x[0], m.momentum_y[k] - m.momentum_y[0]));
     return scale > 0 ? drift / scale : drift;
 }
 
@@ -78,7 +99,7 @@ double energy_drift(const CaseResult& r, EnergyKind kind) {
     const auto& e = kind == EnergyKind::total ? m.total_energy : m.kinetic_energy;
     const double scale = max_of(m.kinetic_energy);
     double drift = 0;
-    for (double x : e) drift = std::max(drift, std::fabs(x - e.front()));
+    for (double x : e) drift = max_keeping_nan(drift, std::fabs(x - e.front()));
     return scale > 0 ? drift / scale : drift;
 }
 
@@ -106,7 +127,11 @@ std::vector<CheckResult> case_checks(const CaseResult& r, const SceneFeatures& f
         for (const auto& name : per_case) c.left_out(name, "not evaluated: the run did not finish");
         return out;
     }
-    c.at_most("run", 0, 0, "run");
+    // A finished run with a NaN/Inf metric (an energy overflowing double while every disk is
+    // finite) fails; the checks below that read that metric fail too, as NaN reaches them.
+    const std::string nonfinite = first_nonfinite_series(r.series);
+    if (nonfinite.empty()) c.at_most("run", 0, 0, "run");
+    else c.fail("run", "the metric " + nonfinite + " holds NaN/Inf");
 
     if (auto why = momentum_left_out(f)) c.left_out("momentum_drift", *why);
     else c.at_most("momentum_drift", momentum_drift(r), tol.momentum_drift, "relative momentum drift");

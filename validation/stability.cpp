@@ -57,9 +57,14 @@ std::string text(double v) {
     return s.str();
 }
 
+// A disk with a NaN/Inf state, or a NaN/Inf metric (an energy overflowing double while every
+// disk is finite is no more stable than a NaN position).
 bool any_nonfinite(const MetricSeries& m) {
     for (double x : m.nonfinite)
         if (x > 0) return true;
+    for (const auto* series : {&m.kinetic_energy, &m.total_energy, &m.momentum_x, &m.momentum_y, &m.max_overlap})
+        for (double x : *series)
+            if (!std::isfinite(x)) return true;
     return false;
 }
 

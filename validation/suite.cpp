@@ -241,6 +241,10 @@ SuiteScene read_scene(const toml::table& t, const std::string& file, int index, 
     s.duration = r.positive("duration");
     s.output_interval = r.positive("output_interval");
     s.set = read_parameter_sweeps(t, file, "[[scene]] #" + std::to_string(index));
+    // Where the run settings a case may break are set (checked against the scene later).
+    s.line = int(t.source().begin.line);
+    for (const char* key : {"output_interval", "duration", "dt"})
+        if (const toml::node* node = t.get(key)) s.line = int(node->source().begin.line);
     return s;
 }
 

@@ -1,8 +1,17 @@
 #include "suite_runner.h"
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+
 #include <chrono>
 #include <filesystem>
 #include <map>
+#include <sstream>
 
 #include "backend_variant.h"
 #include "case_execution.h"
@@ -59,6 +68,23 @@ struct CaseScenes {
     const SceneFeatures& feature(const CaseSpec& c) const { return features.at({c.scene_index, parameter_label(c)}); }
 };
 
+// A suite's overrides (dt, duration, output_interval) obey the rules a scene file does: a dt
+// that does not divide the output interval would stamp t = 0.1 on the state at t = 0.0999.
+void check_case_run_settings(const Suite& suite, const std::vector<Scene>& scenes, const std::vector<CaseSpec>& specs) {
+    for (const CaseSpec& spec : specs) {
+        const SuiteScene& entry = suite.scenes[spec.scene_index];
+        const Scene scene = case_scene(scenes[spec.scene_index], entry, spec);
+        const std::string problem = run_settings_problem(scene.run);
+        if (problem.empty()) continue;
+        std::ostringstream msg;
+        msg << (suite.source_path.empty() ? suite.name : suite.source_path);
+        if (entry.line) msg << ":" << entry.line;
+        msg << ": [[scene]] " << entry.name << " with dt = " << scene.run.dt << ", duration = " << scene.run.duration
+            << ", output_interval = " << scene.run.output_interval << ": " << problem;
+        throw SuiteError(msg.str());
+    }
+}
+
 // The reference run a case is classified against: same scene, parameters and seed, and the
 // same dt when the reference ran per dt (trajectory scenes).
 const CaseResult* reference_for(const CaseResult& r, const std::vector<CaseResult>& all) {
@@ -70,20 +96,60 @@ const CaseResult* reference_for(const CaseResult& r, const std::vector<CaseResul
     return found;
 }
 
-// Cases that already have a readable result file from an earlier run (for --resume).
-std::map<std::string, CaseResult> finished_results(const std::vector<CaseSpec>& specs, const std::string& dir) {
+// Cases that already have a readable result file from an earlier run (for --resume), whose
+// HDF5 file is complete too (a truncated one, e.g. after a full disk, makes the case run again).
+std::map<std::string, CaseResult> finished_results(const std::vector<CaseSpec>& specs, const std::string& output_dir,
+                                                   std::FILE* progress) {
     std::map<std::string, CaseResult> done;
     for (const CaseSpec& spec : specs) {
-        const std::string path = result_path(dir, spec.id);
+        const std::string path = result_path(output_dir + "/cases", spec.id);
         if (!std::filesystem::exists(path)) continue;
         try {
-            done.emplace(spec.id, read_case_result(path));
-        } catch (const std::exception&) {
+            CaseResult result = read_case_result(path);
+            const std::string problem = case_files_problem(result, output_dir);
+            if (!problem.empty()) throw std::runtime_error(problem);
+            done.emplace(spec.id, std::move(result));
+        } catch (const std::exception& e) {
             // An unreadable result counts as not finished: the case runs again.
+            if (progress) std::fprintf(progress, "resume: running %s again: %s\n", spec.id.c_str(), e.what());
         }
     }
     return done;
 }
+
+// An advisory lock (flock) on OUT/.lock, held until the suite is written: a second `collide
+// validate` into the same directory would remove and rewrite the first one's case files under
+// it. The holder's process id is written in the file, so the refusal can name it. The kernel
+// releases the lock when the holder exits, however it ends (a SIGKILL too).
+class OutputDirectoryLock {
+public:
+    explicit OutputDirectoryLock(const std::string& dir) : path_(dir + "/.lock") {
+        fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+        if (fd_ < 0) throw std::runtime_error(path_ + ": cannot create the lock file (" + std::strerror(errno) + ")");
+        if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+            const std::string holder = holder_pid();
+            ::close(fd_);
+            throw std::runtime_error(dir + ": another `collide validate` (process " + holder +
+                                     ") is writing into this directory; wait for it or choose another --out");
+        }
+        const std::string pid = std::to_string(::getpid()) + "\n";
+        if (::ftruncate(fd_, 0) != 0 || ::pwrite(fd_, pid.data(), pid.size(), 0) < 0) {}  // the lock is what counts
+    }
+    ~OutputDirectoryLock() { ::close(fd_); }
+    OutputDirectoryLock(const OutputDirectoryLock&) = delete;
+    OutputDirectoryLock& operator=(const OutputDirectoryLock&) = delete;
+
+private:
+    std::string holder_pid() const {
+        char text[32] = {};
+        const ssize_t n = ::pread(fd_, text, sizeof text - 1, 0);
+        std::string pid(text, n > 0 ? std::size_t(n) : 0);
+        while (!pid.empty() && (pid.back() == '\n' || pid.back() == ' ')) pid.pop_back();
+        return pid.empty() ? "unknown" : pid;
+    }
+    std::string path_;
+    int fd_ = -1;
+};
 
 // One outcome per case (stability.h), and a `stability` check per case so that the check
 // table, the JUnit file and the exit code show the unstable cases too.
@@ -115,11 +181,16 @@ SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& avail
     // Per scene for the comparisons (which only ask about the disks' radii): its first sweep point.
     for (std::size_t s = 0; s < scenes.size(); ++s) features.push_back(case_scenes.features.lower_bound({s, ""})->second);
     const std::vector<CaseSpec> specs = plan_cases(suite, scenes, backends);
+    check_case_run_settings(suite, scenes, specs);
 
     std::filesystem::create_directories(options.output_dir);
-    const std::string result_dir = options.output_dir + "/cases";
+    const OutputDirectoryLock lock(options.output_dir);
+    const std::string result_dir = options.output_dir + "/cases", runs_dir = options.output_dir + "/runs";
     std::map<std::string, CaseResult> results;
-    if (options.resume) results = finished_results(specs, result_dir);
+    if (options.resume) {
+        remove_temporaries(runs_dir, result_dir);  // left by a SIGKILL: no process cleaned them
+        results = finished_results(specs, options.output_dir, options.progress);
+    }
 
     SuiteOutcome outcome;
     outcome.cases_resumed = results.size();
@@ -129,7 +200,7 @@ SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& avail
 
     std::map<std::string, const BackendInfo*> by_name;
     for (const BackendInfo& b : backends) by_name[b.name] = &b;
-    IsolationOptions isolation{options.jobs, suite.time_limit_seconds, result_dir};
+    IsolationOptions isolation{options.jobs, suite.time_limit_seconds, result_dir, runs_dir};
     auto run_case = [&](const CaseSpec& spec) {
         CaseContext context{&suite, &case_scenes.scene(spec), by_name.at(spec.backend), options.output_dir};
         return execute_case(spec, context);

@@ -121,15 +121,8 @@ std::string line_json(const WorkPrecisionLine& line) {
     return o.str();
 }
 
-void write_atomically(const std::string& path, const std::string& text) {
-    const std::string temporary = path + ".partial";
-    {
-        std::ofstream out(temporary);
-        out << text;
-        if (!out) throw std::runtime_error(temporary + ": cannot write");
-    }
-    std::filesystem::rename(temporary, path);
-}
+// A full disk used to leave an empty file or PATH.partial behind; now it throws naming why.
+void write_atomically(const std::string& path, const std::string& text) { write_text_file_atomically(path, text); }
 
 std::string xml_escape(const std::string& s) {
     std::string out;

@@ -10,13 +10,28 @@
 #include <stdexcept>
 
 #include "commands.h"
+#include "validation/case_result.h"
 
 namespace collide::cli {
 namespace {
 
+// Every case file the renderer will read must be complete: a truncated HDF5 file (a full
+// disk, a copy cut short) is named here rather than drawn from, or failing deep in Python.
+void check_case_files(const std::string& dir) {
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator(dir + "/cases", error)) {
+        if (entry.path().extension() != ".toml") continue;
+        const std::string problem =
+            validation::case_files_problem(validation::read_case_result(entry.path().string()), dir);
+        if (!problem.empty())
+            throw std::runtime_error(problem + "; run `collide validate ... --resume` to run that case again");
+    }
+}
+
 void execute(const std::string& dir) {
     if (!std::filesystem::exists(dir + "/summary.json"))
         throw std::runtime_error(dir + "/summary.json: not found; expected the output directory of `collide validate`");
+    check_case_files(dir);
     const std::string script = std::string(COLLIDE_REPORT_DIR) + "/make_report.py";
     // fork + exec (not system()): no shell, so directory names need no quoting.
     const pid_t pid = ::fork();

@@ -1,8 +1,13 @@
 // `collide run SCENE --backend NAME [--out FILE] [--frames]`: one scene on one backend.
+#include <signal.h>
+#include <unistd.h>
+
+#include <csignal>
 #include <cmath>
 #include <cstdio>
 #include <map>
 #include <memory>
+#include <optional>
 
 #include "apps/progress_line.h"
 #include "commands.h"
@@ -13,6 +18,52 @@
 
 namespace collide::cli {
 namespace {
+
+// The temporary output file, removed by the handler of SIGINT, SIGTERM and SIGHUP (Ctrl-C, a
+// kill, a closed terminal) before the signal ends the program as it would have: RunWriter's
+// destructor never runs then. A fixed buffer, because a handler may only call
+// async-signal-safe functions (unlink, signal, raise), not touch a std::string.
+char temporary_to_remove[4096] = "";
+
+extern "C" void remove_temporary_and_die(int signal_number) {
+    if (temporary_to_remove[0]) ::unlink(temporary_to_remove);
+    ::signal(signal_number, SIG_DFL);
+    ::raise(signal_number);
+}
+
+// Holds SIGINT, SIGTERM and SIGHUP back while it lives; a signal that arrives meanwhile is
+// delivered when it ends.
+class StopSignalsBlocked {
+public:
+    StopSignalsBlocked() {
+        sigset_t stop;
+        sigemptyset(&stop);
+        for (int s : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&stop, s);
+        ::sigprocmask(SIG_BLOCK, &stop, &previous_);
+    }
+    ~StopSignalsBlocked() { ::sigprocmask(SIG_SETMASK, &previous_, nullptr); }
+    StopSignalsBlocked(const StopSignalsBlocked&) = delete;
+    StopSignalsBlocked& operator=(const StopSignalsBlocked&) = delete;
+
+private:
+    sigset_t previous_;
+};
+
+// Arms the handlers for the writer's temporary file while it exists; disarms them after.
+class TemporaryFileGuard {
+public:
+    explicit TemporaryFileGuard(const RunWriter* writer) {
+        if (!writer || writer->temporary_path().size() >= sizeof temporary_to_remove) return;
+        std::snprintf(temporary_to_remove, sizeof temporary_to_remove, "%s", writer->temporary_path().c_str());
+        for (int s : {SIGINT, SIGTERM, SIGHUP}) ::signal(s, remove_temporary_and_die);
+    }
+    ~TemporaryFileGuard() {
+        for (int s : {SIGINT, SIGTERM, SIGHUP}) ::signal(s, SIG_DFL);
+        temporary_to_remove[0] = '\0';
+    }
+    TemporaryFileGuard(const TemporaryFileGuard&) = delete;
+    TemporaryFileGuard& operator=(const TemporaryFileGuard&) = delete;
+};
 
 struct RunArgs {
     std::string scene_path;
@@ -61,8 +112,14 @@ void execute(const RunArgs& args) {
     const ParticleState<double> initial = generate_initial_state(scene);
     auto solver = backend.create(args.options);
 
+    // The guard outlives the writer, so the handlers stay armed until the temporary file is gone.
+    std::optional<TemporaryFileGuard> guard;
     std::unique_ptr<RunWriter> writer;
-    if (!args.out.empty()) writer = std::make_unique<RunWriter>(args.out, args.frames);
+    {
+        const StopSignalsBlocked blocked;  // one arriving between creating the file and arming waits
+        if (!args.out.empty()) writer = std::make_unique<RunWriter>(args.out, args.frames);
+        guard.emplace(writer.get());
+    }
     ProgressLine progress;
     RunOptions run_options;
     run_options.writer = writer.get();
@@ -83,7 +140,9 @@ void execute(const RunArgs& args) {
 void add_run_command(CLI::App& app) {
     auto args = std::make_shared<RunArgs>();
     auto* cmd = app.add_subcommand("run", "Run one scene on one backend; write metrics (and frames) to HDF5");
-    cmd->add_option("scene", args->scene_path, "Scene file (TOML)")->required()->check(CLI::ExistingFile);
+    // No CLI::ExistingFile check: load_scene names a missing file or a directory itself, and
+    // fails with the documented exit status 1 (CLI11's checks exit with 105).
+    cmd->add_option("scene", args->scene_path, "Scene file (TOML)")->required();
     cmd->add_option("-b,--backend", args->backend, "Backend name (see `collide backends`)")->capture_default_str();
     cmd->add_option("-o,--out", args->out, "HDF5 output file (written atomically)");
     cmd->add_flag("--frames", args->frames, "Also store positions and velocities at every output time");

@@ -20,6 +20,16 @@ struct ValidateArgs {
     bool resume = false;
 };
 
+// CLI::PositiveNumber would say "not in range 0 to 1.8e308" for --jobs 0.
+const CLI::Validator at_least_one_job(
+    [](std::string& text) -> std::string {
+        int jobs = 0;
+        if (!CLI::detail::lexical_cast(text, jobs) || jobs < 1)
+            return text + " is no number of jobs: expected a whole number >= 1 (the cases run at the same time)";
+        return "";
+    },
+    "N >= 1");
+
 void execute(const ValidateArgs& args) {
     const validation::Suite suite = validation::load_suite(args.suite_path);
     validation::RunnerOptions options;
@@ -58,7 +68,7 @@ void add_validate_command(CLI::App& app) {
     cmd->add_option("suite", args->suite_path, "Suite file (validation/suites/*.toml)")->required()->check(CLI::ExistingFile);
     cmd->add_option("-o,--out", args->out, "Output directory")->capture_default_str();
     cmd->add_option("-j,--jobs", args->jobs, "Cases run at the same time (each in its own process)")
-        ->check(CLI::PositiveNumber)->capture_default_str();
+        ->check(at_least_one_job)->capture_default_str();
     cmd->add_flag("--resume", args->resume, "Keep the cases that already have a result in the output directory");
     cmd->callback([args] { execute(*args); });
 }
