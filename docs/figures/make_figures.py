@@ -60,7 +60,15 @@ class Lab:
         return h5py.File(out, "r")
 
 
-def save(fig, out, name):
+def finish(fig, ax, out, name, xlabel, ylabel, title, legend=True, legend_loc=None):
+    """Labels the axes, writes out/NAME.png and closes the figure."""
+    if xlabel:
+        ax.set_xlabel(xlabel)
+    if ylabel:
+        ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    if legend:
+        ax.legend(loc=legend_loc)
     fig.tight_layout()
     fig.savefig(out / f"{name}.png", dpi=110)
     plt.close(fig)
@@ -78,11 +86,8 @@ def head_on_mass_ratio(lab, out):
     for value, text in ((-9 / 11, "-9/11"), (2 / 11, "2/11")):
         ax.axhline(value, color="grey", lw=0.6, ls=":")
         ax.text(t[-1], value, f" {text}", va="center", fontsize=8)
-    ax.set_xlabel("time")
-    ax.set_ylabel("velocity $v_x$")
-    ax.set_title("head_on_mass_ratio_10 on event")
-    ax.legend(loc="center left")
-    save(fig, out, "ch1_head_on_mass_ratio")
+    finish(fig, ax, out, "ch1_head_on_mass_ratio",
+           "time", "velocity $v_x$", "head_on_mass_ratio_10 on event", legend_loc="center left")
 
 
 def glancing(lab, out):
@@ -95,9 +100,8 @@ def glancing(lab, out):
     ax.set_aspect("equal")
     ax.set_xlim(0, 10)
     ax.set_ylim(0, 5)
-    ax.set_title("glancing on event: the disks leave at a right angle")
-    ax.legend(loc="upper left")
-    save(fig, out, "ch1_glancing")
+    finish(fig, ax, out, "ch1_glancing", None, None, "glancing on event: the disks leave at a right angle",
+           legend_loc="upper left")
 
 
 def pi_circle(lab, out):
@@ -114,10 +118,8 @@ def pi_circle(lab, out):
     ax.plot(r * np.cos(phi), r * np.sin(phi), color="grey", lw=0.6)
     ax.plot(a[keep], b[keep], lw=0.5, marker=".", ms=2)
     ax.set_aspect("equal")
-    ax.set_xlabel(r"$\sqrt{m_1}\,v_1$")
-    ax.set_ylabel(r"$\sqrt{m_2}\,v_2$")
-    ax.set_title("pi_billiard_k2: states on the energy circle")
-    save(fig, out, "ch1_pi_circle")
+    finish(fig, ax, out, "ch1_pi_circle",
+           r"$\sqrt{m_1}\,v_1$", r"$\sqrt{m_2}\,v_2$", "pi_billiard_k2: states on the energy circle", legend=False)
 
 
 # --- Chapter 2: many disks, exactly -------------------------------------------------------
@@ -131,11 +133,8 @@ def maxwell(lab, out):
     fig, ax = plt.subplots(figsize=(6, 3.2))
     ax.hist(speed, bins=30, density=True, alpha=0.6, label="event, t = 5 (1000 disks)")
     ax.plot(s, s / kT * np.exp(-s**2 / (2 * kT)), label=r"$f(v) = (v/kT)\,e^{-v^2/2kT}$, m = 1")
-    ax.set_xlabel("speed")
-    ax.set_ylabel("probability density")
-    ax.set_title("box_gas_1000: Maxwell-Boltzmann speeds in 2D")
-    ax.legend()
-    save(fig, out, "ch2_maxwell")
+    finish(fig, ax, out, "ch2_maxwell",
+           "speed", "probability density", "box_gas_1000: Maxwell-Boltzmann speeds in 2D")
 
 
 def equation_of_state(lab, out):
@@ -154,11 +153,8 @@ def equation_of_state(lab, out):
     fig, ax = plt.subplots(figsize=(6, 3.2))
     ax.plot(p, (1 + p**2 / 8) / (1 - p) ** 2, label="Henderson (1975)")
     ax.plot(fractions, z, "o", label="event, 400 disks, t = 4")
-    ax.set_xlabel("area fraction")
-    ax.set_ylabel("Z = PA / NkT")
-    ax.set_title("Hard-disk equation of state from the collision virial")
-    ax.legend()
-    save(fig, out, "ch2_equation_of_state")
+    finish(fig, ax, out, "ch2_equation_of_state",
+           "area fraction", "Z = PA / NkT", "Hard-disk equation of state from the collision virial")
 
 
 def snapshot(lab, out):
@@ -173,8 +169,7 @@ def snapshot(lab, out):
     ax.set_xlim(0, 50)
     ax.set_ylim(0, 50)
     ax.set_aspect("equal")
-    ax.set_title("box_gas_1000 at t = 10 (colour: speed)")
-    save(fig, out, "ch2_snapshot")
+    finish(fig, ax, out, "ch2_snapshot", None, None, "box_gas_1000 at t = 10 (colour: speed)", legend=False)
 
 
 # --- Chapter 3: many disks, stepped -------------------------------------------------------
@@ -214,11 +209,8 @@ def convergence(lab, out):
     ax.loglog(steps, np.array(steps) * 0.3, "k:", lw=0.8, label="slope 1")
     ax.set_xscale("log")
     ax.set_yscale("log")
-    ax.set_xlabel("dt")
-    ax.set_ylabel("mean position error at t = 5")
-    ax.set_title("glancing: stepped rules against event (6 collision phases)")
-    ax.legend()
-    save(fig, out, "ch3_convergence")
+    finish(fig, ax, out, "ch3_convergence",
+           "dt", "mean position error at t = 5", "glancing: stepped rules against event (6 collision phases)")
 
 
 def cradle(lab, out):
@@ -227,12 +219,9 @@ def cradle(lab, out):
         f = lab.run(lab.scene("stiff/newtons_cradle.toml", dt=dt), backend, frames=True)
         label = backend if backend == "event" else f"{backend}, dt = {dt}"
         ax.plot(f["frames/time"][:], f["frames/position"][:, 5, 0], label=label)
-    ax.set_xlabel("time")
-    ax.set_ylabel("x of the far disk")
     ax.set_xlim(0.5, 3)
-    ax.set_title("newtons_cradle: the impulse crosses one contact per step")
-    ax.legend()
-    save(fig, out, "ch3_cradle")
+    finish(fig, ax, out, "ch3_cradle",
+           "time", "x of the far disk", "newtons_cradle: the impulse crosses one contact per step")
 
 
 def energy_crowd(lab, out):
@@ -242,11 +231,8 @@ def energy_crowd(lab, out):
         t, k = f["metrics/time"][:], f["metrics/kinetic_energy"][:]
         label = backend if backend == "event" else f"{backend}, dt = {dt}"
         ax.plot(t, (k - k[0]) / k[0], label=label)
-    ax.set_xlabel("time")
-    ax.set_ylabel("relative kinetic energy change")
-    ax.set_title("box_gas_1000 at e = 1: energy lost in multi-contact steps")
-    ax.legend()
-    save(fig, out, "ch3_energy_crowd")
+    finish(fig, ax, out, "ch3_energy_crowd",
+           "time", "relative kinetic energy change", "box_gas_1000 at e = 1: energy lost in multi-contact steps")
 
 
 # --- Chapter 4: validating a solver -------------------------------------------------------
@@ -260,11 +246,9 @@ def work_precision(lab, out):
                     fmt="o-", capsize=2, label=backend)
     ax.set_xscale("log")
     ax.set_yscale("log")
-    ax.set_xlabel("solver time per run (s)")
-    ax.set_ylabel("mean position error at the end")
-    ax.set_title("head_on_equal: error against run time (6 collision phases)")
-    ax.legend()
-    save(fig, out, "ch4_work_precision")
+    finish(fig, ax, out, "ch4_work_precision",
+           "solver time per run (s)", "mean position error at the end",
+           "head_on_equal: error against run time (6 collision phases)")
 
 
 def overlap_series(lab, out):
@@ -272,11 +256,8 @@ def overlap_series(lab, out):
     for backend in ("step", "cpu", "box2d"):
         f = lab.run(lab.scene("box_gas_1000.toml", duration="4.0"), backend)
         ax.semilogy(f["metrics/time"][:], np.maximum(f["metrics/max_overlap"][:], 1e-9), label=backend)
-    ax.set_xlabel("time")
-    ax.set_ylabel("largest overlap / contact distance")
-    ax.set_title("box_gas_1000: overlap statistics at the output times")
-    ax.legend()
-    save(fig, out, "ch4_overlap")
+    finish(fig, ax, out, "ch4_overlap",
+           "time", "largest overlap / contact distance", "box_gas_1000: overlap statistics at the output times")
 
 
 def replicates(lab, out):
@@ -290,11 +271,7 @@ def replicates(lab, out):
     ax.plot(range(1, 6), z, "o")
     mean, se = z.mean(), z.std(ddof=1) / np.sqrt(len(z))
     ax.axhspan(mean - se, mean + se, alpha=0.2, label=f"mean ± SE = {mean:.4f} ± {se:.4f}")
-    ax.set_xlabel("seed")
-    ax.set_ylabel("pressure")
-    ax.set_title("periodic_gas on event, five replicates")
-    ax.legend()
-    save(fig, out, "ch4_replicates")
+    finish(fig, ax, out, "ch4_replicates", "seed", "pressure", "periodic_gas on event, five replicates")
 
 
 # --- Chapter 5: making it fast ------------------------------------------------------------
@@ -310,12 +287,9 @@ def speed_ladder(lab, out):
     for phi in sorted({r["area_fraction"] for r in rows}):
         pts = sorted((r["n"], r["ns_per_collision"]) for r in rows if r["area_fraction"] == phi)
         ax.semilogx(*zip(*pts), "o-", label=f"area fraction {phi:g}")
-    ax.set_xlabel("disks N")
-    ax.set_ylabel("ns per collision")
     ax.set_ylim(bottom=0)
-    ax.set_title("event: time per collision (collide bench event --quick)")
-    ax.legend()
-    save(fig, out, "ch5_event_ladder")
+    finish(fig, ax, out, "ch5_event_ladder",
+           "disks N", "ns per collision", "event: time per collision (collide bench event --quick)")
 
 
 def threads(lab, out):
@@ -326,11 +300,11 @@ def threads(lab, out):
         f = lab.run(scene, backend, extra=extra)
         seconds = sum(float(s) for s in f["stats/phase_seconds"].attrs.values())
         rates.append(1000 * int(f["stats"].attrs["steps"]) / seconds)
-        names.append(backend + (f", {extra[1]} threads" if extra else ""))
+        names.append(backend + (f", {extra[1]} thread{'s' if extra[1] != '1' else ''}" if extra else ""))
     ax.barh(names, rates)
-    ax.set_xlabel("particle-steps per second")
-    ax.set_title("box_gas_1000, 2000 steps: double serial against float threads")
-    save(fig, out, "ch5_threads")
+    finish(fig, ax, out, "ch5_threads",
+           "particle-steps per second", None, "box_gas_1000, 2000 steps: step (double) and cpu (float)",
+           legend=False)
 
 
 FIGURES = {f.__name__: f for f in (head_on_mass_ratio, glancing, pi_circle, maxwell, equation_of_state,
