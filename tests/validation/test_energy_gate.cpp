@@ -1,0 +1,92 @@
+// The energy check of the stepped rules compares the measured drift with the drift the rule
+// itself predicts (validation/energy_loss_model.h). A bound derived that way must still catch
+// defects: here the `step` solver runs a gas with a defect injected through the scene it is
+// given, while the check judges it as the scene the suite declares (e = 1). The honest rule
+// must pass the same check on the same scene.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "core/run_driver.h"
+#include "core/scene_loader.h"
+#include "reference/step_solver.h"
+#include "validation/applicability.h"
+#include "validation/checks.h"
+#include "validation/tolerances.h"
+
+namespace collide::validation {
+namespace {
+
+// box_gas_1000 (area fraction 0.31, kT = 1) at dt = 2.5e-4 for 5 time units: few multi-contact
+// steps (the model expects ~0.28 nu^2 dt T N ~ 2), so the honest rule's predicted drift is small.
+Scene gas_scene(double duration = 5.0) {
+    Scene s = load_scene(std::string(COLLIDE_SOURCE_DIR) + "/data/scenes/box_gas_1000.toml");
+    s.run.dt = 2.5e-4;
+    s.run.duration = duration;
+    s.run.output_interval = 0.1;
+    return s;
+}
+
+// Runs `step` on `solver_scene` and judges the run as a case of `declared`.
+CheckResult energy_check_of(const Scene& declared, const Scene& solver_scene) {
+    const ParticleState<double> initial = generate_initial_state(declared);
+    StepSolver solver;
+    CaseResult r;
+    RunOptions options;
+    options.on_state = [&](const ParticleState<double>&, const Metrics& m) {
+        r.series.time.push_back(m.time);
+        r.series.kinetic_energy.push_back(m.kinetic_energy);
+        r.series.total_energy.push_back(m.total_energy());
+    };
+    const RunResult run = run_scene(solver_scene, solver, initial, options);
+    r.spec.id = "energy_gate";
+    r.spec.backend = "step";
+    r.disks = initial.size();
+    r.duration = declared.run.duration;
+    r.dt = declared.run.dt;
+    r.contacts = run.stats.contacts;
+    for (double w : initial.inv_mass) r.total_mass += 1 / w;
+    r.initial.radius = initial.radius;
+    for (const auto& c : case_checks(r, scene_features(declared, initial), default_tolerances("step", "double")))
+        if (c.check == "energy_drift") {
+            std::printf("drift %.3g, predicted %.3g +- %.3g, bound %.3g\n", c.value, c.predicted,
+                        c.predicted_uncertainty, c.tolerance);
+            return c;
+        }
+    ADD_FAILURE() << "no energy_drift check";
+    return {};
+}
+
+TEST(EnergyGate, HonestRulePassesWithThePredictionReported) {
+    const Scene s = gas_scene();
+    const CheckResult c = energy_check_of(s, s);
+    EXPECT_EQ(c.status, CheckStatus::pass) << c.detail;
+    EXPECT_FALSE(std::isnan(c.predicted));
+    EXPECT_GT(c.predicted_uncertainty, 0);
+    EXPECT_GT(c.tolerance, c.predicted);
+}
+
+// A restitution of 0.999 in place of 1: every collision removes (1 - e^2)/2 of the reduced
+// mass times u_n^2 (docs/stepping-rules.md, eq. 3), ~1e-3 of a disk's energy, a few per disk
+// over the run: a systematic loss of order nu T 1e-3 ~ 1e-2, several times the bound.
+TEST(EnergyGate, RestitutionSlightlyBelowOneFails) {
+    const Scene s = gas_scene();
+    Scene defect = s;
+    defect.physics.restitution = 0.999;
+    const CheckResult c = energy_check_of(s, defect);
+    EXPECT_EQ(c.status, CheckStatus::fail) << "drift " << c.value << " within " << c.tolerance;
+}
+
+// An impulse applied twice: J = -(1 + e) u_n / (w_i + w_j) doubled at e = 1 is the impulse of
+// e = 3, which multiplies the normal relative speed by -3 and gains energy at every collision
+// (the gas heats without bound, so half a time unit suffices).
+TEST(EnergyGate, ImpulseAppliedTwiceFails) {
+    const Scene s = gas_scene(0.5);
+    Scene defect = s;
+    defect.physics.restitution = 3.0;
+    const CheckResult c = energy_check_of(s, defect);
+    EXPECT_EQ(c.status, CheckStatus::fail) << "drift " << c.value << " within " << c.tolerance;
+}
+
+}  // namespace
+}  // namespace collide::validation
