@@ -17,11 +17,12 @@
 namespace collide::validation {
 namespace {
 
-// box_gas_1000 (area fraction 0.31, kT = 1) at dt = 2.5e-4 for 5 time units: few multi-contact
-// steps (the model expects ~0.28 nu^2 dt T N ~ 2), so the honest rule's predicted drift is small.
-Scene gas_scene(double duration = 5.0) {
+// box_gas_1000 (area fraction 0.31, kT = 1, nu = 2.6) at dt = 1.25e-4 for 10 time units: few
+// multi-contact steps (the model expects 0.28 nu^2 dt T N ~ 2.3), so the honest rule's bound
+// (which grows as sqrt(dt T)) is small, while a defect acting at every collision grows as T.
+Scene gas_scene(double duration = 10.0) {
     Scene s = load_scene(std::string(COLLIDE_SOURCE_DIR) + "/data/scenes/box_gas_1000.toml");
-    s.run.dt = 2.5e-4;
+    s.run.dt = 1.25e-4;
     s.run.duration = duration;
     s.run.output_interval = 0.1;
     return s;
@@ -67,8 +68,8 @@ TEST(EnergyGate, HonestRulePassesWithThePredictionReported) {
 }
 
 // A restitution of 0.999 in place of 1: every collision removes (1 - e^2)/2 of the reduced
-// mass times u_n^2 (docs/stepping-rules.md, eq. 3), ~1e-3 of a disk's energy, a few per disk
-// over the run: a systematic loss of order nu T 1e-3 ~ 1e-2, several times the bound.
+// mass times u_n^2 (docs/stepping-rules.md, eq. 3), ~1e-3 of a disk's energy, nu = 2.6 of them
+// per disk per time unit: a systematic loss of order nu T 1e-3 ~ 2.6e-2, twice the bound.
 TEST(EnergyGate, RestitutionSlightlyBelowOneFails) {
     const Scene s = gas_scene();
     Scene defect = s;
