@@ -21,6 +21,14 @@ CHECK_ORDER = ["run", "momentum_drift", "energy_drift", "max_overlap", "mean_ove
                "stability"]
 
 
+
+def predicted_note(c):
+    """The drift a stepped rule is expected to show, next to the measured one (energy_drift of
+    step/cpu/opencl; validation/energy_loss_model.h). Empty for every other check."""
+    if c.get("predicted") is None:
+        return ""
+    return f" (rule predicts {fmt(c['predicted'])} \u00b1 {fmt(c['predicted_uncertainty'])})"
+
 def load_case(directory, case):
     with open(os.path.join(directory, case["result_file"]), "rb") as f:
         return tomllib.load(f)
@@ -84,7 +92,7 @@ def check_table(summary):
             else:
                 text = "ok" if name == "run" and c["status"] == "pass" else \
                     c["detail"].split(":")[0] if name == "stability" else \
-                    f"{fmt(c['value'])} {html.escape(c['comparison'])} {fmt(c['tolerance'])}"
+                    f"{fmt(c['value'])} {html.escape(c['comparison'])} {fmt(c['tolerance'])}" + predicted_note(c)
                 out.append(f"<td class='{c['status']}' title='{title}'>{text}</td>")
         out.append("</tr>")
     out.append("</table>")
@@ -269,7 +277,7 @@ def write_markdown(summary, path):
     for c in summary["checks"]:
         lines.append(f"| `{c['subject']}` | {c['check']} | {c['status']} | {fmt(c['value']) if c['status'] != 'left_out' else ''} "
                      f"| {(c['comparison'] + ' ' + fmt(c['tolerance'])) if c['status'] != 'left_out' else ''} "
-                     f"| {c['detail'].replace('|', '/').splitlines()[0] if c['detail'] else ''} |")
+                     f"| {c['detail'].replace('|', '/').splitlines()[0] if c['detail'] else ''}{predicted_note(c)} |")
     lines += ["", "## Observed convergence order", "", "| scene | backend | order |", "|---|---|---|"]
     for l in summary["work_precision"]:
         lines.append(f"| {l['scene']} | {l['backend']} | {fmt(l['order']) if l['order'] is not None else l['order_note']} |")
