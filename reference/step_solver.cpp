@@ -65,9 +65,14 @@ void StepSolver::compute_contact_deltas() {
     const bool periodic = scene_.periodic();
     const double lx = scene_.world.width(), ly = scene_.world.height();
     const double e = scene_.physics.restitution, mu = scene_.physics.friction;
+    // Disks that receive two or more impulses in this pass: the Jacobi sum does not conserve
+    // kinetic energy for them even at e = 1 (docs/stepping-rules.md, "Energy at e = 1").
+    // Counting only; it changes no arithmetic.
+    std::int64_t multi_contact_disks = 0;
     for (std::size_t i = 0; i < s.size(); ++i) {
         dx_[i] = dy_[i] = dvx_[i] = dvy_[i] = 0;
         if (s.is_stone(i)) continue;  // a stone's share is always zero
+        int impulses = 0;
         grid_.for_each_candidate(s.x[i], s.y[i], [&](std::uint32_t j) {
             if (j == i) return;
             double sep_x = s.x[i] - s.x[j], sep_y = s.y[i] - s.y[j];
@@ -83,11 +88,14 @@ void StepSolver::compute_contact_deltas() {
             dy_[i] += d.dy;
             dvx_[i] += d.dvx;
             dvy_[i] += d.dvy;
+            if (d.dvx != 0 || d.dvy != 0) ++impulses;  // approaching pairs only get an impulse
             // Each pair once: by its lower index, or by the moving disk when the other is a
             // stone (a stone never runs this loop).
             if (i < j || s.is_stone(j)) ++stats_.contacts;
         });
+        if (impulses >= 2) ++multi_contact_disks;
     }
+    stats_.counters["multi_contact_disks"] += double(multi_contact_disks);
 }
 
 void StepSolver::apply_contact_deltas() {

@@ -18,7 +18,9 @@ SceneFeatures scene_features(const Scene& scene, const ParticleState<double>& in
             if (initial.vx[i] != 0 || initial.vy[i] != 0) f.moving_stones = true;
         }
         if (initial.radius[i] != initial.radius.front()) f.monodisperse = false;
+        f.area_fraction += 3.14159265358979323846 * initial.radius[i] * initial.radius[i];
     }
+    f.area_fraction /= scene.world.width() * scene.world.height();
     return f;
 }
 

@@ -18,6 +18,7 @@ struct SceneFeatures {
     bool stones = false, moving_stones = false;
     double restitution = 1, wall_restitution = 1;
     bool monodisperse = true;
+    double area_fraction = 0;  // of the disks in the box (the energy-loss model of the stepped rules)
 };
 SceneFeatures scene_features(const Scene& scene, const ParticleState<double>& initial);
 

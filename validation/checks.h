@@ -15,6 +15,7 @@
 //   speed_distribution   two-sample Kolmogorov-Smirnov p-value of final speeds vs the reference
 #pragma once
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,8 @@ struct CheckResult {
     double tolerance = 0;
     std::string comparison = "<=";  // how value relates to tolerance for a pass ("<=" or ">=")
     std::string detail;             // failure message or left-out reason
+    // energy_drift of a stepped backend: the drift the rule itself predicts (energy_loss_model.h)
+    double predicted = std::nan(""), predicted_uncertainty = std::nan("");
 };
 
 // The checks of one case on its own (run, conservation, overlaps).

@@ -129,7 +129,7 @@ class PredictedDrift(unittest.TestCase):
         c = {"subject": "g__step__dt0.001__seed1", "check": "energy_drift", "status": "pass", "value": 0.029,
              "tolerance": 0.05, "comparison": "<=", "detail": "", "predicted": 0.025, "predicted_uncertainty": 0.008}
         self.assertEqual(make_report.predicted_text(c, percent=True),
-                         "loses 2.9 % where the rule is expected to lose 2.5 ± 0.8 %")
+                         "drifts 2.9 % where the rule is expected to drift 2.5 ± 0.8 %")
         self.assertIn("expected 0.025 ± 0.008", make_report.cell(c, "energy_drift"))
         del c["predicted"]
         self.assertEqual(make_report.predicted_text(c, percent=True), "")

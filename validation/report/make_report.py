@@ -283,8 +283,9 @@ def predicted_text(c, percent=False):
     if percent:
         v = c.get("value")
         unc = f" ± {100 * u:.2g}" if isinstance(u, (int, float)) else ""
-        verb = "loses" if (v or 0) >= 0 else "gains"  # the drift is recorded as a loss
-        return f"{verb} {100 * abs(v):.2g} % where the rule is expected to lose {100 * p:.2g}{unc} %"
+        # The drift is max_t |K(t) - K(0)| / K(0): multi-contact steps change K by either sign
+        # (docs/stepping-rules.md, "Energy at e = 1"), so the model predicts its size, not a sign.
+        return f"drifts {100 * abs(v or 0):.2g} % where the rule is expected to drift {100 * p:.2g}{unc} %"
     return f"expected {fmt(p)}" + (f" ± {fmt(u)}" if isinstance(u, (int, float)) else "")
 
 

@@ -1,0 +1,144 @@
+// The energy check of the stepped rules compares the measured drift with the drift the rule
+// itself predicts (validation/energy_loss_model.h). A bound derived that way must still catch
+// defects: here the `step` solver runs a gas with a defect injected through the scene it is
+// given, while the check judges it as the scene the suite declares (e = 1). The honest rule
+// must pass the same check on the same scene.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "core/run_driver.h"
+#include "core/scene_loader.h"
+#include "reference/step_solver.h"
+#include "validation/applicability.h"
+#include "validation/checks.h"
+#include "validation/tolerances.h"
+
+namespace collide::validation {
+namespace {
+
+// box_gas_1000 (area fraction 0.31, kT = 1, nu = 2.6) at dt = 1.25e-4 for 10 time units: few
+// multi-contact steps (the model expects 0.28 nu^2 dt T N ~ 2.3), so the honest rule's bound
+// (which grows as sqrt(dt T)) is small, while a defect acting at every collision grows as T.
+Scene gas_scene(double duration = 10.0) {
+    Scene s = load_scene(std::string(COLLIDE_SOURCE_DIR) + "/data/scenes/box_gas_1000.toml");
+    s.run.dt = 1.25e-4;
+    s.run.duration = duration;
+    s.run.output_interval = 0.1;
+    return s;
+}
+
+// Runs `step` on `solver_scene` and judges the run as a case of `declared`.
+CheckResult energy_check_of(const Scene& declared, const Scene& solver_scene) {
+    const ParticleState<double> initial = generate_initial_state(declared);
+    StepSolver solver;
+    CaseResult r;
+    RunOptions options;
+    options.on_state = [&](const ParticleState<double>&, const Metrics& m) {
+        r.series.time.push_back(m.time);
+        r.series.kinetic_energy.push_back(m.kinetic_energy);
+        r.series.total_energy.push_back(m.total_energy());
+    };
+    const RunResult run = run_scene(solver_scene, solver, initial, options);
+    r.spec.id = "energy_gate";
+    r.spec.backend = "step";
+    r.disks = initial.size();
+    r.duration = declared.run.duration;
+    r.dt = declared.run.dt;
+    r.contacts = run.stats.contacts;
+    for (double w : initial.inv_mass) r.total_mass += 1 / w;
+    r.initial.radius = initial.radius;
+    for (const auto& c : case_checks(r, scene_features(declared, initial), default_tolerances("step", "double")))
+        if (c.check == "energy_drift") {
+            std::printf("drift %.3g, predicted %.3g +- %.3g, bound %.3g\n", c.value, c.predicted,
+                        c.predicted_uncertainty, c.tolerance);
+            return c;
+        }
+    ADD_FAILURE() << "no energy_drift check";
+    return {};
+}
+
+TEST(EnergyGate, HonestRulePassesWithThePredictionReported) {
+    const Scene s = gas_scene();
+    const CheckResult c = energy_check_of(s, s);
+    EXPECT_EQ(c.status, CheckStatus::pass) << c.detail;
+    EXPECT_FALSE(std::isnan(c.predicted));
+    EXPECT_GT(c.predicted_uncertainty, 0);
+    EXPECT_GT(c.tolerance, c.predicted);
+}
+
+// A restitution of 0.999 in place of 1: every collision removes (1 - e^2)/2 of the reduced
+// mass times u_n^2 (docs/stepping-rules.md, eq. 3), ~1e-3 of a disk's energy, nu = 2.6 of them
+// per disk per time unit: a systematic loss of order nu T 1e-3 ~ 2.6e-2, twice the bound.
+TEST(EnergyGate, RestitutionSlightlyBelowOneFails) {
+    const Scene s = gas_scene();
+    Scene defect = s;
+    defect.physics.restitution = 0.999;
+    const CheckResult c = energy_check_of(s, defect);
+    EXPECT_EQ(c.status, CheckStatus::fail) << "drift " << c.value << " within " << c.tolerance;
+}
+
+// An impulse applied twice: J = -(1 + e) u_n / (w_i + w_j) doubled at e = 1 is the impulse of
+// e = 3, which multiplies the normal relative speed by -3 and gains energy at every collision
+// (the gas heats without bound, so half a time unit suffices).
+TEST(EnergyGate, ImpulseAppliedTwiceFails) {
+    const Scene s = gas_scene(0.5);
+    Scene defect = s;
+    defect.physics.restitution = 3.0;
+    const CheckResult c = energy_check_of(s, defect);
+    EXPECT_EQ(c.status, CheckStatus::fail) << "drift " << c.value << " within " << c.tolerance;
+}
+
+}  // namespace
+}  // namespace collide::validation
+
+namespace collide::validation {
+namespace {
+
+// The worked example of docs/stepping-rules.md ("Energy at e = 1"): in box_gas_1000 (step,
+// seed 1, dt = 1e-3) the step that changes the kinetic energy most within the first 1.1 time
+// units is one in which a disk takes two impulses from one snapshot. Prints the figures the
+// docs quote; asserts only what the physics says: an isolated pair conserves energy at e = 1,
+// so the largest one-step change must come from a disk with two or more simultaneous contacts.
+TEST(EnergyGate, LargestOneStepChangeIsAMultiContact) {
+    const Scene s = load_scene(std::string(COLLIDE_SOURCE_DIR) + "/data/scenes/box_gas_1000.toml");
+    const ParticleState<double> initial = generate_initial_state(s);
+    StepSolver solver;
+    solver.load(s, initial);
+    auto kinetic = [](const ParticleState<double>& p, std::size_t i) {
+        return 0.5 * (p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]) / p.inv_mass[i];
+    };
+    ParticleState<double> before, after, worst_before, worst_after;
+    double worst = 0, worst_t = 0;
+    while (solver.time() < 1.1) {
+        solver.read_state(before);
+        const auto multi = solver.stats().counters["multi_contact_disks"];
+        solver.step();
+        solver.read_state(after);
+        if (solver.stats().counters.at("multi_contact_disks") == multi) continue;
+        double change = 0;
+        for (std::size_t i = 0; i < after.size(); ++i) change += kinetic(after, i) - kinetic(before, i);
+        if (std::fabs(change) > std::fabs(worst)) {
+            worst = change;
+            worst_t = solver.time();
+            worst_before = before;
+            worst_after = after;
+        }
+    }
+    // The disks of that step whose energy changed by more than an isolated pair's rounding.
+    double involved_before = 0;
+    std::printf("step ending at t = %.4f changes K by %.3f (K/N ~ 1):", worst_t, worst);
+    for (std::size_t i = 0; i < worst_after.size(); ++i) {
+        const double dk = kinetic(worst_after, i) - kinetic(worst_before, i);
+        if (std::fabs(dk) > 1e-9) {
+            std::printf(" disk %zu (%.3f -> %.3f)", i, kinetic(worst_before, i), kinetic(worst_after, i));
+            involved_before += kinetic(worst_before, i);
+        }
+    }
+    std::printf("; the disks that collided held %.2f before\n", involved_before);
+    EXPECT_GT(std::fabs(worst), 0.1);  // a tenth of a disk's mean energy at least
+}
+
+}  // namespace
+}  // namespace collide::validation
