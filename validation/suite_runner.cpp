@@ -136,13 +136,25 @@ SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& avail
     std::unique_ptr<Progress> progress;
     if (options.progress) progress = std::make_unique<Progress>(to_run.size(), options.progress, options.progress_is_terminal);
     std::size_t done = 0, failed = 0;
-    run_isolated(to_run, isolation, run_case, [&](const CaseResult& r) {
-        ++done;
-        if (r.status != RunStatus::completed && r.status != RunStatus::left_out) ++failed;
-        results[r.spec.id] = r;
-        if (progress) progress->update(done, failed, r.spec.id);
-    });
+    // --- MPI hook (case_dispatch.h, docs/scaling.md): under an MPI launcher the ranks share
+    // the cases out and rank 0 receives every result; the other ranks stop here.
+    if (options.dispatch) {
+        auto cost = [&](const CaseSpec& s) {
+            return estimated_cost(s, case_scene(case_scenes.scene(s), suite.scenes[s.scene_index], s), results);
+        };
+        CaseWork work{&specs, &results, options.output_dir, isolation, run_case, cost, progress.get()};
+        options.dispatch->run(work);
+        if (!options.dispatch->is_root()) return outcome;
+    } else {  // --- end of the MPI hook
+        run_isolated(to_run, isolation, run_case, [&](const CaseResult& r) {
+            ++done;
+            if (r.status != RunStatus::completed && r.status != RunStatus::left_out) ++failed;
+            results[r.spec.id] = r;
+            if (progress) progress->update(done, failed, r.spec.id);
+        });
+    }
     if (progress) progress->finish();
+    outcome.execution = options.dispatch ? options.dispatch->execution() : serial_execution(options.jobs);
     outcome.cases_run = to_run.size();
 
     // Judge every case in plan order, then the comparisons with the reference.
