@@ -1,5 +1,7 @@
 #include "mpi_dispatch.h"
 
+#include <sched.h>
+
 #include <algorithm>
 #include <chrono>
 #include <climits>
@@ -71,6 +73,18 @@ std::string joined(const std::vector<std::string>& words) {
     return out;
 }
 
+// mpirun binds each rank to one core by default (Slurm to its --cpus-per-task), and a rank's
+// cases inherit the binding: --jobs J on fewer than J cores makes J cases share them, and a
+// multi-threaded backend (cpu, opencl on a CPU device) gets only the rank's cores.
+void warn_if_jobs_outnumber_cores(int rank, int jobs) {
+    cpu_set_t cores;
+    if (::sched_getaffinity(0, sizeof cores, &cores) != 0 || CPU_COUNT(&cores) >= jobs) return;
+    std::fprintf(stderr,
+                 "collide: rank %d may use %d core(s) but runs %d cases at a time (--jobs); give each rank "
+                 "more cores (mpirun --map-by slot:PE=%d, srun --cpus-per-task=%d) or use --bind-to none\n",
+                 rank, CPU_COUNT(&cores), jobs, jobs, jobs);
+}
+
 bool failed(const CaseResult& r) { return r.status != RunStatus::completed && r.status != RunStatus::left_out; }
 
 }  // namespace
@@ -93,6 +107,7 @@ MpiDispatch::MpiDispatch(int jobs_per_rank, bool gather_hdf5) : jobs_(jobs_per_r
     std::vector<char> all(std::size_t(size_) * MPI_MAX_PROCESSOR_NAME);
     MPI_Allgather(name, MPI_MAX_PROCESSOR_NAME, MPI_CHAR, all.data(), MPI_MAX_PROCESSOR_NAME, MPI_CHAR, MPI_COMM_WORLD);
     for (int r = 0; r < size_; ++r) hosts_.emplace_back(&all[std::size_t(r) * MPI_MAX_PROCESSOR_NAME]);
+    warn_if_jobs_outnumber_cores(rank_, jobs_);
 }
 
 MpiDispatch::~MpiDispatch() {
