@@ -176,39 +176,52 @@ void MpiDispatch::receive_result(Run& run, const MPI_Status& probed) {
     record(run, std::move(r), from);
 }
 
+// The hand-out cursor: a counter in rank 0's memory that every rank advances atomically.
+void MpiDispatch::open_cursor(Run& run) const {
+    long* counter = nullptr;
+    MPI_Win_allocate(is_root() ? MPI_Aint(sizeof(long)) : 0, sizeof(long), MPI_INFO_NULL, MPI_COMM_WORLD, &counter,
+                     &run.window);
+    if (is_root()) {  // a local store into a window belongs in an access epoch of its own
+        MPI_Win_lock(MPI_LOCK_EXCLUSIVE, 0, 0, run.window);
+        *counter = 0;
+        MPI_Win_unlock(0, run.window);
+    }
+    MPI_Barrier(MPI_COMM_WORLD);  // no rank claims before the cursor is zero
+}
+
+std::optional<CaseSpec> MpiDispatch::claim(Run& run) const {
+    const long one = 1;
+    long ticket = 0;
+    MPI_Win_lock(MPI_LOCK_SHARED, 0, 0, run.window);
+    MPI_Fetch_and_op(&one, &ticket, MPI_LONG, 0, 0, MPI_SUM, run.window);
+    MPI_Win_unlock(0, run.window);
+    if (ticket >= long(run.order.size())) return std::nullopt;
+    return (*run.work->specs)[std::size_t(run.order[std::size_t(ticket)])];
+}
+
+// Rank 0 takes in whatever results the other ranks have sent, without waiting for more.
+void MpiDispatch::receive_pending(Run& run) {
+    for (int flag = 1; is_root() && flag;) {
+        MPI_Status status;
+        MPI_Iprobe(MPI_ANY_SOURCE, record_tag, MPI_COMM_WORLD, &flag, &status);
+        if (flag) receive_result(run, status);
+    }
+}
+
 std::size_t MpiDispatch::run(CaseWork& work) {
     Run run;
     run.work = &work;
     run.cases_per_rank.assign(std::size_t(size_), 0);
     try {
         run.order = agreed_order(work);
-        long* counter = nullptr;  // the hand-out cursor, in rank 0's memory
-        MPI_Win_allocate(is_root() ? MPI_Aint(sizeof(long)) : 0, sizeof(long), MPI_INFO_NULL, MPI_COMM_WORLD, &counter,
-                         &run.window);
-        if (is_root()) *counter = 0;
-        MPI_Barrier(MPI_COMM_WORLD);  // no rank claims before the cursor is zero
-        auto claim = [&]() -> std::optional<CaseSpec> {
-            const long one = 1;
-            long ticket = 0;
-            MPI_Win_lock(MPI_LOCK_SHARED, 0, 0, run.window);
-            MPI_Fetch_and_op(&one, &ticket, MPI_LONG, 0, 0, MPI_SUM, run.window);
-            MPI_Win_unlock(0, run.window);
-            if (ticket >= long(run.order.size())) return std::nullopt;
-            return (*work.specs)[std::size_t(run.order[std::size_t(ticket)])];
-        };
+        open_cursor(run);
         auto on_done = [&](const CaseResult& r) {
             if (is_root()) record(run, r, 0);
             else send_result(r, work);
         };
-        auto poll = [&] {  // rank 0 takes in the other ranks' results while its own cases run
-            for (int flag = 1; is_root() && flag;) {
-                MPI_Status status;
-                MPI_Iprobe(MPI_ANY_SOURCE, record_tag, MPI_COMM_WORLD, &flag, &status);
-                if (flag) receive_result(run, status);
-            }
-        };
-        run_isolated_claiming(work.isolation, claim, work.run_case, on_done, poll);
-        while (is_root() && run.done < run.order.size()) poll(), nap();
+        run_isolated_claiming(work.isolation, [&] { return claim(run); }, work.run_case, on_done,
+                              [&] { receive_pending(run); });
+        while (is_root() && run.done < run.order.size()) receive_pending(run), nap();
         wait_for_all_ranks();
         MPI_Win_free(&run.window);
     } catch (const std::exception& e) {

@@ -16,6 +16,7 @@
 
 #include <mpi.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,9 @@ private:
     struct Run;  // one run's state: the counter window, the order, rank 0's tallies
 
     std::vector<int> agreed_order(const CaseWork& work) const;
+    void open_cursor(Run& run) const;
+    std::optional<CaseSpec> claim(Run& run) const;
+    void receive_pending(Run& run);
     void send_result(const CaseResult& r, const CaseWork& work) const;
     void receive_result(Run& run, const MPI_Status& probed);
     void record(Run& run, CaseResult r, int from_rank);

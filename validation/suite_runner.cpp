@@ -118,7 +118,9 @@ SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& avail
     std::filesystem::create_directories(options.output_dir);
     const std::string result_dir = options.output_dir + "/cases";
     std::map<std::string, CaseResult> results;
-    if (options.resume) results = finished_results(specs, result_dir);
+    // MPI hook: rank 0 alone decides what is finished (every record is in its directory).
+    const bool judges = !options.dispatch || options.dispatch->is_root();
+    if (options.resume && judges) results = finished_results(specs, result_dir);
 
     SuiteOutcome outcome;
     outcome.cases_resumed = results.size();
