@@ -5,6 +5,9 @@
   resume_on_more_ranks    2 ranks killed part-way, resumed on 3, end equal to an uninterrupted
                           run, and no case finished before the kill runs again
   crash_on_rank_1         a case that aborts on rank 1 is recorded as crashed; the suite completes
+  unshared_directories    each rank in its own directory (as on nodes without a shared file
+                          system): rank 0's holds every record and, with --gather-hdf5, every
+                          HDF5 file; the result equals the serial run
 
 Each exits non-zero with a message when what it checks does not hold.
 """
@@ -156,9 +159,37 @@ def crash_on_rank_1(args, tmp):
         fail(f"{len(runs)} failed run checks for {crashed} crashed cases")
 
 
+def unshared_directories(args, tmp):
+    serial = os.path.join(tmp, "serial")
+    run([args.collide, "validate", args.suite, "--out", serial], 0)
+    homes = [os.path.join(tmp, f"node{k}") for k in range(2)]
+    for home in homes:
+        os.makedirs(home)
+    command = [args.collide, "validate", args.suite, "--out", "results", "--gather-hdf5"]
+    # MPMD form of mpirun: one rank per working directory, the same relative --out.
+    run([args.mpiexec, "--oversubscribe", "-np", "1", "-wdir", homes[0]] + command +
+        [":", "-np", "1", "-wdir", homes[1]] + command, 0)
+    root, other = (os.path.join(h, "results") for h in homes)
+    s = summary(root)
+    expect_same(summary(serial), s, "2 ranks in separate directories")
+    if os.path.exists(os.path.join(other, "summary.json")):
+        fail("rank 1 wrote a summary; only rank 0 writes one")
+    on_rank_1 = [c for c in s["cases"] if c["provenance"].get("rank") == "1"]
+    if not on_rank_1:
+        fail("rank 1 ran no case; the test proves nothing")
+    for c in s["cases"]:
+        for path in (c["result_file"], c["hdf5_file"]):
+            if path and not os.path.exists(os.path.join(root, path)):
+                fail(f"{c['id']} ran on rank {c['provenance'].get('rank')}: {path} is not in rank 0's directory")
+    for c in on_rank_1:
+        if not os.path.exists(os.path.join(other, c["hdf5_file"])):
+            fail(f"{c['id']}: rank 1 did not write {c['hdf5_file']} in its own directory")
+
+
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("test", choices=["two_ranks_equal_serial", "resume_on_more_ranks", "crash_on_rank_1"])
+    parser.add_argument("test", choices=["two_ranks_equal_serial", "resume_on_more_ranks", "crash_on_rank_1",
+                                           "unshared_directories"])
     parser.add_argument("--mpiexec", required=True)
     parser.add_argument("--collide", required=True)
     parser.add_argument("--driver", required=True)
