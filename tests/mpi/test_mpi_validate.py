@@ -92,6 +92,35 @@ def finished_files(out):
     return files
 
 
+def session_members(session):
+    """Processes of a session: mpirun puts each rank in a process group of its own, but they
+    all stay in the session of the mpirun that started them."""
+    members = []
+    for entry in os.listdir("/proc"):
+        try:
+            with open(f"/proc/{entry}/stat") as f:
+                fields = f.read().rsplit(")", 1)[1].split()
+        except (OSError, IndexError):
+            continue  # not a process, or gone since the listing
+        if fields[0] != "Z" and int(fields[3]) == session:  # state, ..., session id
+            members.append(int(entry))
+    return members
+
+
+def kill_session(session):
+    """SIGKILL to every process of the session, as a batch system ends a job, until none is left."""
+    deadline = time.monotonic() + 30
+    while (members := session_members(session)) and time.monotonic() < deadline:
+        for pid in members:
+            try:
+                os.kill(pid, signal.SIGKILL)
+            except ProcessLookupError:
+                pass
+        time.sleep(0.05)
+    if session_members(session):
+        fail("processes of the killed run are still alive after 30 s")
+
+
 def run_until_killed(command, out, after_records):
     """Starts `command` in its own session and kills all of it (SIGKILL, as at the end of an
     allocation) once `after_records` case records are in `out`."""
@@ -102,12 +131,11 @@ def run_until_killed(command, out, after_records):
         if process.poll() is not None:
             fail(f"the run ended (status {process.returncode}) before {after_records} cases finished")
         if time.monotonic() > deadline:
-            os.killpg(process.pid, signal.SIGKILL)
+            kill_session(process.pid)
             fail("no progress within 120 s")
         time.sleep(0.05)
-    os.killpg(process.pid, signal.SIGKILL)
+    kill_session(process.pid)  # the ranks' cases die with their ranks too (PR_SET_PDEATHSIG)
     process.wait()
-    time.sleep(1.0)  # cases of the killed ranks die with them (PR_SET_PDEATHSIG); let them go
 
 
 def resume_on_more_ranks(args, tmp):
