@@ -12,6 +12,7 @@ packages=(
   python3 python3-matplotlib python3-numpy python3-h5py
   python3-dev pybind11-dev python3-pybind11 python3-pytest
   chromium chromium-driver python3-selenium
+  libopenmpi-dev openmpi-bin
 )
 
 missing=()

@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -64,10 +65,15 @@ void stop_cases_and_die(std::map<pid_t, Child>& running, const IsolationOptions&
 }
 
 [[noreturn]] void child_main(const CaseSpec& spec, const IsolationOptions& options,
-                             const std::function<CaseResult(const CaseSpec&)>& run_case) {
+                             const std::function<CaseResult(const CaseSpec&)>& run_case, pid_t runner) {
     for (int s : stop_signals) ::signal(s, SIG_DFL);  // a case just ends; the parent cleans up
     // The child's output goes to its own log so that parallel cases do not interleave.
     const std::string log = options.result_dir + "/" + spec.id + ".log";
+    // A case must not outlive the runner that waits for it: when the runner is killed (an MPI
+    // job stopped by mpirun or at the end of its allocation), an orphan would go on writing
+    // into the output directory while a --resume run starts the same case again.
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != runner) ::_exit(4);  // the runner died before the line above took effect
     const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (fd >= 0) {
         ::dup2(fd, STDOUT_FILENO);
@@ -148,22 +154,39 @@ void remove_temporaries(const std::string& runs_dir, const std::string& result_d
 void run_isolated(const std::vector<CaseSpec>& specs, const IsolationOptions& options,
                   const std::function<CaseResult(const CaseSpec&)>& run_case,
                   const std::function<void(const CaseResult&)>& on_done) {
+    std::size_t next = 0;
+    auto claim = [&]() -> std::optional<CaseSpec> {
+        if (next == specs.size()) return std::nullopt;
+        return specs[next++];
+    };
+    run_isolated_claiming(options, claim, run_case, on_done);
+}
+
+void run_isolated_claiming(const IsolationOptions& options, const std::function<std::optional<CaseSpec>()>& claim,
+                           const std::function<CaseResult(const CaseSpec&)>& run_case,
+                           const std::function<void(const CaseResult&)>& on_done,
+                           const std::function<void()>& idle) {
     std::filesystem::create_directories(options.result_dir);
     std::map<pid_t, Child> running;
-    std::size_t next = 0;
+    bool claimed_all = false;
     stop_signal = 0;
     for (int s : stop_signals) ::signal(s, record_stop_signal);
     const auto limit = std::chrono::duration<double>(options.time_limit_seconds);
-    while (next < specs.size() || !running.empty()) {
+    while (!claimed_all || !running.empty()) {
         if (stop_signal) stop_cases_and_die(running, options);
-        while (next < specs.size() && running.size() < std::size_t(std::max(1, options.jobs))) {
-            const CaseSpec& spec = specs[next++];
-            std::filesystem::remove(result_path(options.result_dir, spec.id));
+        while (!claimed_all && running.size() < std::size_t(std::max(1, options.jobs))) {
+            const std::optional<CaseSpec> spec = claim();
+            if (!spec) {
+                claimed_all = true;
+                break;
+            }
+            std::filesystem::remove(result_path(options.result_dir, spec->id));
             std::fflush(nullptr);  // or the child would print the parent's buffered output again
+            const pid_t runner = ::getpid();
             const pid_t pid = ::fork();
             if (pid < 0) throw std::runtime_error(std::string("fork failed: ") + std::strerror(errno));
-            if (pid == 0) child_main(spec, options, run_case);
-            running[pid] = Child{spec, pid, Clock::now()};
+            if (pid == 0) child_main(*spec, options, run_case, runner);
+            running[pid] = Child{*spec, pid, Clock::now()};
         }
         int status = 0;
         const pid_t done = ::waitpid(-1, &status, WNOHANG);
@@ -178,6 +201,7 @@ void run_isolated(const std::vector<CaseSpec>& specs, const IsolationOptions& op
                 child.killed_for_time = true;
                 ::kill(pid, SIGKILL);
             }
+        idle();
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
     for (int s : stop_signals) ::signal(s, SIG_DFL);

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,15 @@ void remove_temporaries(const std::string& runs_dir, const std::string& result_d
 void run_isolated(const std::vector<CaseSpec>& specs, const IsolationOptions& options,
                   const std::function<CaseResult(const CaseSpec&)>& run_case,
                   const std::function<void(const CaseResult&)>& on_done);
+
+// The same with the cases handed out one at a time: `claim` gives the next case to start, or
+// nothing when none is left (the MPI runner claims from a counter that every rank shares,
+// mpi_dispatch.h); `idle` runs between polls of the children (the MPI runner's rank 0
+// receives the other ranks' results there, so they arrive while its own cases run).
+void run_isolated_claiming(const IsolationOptions& options, const std::function<std::optional<CaseSpec>()>& claim,
+                           const std::function<CaseResult(const CaseSpec&)>& run_case,
+                           const std::function<void(const CaseResult&)>& on_done,
+                           const std::function<void()>& idle = [] {});
 
 std::string result_path(const std::string& result_dir, const std::string& id);
 

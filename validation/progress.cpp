@@ -21,9 +21,11 @@ void Progress::update(std::size_t done, std::size_t failed, const std::string& l
     const double elapsed = std::chrono::duration<double>(now - start_).count();
     // ETA from the mean time per finished case; cases differ in cost, so it is a rough guide.
     const std::string eta = done ? format_duration(elapsed / double(done) * double(total_ - done)) : "?";
+    // The rate is what a run on more ranks or jobs should raise; it is read against the ETA.
+    const double per_minute = elapsed > 0 ? 60.0 * double(done) / elapsed : 0.0;
     char buf[512];
-    std::snprintf(buf, sizeof buf, "[%zu/%zu] elapsed %s, ETA %s, %zu failed  %s", done, total_,
-                  format_duration(elapsed).c_str(), eta.c_str(), failed, last_case.c_str());
+    std::snprintf(buf, sizeof buf, "[%zu/%zu] elapsed %s, ETA %s, %.1f cases/min, %zu failed  %s", done, total_,
+                  format_duration(elapsed).c_str(), eta.c_str(), per_minute, failed, last_case.c_str());
     last_line_ = buf;
     if (terminal_) {
         std::fprintf(stream_, "\r\033[K%s", buf);  // \033[K clears the rest of the old line

@@ -11,6 +11,7 @@
 #include <chrono>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "backend_variant.h"
@@ -184,10 +185,14 @@ SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& avail
     check_case_run_settings(suite, scenes, specs);
 
     std::filesystem::create_directories(options.output_dir);
-    const OutputDirectoryLock lock(options.output_dir);
+    // MPI hook: rank 0 alone decides what is finished (every record is in its directory), and
+    // alone holds the directory's lock (other ranks may share the directory).
+    const bool judges = !options.dispatch || options.dispatch->is_root();
+    std::optional<OutputDirectoryLock> lock;
+    if (judges) lock.emplace(options.output_dir);
     const std::string result_dir = options.output_dir + "/cases", runs_dir = options.output_dir + "/runs";
     std::map<std::string, CaseResult> results;
-    if (options.resume) {
+    if (options.resume && judges) {
         remove_temporaries(runs_dir, result_dir);  // left by a SIGKILL: no process cleaned them
         results = finished_results(specs, options.output_dir, options.progress);
     }
@@ -208,13 +213,25 @@ SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& avail
     std::unique_ptr<Progress> progress;
     if (options.progress) progress = std::make_unique<Progress>(to_run.size(), options.progress, options.progress_is_terminal);
     std::size_t done = 0, failed = 0;
-    run_isolated(to_run, isolation, run_case, [&](const CaseResult& r) {
-        ++done;
-        if (r.status != RunStatus::completed && r.status != RunStatus::left_out) ++failed;
-        results[r.spec.id] = r;
-        if (progress) progress->update(done, failed, r.spec.id);
-    });
+    // --- MPI hook (case_dispatch.h, docs/scaling.md): under an MPI launcher the ranks share
+    // the cases out and rank 0 receives every result; the other ranks stop here.
+    if (options.dispatch) {
+        auto cost = [&](const CaseSpec& s) {
+            return estimated_cost(s, case_scene(case_scenes.scene(s), suite.scenes[s.scene_index], s), results);
+        };
+        CaseWork work{&specs, &results, options.output_dir, isolation, run_case, cost, progress.get()};
+        options.dispatch->run(work);
+        if (!options.dispatch->is_root()) return outcome;
+    } else {  // --- end of the MPI hook
+        run_isolated(to_run, isolation, run_case, [&](const CaseResult& r) {
+            ++done;
+            if (r.status != RunStatus::completed && r.status != RunStatus::left_out) ++failed;
+            results[r.spec.id] = r;
+            if (progress) progress->update(done, failed, r.spec.id);
+        });
+    }
     if (progress) progress->finish();
+    outcome.execution = options.dispatch ? options.dispatch->execution() : serial_execution(options.jobs);
     outcome.cases_run = to_run.size();
 
     // Judge every case in plan order, then the comparisons with the reference.

@@ -10,9 +10,11 @@
 #pragma once
 
 #include <cstdio>
+#include <map>
 #include <string>
 #include <vector>
 
+#include "case_dispatch.h"
 #include "case_result.h"
 #include "checks.h"
 #include "core/backend_registry.h"
@@ -28,6 +30,7 @@ struct RunnerOptions {
     bool resume = false;            // keep every case that already has a result file
     std::FILE* progress = nullptr;  // progress lines go here (nullptr: none)
     bool progress_is_terminal = false;
+    CaseDispatch* dispatch = nullptr;  // MPI ranks share the cases (case_dispatch.h); null: this process alone
 };
 
 struct SuiteOutcome {
@@ -37,6 +40,7 @@ struct SuiteOutcome {
     std::vector<WorkPrecisionLine> work_precision;
     std::size_t cases_run = 0, cases_resumed = 0;
     double wall_seconds = 0;
+    std::map<std::string, std::string> execution;  // ranks, hosts, jobs per rank (summary provenance)
     std::size_t count(CheckStatus s) const;
     bool passed() const { return count(CheckStatus::fail) == 0; }
 };

@@ -174,6 +174,7 @@ void write_summary_json(const Suite& suite, const SuiteOutcome& outcome, const s
         .number("wall_seconds", outcome.wall_seconds).integer("cases_run", (long long)outcome.cases_run)
         .integer("cases_resumed", (long long)outcome.cases_resumed).field("counts", counts.str())
         .field("provenance", string_map(build_provenance())).text("command_line", command_line())
+        .field("execution", string_map(outcome.execution))
         .field("seeds", string_map(seeds)).field("scene_files", string_map(scene_files))
         .field("cases", cases_json(outcome))
         .field("checks", array(outcome.checks, check_json))

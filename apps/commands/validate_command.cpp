@@ -1,6 +1,7 @@
-// `collide validate SUITE [--out DIR] [--jobs N] [--resume]`: runs a validation suite
-// (validation/suites/*.toml) on every backend it names and writes DIR/summary.json,
-// DIR/junit.xml and one HDF5 file per case. Exit status 1 when any check fails.
+// `collide validate SUITE [--out DIR] [--jobs N] [--resume] [--gather-hdf5]`: runs a validation
+// suite (validation/suites/*.toml) on every backend it names and writes DIR/summary.json,
+// DIR/junit.xml and one HDF5 file per case. Exit status 1 when any check fails. Under mpirun
+// or srun the cases are shared across the ranks (docs/scaling.md).
 #include <unistd.h>
 
 #include <cstdio>
@@ -18,6 +19,7 @@ struct ValidateArgs {
     std::string out = "results";
     int jobs = 1;
     bool resume = false;
+    bool gather_hdf5 = false;
 };
 
 // CLI::PositiveNumber would say "not in range 0 to 1.8e308" for --jobs 0.
@@ -31,14 +33,21 @@ const CLI::Validator at_least_one_job(
     "N >= 1");
 
 void execute(const ValidateArgs& args) {
+    // --- MPI hook (docs/scaling.md): under mpirun or srun the ranks share the cases out and
+    // rank 0 alone reports; a plain run gets no dispatch and never initialises MPI.
+    const auto dispatch = validation::start_case_dispatch(args.jobs, args.gather_hdf5);
+    const bool reports = !dispatch || dispatch->is_root();
+    // --- end of the MPI hook
     const validation::Suite suite = validation::load_suite(args.suite_path);
     validation::RunnerOptions options;
     options.output_dir = args.out;
     options.jobs = args.jobs;
     options.resume = args.resume;
-    options.progress = stderr;
+    options.progress = reports ? stderr : nullptr;
     options.progress_is_terminal = ::isatty(STDERR_FILENO) != 0;
+    options.dispatch = dispatch.get();
     const auto outcome = validation::run_suite(suite, all_backends(), options);
+    if (!reports) return;
     std::printf("suite     %s: %zu cases (%zu run, %zu resumed) in %.1f s\n", suite.name.c_str(),
                 outcome.cases.size(), outcome.cases_run, outcome.cases_resumed, outcome.wall_seconds);
     std::printf("checks    %zu passed, %zu failed, %zu left out\n", outcome.count(validation::CheckStatus::pass),
@@ -70,6 +79,8 @@ void add_validate_command(CLI::App& app) {
     cmd->add_option("-j,--jobs", args->jobs, "Cases run at the same time (each in its own process)")
         ->check(at_least_one_job)->capture_default_str();
     cmd->add_flag("--resume", args->resume, "Keep the cases that already have a result in the output directory");
+    cmd->add_flag("--gather-hdf5", args->gather_hdf5,
+                  "Under MPI: copy every rank's per-case HDF5 files into rank 0's output directory");
     cmd->callback([args] { execute(*args); });
 }
 
