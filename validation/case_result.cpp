@@ -225,8 +225,22 @@ CaseResult read_case_result(const std::string& path) {
 
 namespace collide::validation {
 
+namespace {
+
+// This machine's name as MPI reports it (Open MPI's MPI_Get_processor_name is the host name).
+std::string this_host() {
+    char name[256] = {};
+    return ::gethostname(name, sizeof name - 1) == 0 ? std::string(name) : std::string();
+}
+
+}  // namespace
+
 std::string case_files_problem(const CaseResult& result, const std::string& output_dir) {
     if (result.hdf5_file.empty()) return "";
+    // A case run by an MPI rank on another node keeps its HDF5 file there (without
+    // --gather-hdf5); the record says where, and only that node could check the file.
+    const auto host = result.provenance.find("hdf5_host");
+    if (host != result.provenance.end() && host->second != this_host()) return "";
     const std::string path = output_dir + "/" + result.hdf5_file;
     if (!std::filesystem::is_regular_file(path)) return path + ": missing";
     silence_hdf5_error_printing();
