@@ -81,7 +81,9 @@ Json check_json(const CheckResult& c) {
 Json line_json(const WorkPrecisionLine& line) {
     Object o;
     o.text("scene", line.scene).text("backend", line.backend).text("error_kind", line.error_kind)
-        .number("order", line.order ? *line.order : std::nan("")).text("order_note", line.order_note);
+        .number("order", line.order ? *line.order : std::nan(""))
+        .number("order_standard_error", line.order_standard_error ? *line.order_standard_error : std::nan(""))
+        .text("order_note", line.order_note);
     o.field("points", array(line.points, [](const WorkPrecisionPoint& p) {
         Object q;
         q.text("group", p.group).number("dt", p.dt).integer("substeps", p.substeps)
