@@ -5,6 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <nlohmann/json.hpp>
+
 #include "bench_suite.h"
 #include "core/provenance.h"
 
@@ -21,19 +23,8 @@ std::string to_text(const Value& v) {
     return std::get<std::string>(v);
 }
 
-std::string json_string(const std::string& s) {
-    std::string out = "\"";
-    for (char c : s) {
-        if (c == '"' || c == '\\') out += '\\', out += c;
-        else if (c == '\n') out += "\\n";
-        else if (static_cast<unsigned char>(c) < 0x20) out += ' ';
-        else out += c;
-    }
-    return out + "\"";
-}
-
-std::string json_value(const Value& v) {
-    return std::holds_alternative<std::string>(v) ? json_string(std::get<std::string>(v)) : to_text(v);
+nlohmann::ordered_json json_value(const Value& v) {
+    return std::visit([](const auto& x) { return nlohmann::ordered_json(x); }, v);
 }
 
 }  // namespace
@@ -68,26 +59,21 @@ void BenchReport::write(const std::string& prefix) const {
         }
         csv << "\n";
     }
-    std::ostringstream json;
-    json << "{\n  \"suite\": " << json_string(suite_) << ",\n  \"provenance\": {";
-    first = true;
+    // Keys in the order suite, provenance, notes, rows; each row's keys sorted (Row is a map).
+    nlohmann::ordered_json json;
+    json["suite"] = suite_;
     auto prov = build_provenance();
     prov["command_line"] = command_line();
-    for (const auto& [k, v] : prov) json << (first ? "\n    " : ",\n    ") << json_string(k) << ": " << json_string(v), first = false;
-    json << "\n  },\n  \"notes\": [";
-    first = true;
-    for (const auto& n : notes_) json << (first ? "" : ", ") << json_string(n), first = false;
-    json << "],\n  \"rows\": [";
-    first = true;
+    json["provenance"] = nlohmann::ordered_json(prov);
+    json["notes"] = notes_;
+    json["rows"] = nlohmann::ordered_json::array();
     for (const auto& r : rows_) {
-        json << (first ? "\n    {" : ",\n    {");
-        bool f2 = true;
-        for (const auto& [k, v] : r) json << (f2 ? "" : ", ") << json_string(k) << ": " << json_value(v), f2 = false;
-        json << "}";
-        first = false;
+        nlohmann::ordered_json row = nlohmann::ordered_json::object();
+        for (const auto& [k, v] : r) row[k] = json_value(v);
+        json["rows"].push_back(row);
     }
-    json << "\n  ]\n}\n";
-    for (const auto& [ext, text] : {std::pair{".csv", csv.str()}, std::pair{".json", json.str()}}) {
+    const std::string json_text = json.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
+    for (const auto& [ext, text] : {std::pair{".csv", csv.str()}, std::pair{".json", json_text}}) {
         const std::string path = prefix + ext, tmp = path + ".tmp";
         std::ofstream f(tmp);
         f << text;

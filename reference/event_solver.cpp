@@ -492,11 +492,11 @@ void EventSolver::bring_to_now(std::uint32_t i) {
     // (A stone needs no exception: it has zero velocity and scenes with stones have no gravity,
     // so the lines below leave it where it is.)
     if (dt == 0) return;
-    // Free flight under uniform gravity: x(t) = x + v dt + g dt^2 / 2, v(t) = v + g dt.
-    disks_[i].x += (disks_[i].vx + 0.5 * gx_ * dt) * dt;
-    disks_[i].y += (disks_[i].vy + 0.5 * gy_ * dt) * dt;
-    disks_[i].vx += gx_ * dt;
-    disks_[i].vy += gy_ * dt;
+    // Free flight under uniform gravity: x(t) = x + (v + g dt / 2) dt, v(t) = v + g dt.
+    // (Each component is rounded as the scalar lines x += (vx + 0.5 gx dt) dt would be.)
+    const Vector2d g(gx_, gy_);
+    position_of(disks_[i]) += (velocity_of(disks_[i]) + 0.5 * g * dt) * dt;
+    velocity_of(disks_[i]) += g * dt;
 }
 
 void EventSolver::predict(std::uint32_t i) {
@@ -531,6 +531,10 @@ void EventSolver::earliest_pair(std::uint32_t i, Prediction& p, VisitCells&& vis
     else earliest_pair_in<false>(i, p, visit_cells);
 }
 
+// The innermost loop of the solver stays in scalars (no Eigen::Vector2d): its minimum image
+// is per component and the collision time (physics/collision_time.h) takes the components, so
+// vectors here would read no closer to the equations, in the loop where every instruction
+// counts.
 template <bool MinimumImage, typename VisitCells>
 void EventSolver::earliest_pair_in(std::uint32_t i, Prediction& p, VisitCells& visit_cells) const {
     const double xi = disks_[i].x, yi = disks_[i].y, vxi = disks_[i].vx, vyi = disks_[i].vy, ri = disks_[i].radius;
@@ -646,25 +650,24 @@ double EventSolver::restitution_now(double e, std::uint32_t i, std::uint32_t j) 
 void EventSolver::collide_pair(std::uint32_t i, std::uint32_t j) {
     bring_to_now(i);
     bring_to_now(j);
-    double dx = disks_[i].x - disks_[j].x, dy = disks_[i].y - disks_[j].y;
+    Vector2d d = position_of(disks_[i]) - position_of(disks_[j]);  // line of centres, d = x_i - x_j
     if (scene_.periodic()) {
-        dx = WallLaw<double>::minimum_image(dx, scene_.world.width());
-        dy = WallLaw<double>::minimum_image(dy, scene_.world.height());
+        d.x() = WallLaw<double>::minimum_image(d.x(), scene_.world.width());
+        d.y() = WallLaw<double>::minimum_image(d.y(), scene_.world.height());
     }
-    const double ux = disks_[i].vx - disks_[j].vx, uy = disks_[i].vy - disks_[j].vy;
-    const double b = dx * ux + dy * uy;  // d.u < 0: approaching
-    if (!(b < 0)) return;                // a grazing contact that round-off turned into a miss
-    const double d2 = dx * dx + dy * dy;
+    const Vector2d u = velocity_of(disks_[i]) - velocity_of(disks_[j]);  // relative velocity
+    const double b = d.dot(u);  // d.u < 0: approaching
+    if (!(b < 0)) return;       // a grazing contact that round-off turned into a miss
+    const double d2 = d.squaredNorm();
     const double wi = queue_.payload(i).inv_mass, wj = queue_.payload(j).inv_mass;
     const double e = restitution_now(scene_.physics.restitution, i, j);
-    // Normal impulse of a smooth collision with restitution e (contact_law.h, without the
+    // Normal impulse of a smooth collision with restitution e (contact_law.cl.h, without the
     // overlap correction and friction): J = -(1 + e) (u.n) / (w_i + w_j), n = d / |d|.
-    // Written as J n = g d with g = -(1 + e) (d.u) / (|d|^2 (w_i + w_j)).
+    // Written as J n = g d with g = -(1 + e) (d.u) / (|d|^2 (w_i + w_j)):
+    //   v_i' = v_i + w_i g d,   v_j' = v_j - w_j g d.
     const double g = -(1 + e) * b / (d2 * (wi + wj));
-    disks_[i].vx += wi * g * dx;
-    disks_[i].vy += wi * g * dy;
-    disks_[j].vx -= wj * g * dx;
-    disks_[j].vy -= wj * g * dy;
+    velocity_of(disks_[i]) += wi * g * d;
+    velocity_of(disks_[j]) -= wj * g * d;
     // Collision virial d.(J n) = g |d|^2 (the pressure, see stats()).
     virial_.add(g * d2);
     // Energy lost: (1 - e^2)/2 * mu (u.n)^2 with the reduced mass mu = 1/(w_i + w_j).

@@ -11,10 +11,13 @@
 #pragma once
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include "cell_list.h"
 #include "physics/collision_time.h"
@@ -125,6 +128,17 @@ private:
         CellLinks links;      // cell and neighbours in the cell (cell_list.h)
     };
     static_assert(sizeof(Disk) == 64);
+    // A disk's position and velocity as the vectors of the equations (views, no copies: x, y
+    // and vx, vy are adjacent). Eigen::Vector2d arithmetic rounds each component exactly as
+    // the scalar lines it replaces (one operation per component, in the same order, no FMA),
+    // so the trajectories are the same, bit for bit.
+    static_assert(offsetof(Disk, y) == offsetof(Disk, x) + sizeof(double) &&
+                  offsetof(Disk, vy) == offsetof(Disk, vx) + sizeof(double));
+    using Vector2d = Eigen::Vector2d;
+    static Eigen::Map<Vector2d> position_of(Disk& d) { return Eigen::Map<Vector2d>(&d.x); }
+    static Eigen::Map<const Vector2d> position_of(const Disk& d) { return Eigen::Map<const Vector2d>(&d.x); }
+    static Eigen::Map<Vector2d> velocity_of(Disk& d) { return Eigen::Map<Vector2d>(&d.vx); }
+    static Eigen::Map<const Vector2d> velocity_of(const Disk& d) { return Eigen::Map<const Vector2d>(&d.vx); }
 
     // Disks are numbered internally in cell order, not in the scene's order: every array below
     // indexed by disk uses the internal number. original_[i] is disk i's index in the scene.

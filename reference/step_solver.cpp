@@ -4,11 +4,16 @@
 #include <chrono>
 #include <stdexcept>
 
+#include <Eigen/Core>
+
 #include "core/phase_timer.h"
 #include "physics/step_schedule.h"
 #include "physics/stepping_laws.h"
 
 namespace collide {
+
+using Eigen::Vector2d;
+
 void StepSolver::load(const Scene& scene, const ParticleState<double>& initial) {
     if (initial.size() == 0) throw std::invalid_argument("step: the scene has no disks");
     if (!(scene.run.dt > 0)) throw std::invalid_argument("step: dt must be positive");
@@ -65,6 +70,11 @@ void StepSolver::compute_contact_deltas() {
     const bool periodic = scene_.periodic();
     const double lx = scene_.world.width(), ly = scene_.world.height();
     const double e = scene_.physics.restitution, mu = scene_.physics.friction;
+    // Disk k's position and velocity as the vectors of docs/stepping-rules.md (copies: the
+    // state is a structure of arrays). Vector2d arithmetic rounds each component as the scalar
+    // lines did, so the state hashes are unchanged.
+    auto position = [&s](std::size_t k) { return Vector2d(s.x[k], s.y[k]); };
+    auto velocity = [&s](std::size_t k) { return Vector2d(s.vx[k], s.vy[k]); };
     // Disks that receive two or more impulses in this pass: the Jacobi sum does not conserve
     // kinetic energy for them even at e = 1 (docs/stepping-rules.md, "Energy at e = 1").
     // Counting only; it changes no arithmetic.
@@ -73,17 +83,21 @@ void StepSolver::compute_contact_deltas() {
         dx_[i] = dy_[i] = dvx_[i] = dvy_[i] = 0;
         if (s.is_stone(i)) continue;  // a stone's share is always zero
         int impulses = 0;
-        grid_.for_each_candidate(s.x[i], s.y[i], [&](std::uint32_t j) {
+        const Vector2d x_i = position(i), v_i = velocity(i);
+        grid_.for_each_candidate(x_i.x(), x_i.y(), [&](std::uint32_t j) {
             if (j == i) return;
-            double sep_x = s.x[i] - s.x[j], sep_y = s.y[i] - s.y[j];
+            Vector2d separation = x_i - position(j);  // x_i - x_j, from j towards i
             if (periodic) {
-                sep_x = WallLaw<double>::minimum_image(sep_x, lx);
-                sep_y = WallLaw<double>::minimum_image(sep_y, ly);
+                separation.x() = WallLaw<double>::minimum_image(separation.x(), lx);
+                separation.y() = WallLaw<double>::minimum_image(separation.y(), ly);
             }
             const double contact = s.radius[i] + s.radius[j];
-            if (sep_x * sep_x + sep_y * sep_y >= contact * contact) return;
-            const auto d = ContactLaw<double>::delta(sep_x, sep_y, s.vx[i] - s.vx[j], s.vy[i] - s.vy[j],
-                                                     contact, s.inv_mass[i], s.inv_mass[j], e, mu);
+            if (separation.squaredNorm() >= contact * contact) return;  // |x_i - x_j| >= r_i + r_j: apart
+            const Vector2d u = v_i - velocity(j);  // relative velocity v_i - v_j
+            // The law itself is shared with the float and OpenCL rules (physics/contact_law.cl.h,
+            // C that OpenCL compiles too), so it takes the components.
+            const auto d = ContactLaw<double>::delta(separation.x(), separation.y(), u.x(), u.y(), contact,
+                                                     s.inv_mass[i], s.inv_mass[j], e, mu);
             dx_[i] += d.dx;
             dy_[i] += d.dy;
             dvx_[i] += d.dvx;
@@ -108,6 +122,9 @@ void StepSolver::apply_contact_deltas() {
     }
 }
 
+// The integration and wall passes stay in scalars: they update the structure-of-arrays state
+// one axis at a time (the wall law is per axis), and a Vector2d built and taken apart per disk
+// would not make v += (g - gamma v) h read any closer to the equation.
 void StepSolver::integrate_velocities(double h) {
     const double gx = scene_.physics.gravity_x, gy = scene_.physics.gravity_y;
     const double gamma = scene_.physics.damping;

@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake git pkg-config
   libeigen3-dev libbox2d-dev libgsl-dev libgtest-dev libhdf5-dev hdf5-tools
-  libtomlplusplus-dev libcli11-dev
+  libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
   ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers pocl-opencl-icd clinfo
   clang libclang-rt-14-dev libomp-dev
   python3 python3-matplotlib python3-numpy python3-h5py

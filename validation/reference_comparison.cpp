@@ -218,21 +218,26 @@ Comparisons compare_with_reference(const Suite& suite, const std::vector<CaseRes
                 lines[key] = {spec.scene, spec.backend,
                               entry.comparison == Comparison::trajectory ? "trajectory error / r_min"
                                                                          : "|Z - Z_ref| / Z_ref",
-                              {}, std::nullopt, ""};
+                              {}, std::nullopt, std::nullopt, ""};
             }
             lines[key].points.push_back(point);
         }
     }
     for (const auto& key : line_order) {
         WorkPrecisionLine line = lines[key];
-        std::vector<double> h, e;
+        std::vector<double> h, e, e_error;
         for (const auto& p : line.points) {
             // The rule's effective step is dt / substeps (the integrate-first rule sub-steps).
             h.push_back(p.dt / std::max(1, p.substeps));
             e.push_back(p.error);
+            e_error.push_back(p.error_standard_error);
         }
-        if (auto fit = log_log_fit(h, e, 3)) line.order = fit->slope;
-        else line.order_note = "needs at least 3 sweep points with distinct steps and non-zero error";
+        // The ordinary least-squares slope (every point alike, as docs/validation.md states the
+        // observed orders), with its standard error propagated from the points' error bars.
+        if (auto fit = log_log_fit(h, e, 3, e_error)) {
+            line.order = fit->slope;
+            line.order_standard_error = fit->slope_standard_error;
+        } else line.order_note = "needs at least 3 sweep points with distinct steps and non-zero error";
         out.work_precision.push_back(line);
     }
     return out;

@@ -30,6 +30,7 @@ struct WorkPrecisionLine {
     std::string error_kind;            // "trajectory error / r_min" or "|Z - Z_ref| / Z_ref"
     std::vector<WorkPrecisionPoint> points;
     std::optional<double> order;       // observed convergence order: slope of log error vs log dt
+    std::optional<double> order_standard_error;  // its standard error (statistics.h, log_log_fit)
     std::string order_note;            // why the order is not defined, when it is not
 };
 

@@ -4,19 +4,19 @@
 #include <cmath>
 #include <limits>
 
+#include <Eigen/Dense>
+#include <gsl/gsl_statistics_double.h>
+
 namespace collide::validation {
 
 MeanAndError mean_and_error(const std::vector<double>& samples) {
     MeanAndError r;
     r.count = samples.size();
     if (samples.empty()) return r;
-    double sum = 0;
-    for (double s : samples) sum += s;
-    r.mean = sum / double(r.count);
+    r.mean = gsl_stats_mean(samples.data(), 1, samples.size());
     if (r.count < 2) return r;
-    double squares = 0;
-    for (double s : samples) squares += (s - r.mean) * (s - r.mean);
-    r.standard_error = std::sqrt(squares / double(r.count - 1) / double(r.count));
+    // gsl_stats_sd_m: the sample standard deviation s (divisor n - 1) about the mean just found.
+    r.standard_error = gsl_stats_sd_m(samples.data(), 1, samples.size(), r.mean) / std::sqrt(double(r.count));
     return r;
 }
 
@@ -61,26 +61,57 @@ KolmogorovSmirnov ks_two_sample(std::vector<double> a, std::vector<double> b) {
 }
 
 std::optional<LineFit> log_log_fit(const std::vector<double>& x, const std::vector<double>& y,
-                                   std::size_t min_points) {
-    std::vector<double> lx, ly;
+                                   std::size_t min_points, const std::vector<double>& y_error, FitWeights weights) {
+    std::vector<double> lx, ly, sigma;  // sigma: the standard error of log(y), where known
+    bool have_errors = y_error.size() == y.size();
     for (std::size_t k = 0; k < std::min(x.size(), y.size()); ++k)
         if (x[k] > 0 && y[k] > 0 && std::isfinite(x[k]) && std::isfinite(y[k])) {
             lx.push_back(std::log(x[k]));
             ly.push_back(std::log(y[k]));
+            if (have_errors) {
+                const double s = y_error[k] / y[k];
+                if (s > 0 && std::isfinite(s)) sigma.push_back(s);
+                else have_errors = false;  // one point without an error bar: none are used
+            }
         }
-    if (lx.size() < std::max<std::size_t>(2, min_points)) return std::nullopt;
-    const double n = double(lx.size());
-    double mx = 0, my = 0;
-    for (std::size_t k = 0; k < lx.size(); ++k) mx += lx[k] / n, my += ly[k] / n;
-    double sxx = 0, sxy = 0;
-    for (std::size_t k = 0; k < lx.size(); ++k) {
-        sxx += (lx[k] - mx) * (lx[k] - mx);
-        sxy += (lx[k] - mx) * (ly[k] - my);
+    const std::size_t n = lx.size();
+    if (n < std::max<std::size_t>(2, min_points)) return std::nullopt;
+    if (std::all_of(lx.begin(), lx.end(), [&](double v) { return v == lx[0]; })) return std::nullopt;
+    const bool weighted = have_errors && weights == FitWeights::error_bars;
+
+    // Least squares for log y = intercept + slope log x: minimise |W (A c - b)|^2 with
+    // A = [1, log x], b = log y, W = diag(1 / sigma) when weighted, else the identity.
+    Eigen::MatrixXd a(n, 2);
+    Eigen::VectorXd b(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const double w = weighted ? 1 / sigma[k] : 1.0;
+        a(Eigen::Index(k), 0) = w;
+        a(Eigen::Index(k), 1) = w * lx[k];
+        b(Eigen::Index(k)) = w * ly[k];
     }
-    if (sxx == 0) return std::nullopt;
+    // Householder QR with column pivoting, not the normal equations, which square the
+    // condition number of A (the log x of close steps make nearly parallel columns).
+    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(a);
+    if (qr.rank() < 2) return std::nullopt;
+    const Eigen::Vector2d c = qr.solve(b);
+    const Eigen::Matrix2d inverse = (a.transpose() * a).inverse();
+    const double chi2 = (a * c - b).squaredNorm(), dof = double(n) - 2;
+    Eigen::Matrix2d covariance;  // of (intercept, slope)
+    if (weighted) {
+        covariance = inverse * (dof > 0 ? std::max(1.0, chi2 / dof) : 1.0);
+    } else if (have_errors) {
+        const Eigen::MatrixXd m = inverse * a.transpose();  // c = M b
+        const Eigen::VectorXd variance = Eigen::Map<const Eigen::VectorXd>(sigma.data(), Eigen::Index(n)).array().square();
+        covariance = m * variance.asDiagonal() * m.transpose();
+    } else {
+        covariance = inverse * (dof > 0 ? chi2 / dof : 0.0);
+    }
     LineFit fit;
-    fit.slope = sxy / sxx;
-    fit.intercept = my - fit.slope * mx;
+    fit.intercept = c(0);
+    fit.slope = c(1);
+    fit.intercept_standard_error = std::sqrt(covariance(0, 0));
+    fit.slope_standard_error = std::sqrt(covariance(1, 1));
+    fit.weighted = weighted;
     return fit;
 }
 

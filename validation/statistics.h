@@ -1,5 +1,6 @@
 // The small statistics toolbox of the validation suite: replicate means with standard errors,
 // the two-sample z-score and Kolmogorov-Smirnov test, and least-squares slopes on log-log data.
+// Means and standard deviations come from GSL (gsl_stats_*), the fits from Eigen.
 #pragma once
 
 #include <optional>
@@ -26,14 +27,30 @@ struct KolmogorovSmirnov {
 };
 KolmogorovSmirnov ks_two_sample(std::vector<double> a, std::vector<double> b);
 
-// Least-squares line y = intercept + slope x.
+// Least-squares line y = intercept + slope x, with the standard errors of its two coefficients.
 struct LineFit {
     double slope = 0, intercept = 0;
+    double slope_standard_error = 0, intercept_standard_error = 0;
+    bool weighted = false;  // whether the points' error bars weighted the fit
 };
 // Fits log(y) against log(x) over the points with x > 0 and y > 0: the observed order of
 // convergence when x is the time step and y the error. Empty with fewer than `min_points`
 // usable points or when all x are equal.
+//
+// y_error, if given (one per point), holds the points' standard errors; log(y) then has the
+// standard error y_error / y. They are used only if every usable point has one above zero:
+//  - FitWeights::none (the default): the ordinary least-squares line, every point alike (the
+//    observed orders in docs/validation.md are these), and its standard errors propagated
+//    from the error bars: c = M b with M = (A^T A)^-1 A^T, so cov(c) = M diag(sigma^2) M^T.
+//  - FitWeights::error_bars: weighted least squares (weight (y / y_error)^2), with the
+//    covariance (A^T W A)^-1 the error bars imply, scaled up by chi^2 / (n - 2) where the
+//    points scatter about the line more than their error bars say (the Birge ratio).
+// Without usable error bars the line is unweighted and its standard errors come from the
+// scatter alone (residual variance chi^2 / (n - 2)); with two points they are 0 (nothing
+// measures the scatter).
+enum class FitWeights { none, error_bars };
 std::optional<LineFit> log_log_fit(const std::vector<double>& x, const std::vector<double>& y,
-                                   std::size_t min_points = 3);
+                                   std::size_t min_points = 3, const std::vector<double>& y_error = {},
+                                   FitWeights weights = FitWeights::none);
 
 }  // namespace collide::validation

@@ -1,87 +1,59 @@
 #include "summary_writer.h"
 
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
+
+#include <nlohmann/json.hpp>
 
 #include "core/provenance.h"
 
 namespace collide::validation {
 namespace {
 
-std::string json_string(const std::string& s) {
-    std::string out = "\"";
-    for (unsigned char c : s) {
-        switch (c) {
-            case '"': out += "\\\""; break;
-            case '\\': out += "\\\\"; break;
-            case '\n': out += "\\n"; break;
-            case '\r': out += "\\r"; break;
-            case '\t': out += "\\t"; break;
-            default:
-                if (c < 0x20) {
-                    char buf[8];
-                    std::snprintf(buf, sizeof buf, "\\u%04x", c);
-                    out += buf;
-                } else {
-                    out += char(c);
-                }
-        }
-    }
-    return out + "\"";
-}
+// nlohmann::ordered_json keeps the keys in the order they are set, so the file lists them in
+// the order below (id, scene, backend, ...), as a reader expects. NaN and infinities, which
+// JSON lacks, are written as null (the report shows "n/a").
+using Json = nlohmann::ordered_json;
 
-// JSON has no NaN or Infinity: those become null (the report shows "n/a").
-std::string json_number(double v) {
-    if (!std::isfinite(v)) return "null";
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
-}
-
-// A JSON object written field by field.
+// A JSON object built field by field (the chained calls below read like the file they write).
 class Object {
 public:
-    Object& field(const std::string& key, const std::string& raw_json) {
-        text_ += (text_.empty() ? "" : ", ") + json_string(key) + ": " + raw_json;
+    Object& field(const std::string& key, Json value) {
+        json_[key] = std::move(value);
         return *this;
     }
-    Object& text(const std::string& key, const std::string& v) { return field(key, json_string(v)); }
-    Object& number(const std::string& key, double v) { return field(key, json_number(v)); }
-    Object& integer(const std::string& key, long long v) { return field(key, std::to_string(v)); }
-    Object& boolean(const std::string& key, bool v) { return field(key, v ? "true" : "false"); }
-    std::string str() const { return "{" + text_ + "}"; }
+    Object& text(const std::string& key, const std::string& v) { return field(key, v); }
+    Object& number(const std::string& key, double v) { return field(key, v); }
+    Object& integer(const std::string& key, long long v) { return field(key, v); }
+    Object& boolean(const std::string& key, bool v) { return field(key, v); }
+    const Json& json() const { return json_; }
 
 private:
-    std::string text_;
+    Json json_ = Json::object();
 };
 
 template <typename Range, typename ToJson>
-std::string array(const Range& items, ToJson&& to_json, const char* separator = ",\n  ") {
-    std::string out = "[";
-    bool first = true;
-    for (const auto& item : items) {
-        out += (first ? "" : separator) + to_json(item);
-        first = false;
-    }
-    return out + "]";
+Json array(const Range& items, ToJson&& to_json) {
+    Json out = Json::array();
+    for (const auto& item : items) out.push_back(to_json(item));
+    return out;
 }
 
-std::string string_map(const std::map<std::string, std::string>& m) {
+Json string_map(const std::map<std::string, std::string>& m) {
     Object o;
     for (const auto& [k, v] : m) o.text(k, v);
-    return o.str();
+    return o.json();
 }
 
-std::string case_json(const CaseResult& r, const Classification* c) {
+Json case_json(const CaseResult& r, const Classification* c) {
     Object o;
     o.text("id", r.spec.id).text("scene", r.spec.scene).text("backend", r.spec.backend)
         .boolean("reference", r.spec.reference).text("group", group_id(r.spec))
         .integer("seed", (long long)r.spec.seed).number("dt", r.dt).integer("substeps", r.substeps)
-        .field("iterations", r.spec.iterations ? std::to_string(*r.spec.iterations) : "null")
+        .field("iterations", r.spec.iterations ? Json(*r.spec.iterations) : Json(nullptr))
         .text("status", to_string(r.status)).text("diagnostic", r.diagnostic)
         .integer("disks", (long long)r.disks).number("duration", r.duration)
         .number("wall_seconds", r.wall_seconds).number("warmup_seconds", r.warmup_seconds)
@@ -90,15 +62,15 @@ std::string case_json(const CaseResult& r, const Classification* c) {
         .field("provenance", string_map(r.provenance));
     Object phases;
     for (const auto& [k, v] : r.phase_seconds) phases.number(k, v);
-    o.field("phase_seconds", phases.str());
+    o.field("phase_seconds", phases.json());
     Object parameters;  // path -> value of the scene-parameter sweep point
     for (const auto& [path, value] : r.spec.parameters) parameters.number(path, value);
-    o.field("parameters", parameters.str());
+    o.field("parameters", parameters.json());
     if (c) o.text("outcome", to_string(c->outcome)).text("outcome_reason", c->reason);
-    return o.str();
+    return o.json();
 }
 
-std::string check_json(const CheckResult& c) {
+Json check_json(const CheckResult& c) {
     Object o;
     o.text("subject", c.subject).text("scene", c.scene).text("backend", c.backend).text("check", c.check)
         .text("status", to_string(c.status)).number("value", c.value).number("tolerance", c.tolerance)
@@ -106,22 +78,24 @@ std::string check_json(const CheckResult& c) {
     // energy_drift of a stepped backend: the rule's predicted drift (energy_loss_model.h)
     if (!std::isnan(c.predicted))
         o.number("predicted", c.predicted).number("predicted_uncertainty", c.predicted_uncertainty);
-    return o.str();
+    return o.json();
 }
 
-std::string line_json(const WorkPrecisionLine& line) {
+Json line_json(const WorkPrecisionLine& line) {
     Object o;
     o.text("scene", line.scene).text("backend", line.backend).text("error_kind", line.error_kind)
-        .number("order", line.order ? *line.order : std::nan("")).text("order_note", line.order_note);
+        .number("order", line.order ? *line.order : std::nan(""))
+        .number("order_standard_error", line.order_standard_error ? *line.order_standard_error : std::nan(""))
+        .text("order_note", line.order_note);
     o.field("points", array(line.points, [](const WorkPrecisionPoint& p) {
         Object q;
         q.text("group", p.group).number("dt", p.dt).integer("substeps", p.substeps)
             .integer("iterations", p.iterations).number("seconds_per_time_unit", p.seconds_per_time_unit)
             .number("error", p.error).number("error_standard_error", p.error_standard_error)
             .integer("replicates", (long long)p.replicates);
-        return q.str();
-    }, ", "));
-    return o.str();
+        return q.json();
+    }));
+    return o.json();
 }
 
 // A full disk used to leave an empty file or PATH.partial behind; now it throws naming why.
@@ -141,13 +115,13 @@ std::string xml_escape(const std::string& s) {
     return out;
 }
 
-std::string cases_json(const SuiteOutcome& outcome) {
-    std::string out = "[";
+Json cases_json(const SuiteOutcome& outcome) {
+    Json out = Json::array();
     for (std::size_t k = 0; k < outcome.cases.size(); ++k) {
         const Classification* c = k < outcome.classifications.size() ? &outcome.classifications[k] : nullptr;
-        out += (k ? ",\n  " : "") + case_json(outcome.cases[k], c);
+        out.push_back(case_json(outcome.cases[k], c));
     }
-    return out + "]";
+    return out;
 }
 
 }  // namespace
@@ -172,14 +146,16 @@ void write_summary_json(const Suite& suite, const SuiteOutcome& outcome, const s
     root.text("suite", suite.name).boolean("stability", suite.stability).text("description", suite.description).text("suite_file", suite.source_path)
         .text("reference", suite.reference).boolean("passed", outcome.passed())
         .number("wall_seconds", outcome.wall_seconds).integer("cases_run", (long long)outcome.cases_run)
-        .integer("cases_resumed", (long long)outcome.cases_resumed).field("counts", counts.str())
+        .integer("cases_resumed", (long long)outcome.cases_resumed).field("counts", counts.json())
         .field("provenance", string_map(build_provenance())).text("command_line", command_line())
         .field("execution", string_map(outcome.execution))
         .field("seeds", string_map(seeds)).field("scene_files", string_map(scene_files))
         .field("cases", cases_json(outcome))
         .field("checks", array(outcome.checks, check_json))
         .field("work_precision", array(outcome.work_precision, line_json));
-    write_atomically(path, root.str() + "\n");
+    // Bytes that are not UTF-8 (in a path or a diagnostic) are replaced, not fatal: the summary
+    // of a suite that ran for hours must still be written.
+    write_atomically(path, root.json().dump(1, ' ', false, Json::error_handler_t::replace) + "\n");
 }
 
 void write_junit_xml(const Suite& suite, const SuiteOutcome& outcome, const std::string& path) {

@@ -2,6 +2,7 @@
 // exit code, its messages on stderr and the files it leaves behind are checked.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -140,6 +141,26 @@ TEST(RunCommand, H5dumpShowsMetricsAndProvenance) {
     for (const char* name : {"GROUP \"metrics\"", "DATASET \"kinetic_energy\"", "DATASET \"momentum_x\"",
                              "ATTRIBUTE \"git_commit\"", "ATTRIBUTE \"scene_text\"", "ATTRIBUTE \"seed\""})
         EXPECT_TRUE(contains(dump.out, name)) << "h5dump -H output lacks " << name;
+}
+
+// Box2D 2.4.1's library calls itself 2.4.0 (b2_version), and the build's Find module can tell
+// only 2.4: a box2d run must also name the installed package's version (cmake/build_info.cmake
+// reads it from pkg-config or dpkg at configure time), or its numbers cannot be traced to the
+// library that made them.
+TEST(RunCommand, Box2dRunRecordsTheInstalledPackageVersion) {
+    ScratchDirectory dir;
+    const std::string out = dir.file("x.h5");
+    const auto result = run_collide({"run", head_on_scene, "--backend", "box2d", "--out", out}, dir);
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    Hdf5File file(out);
+    ASSERT_TRUE(file.has_attribute("/", "box2d_package_version"));
+    const std::string package = file.string_attribute("/", "box2d_package_version");
+    EXPECT_EQ(package, BOX2D_PACKAGE_VERSION);
+    EXPECT_NE(package, "unknown") << "neither pkg-config nor dpkg knew the Box2D package at configure time";
+    // At least major.minor.patch: more than the "2.4" the headers alone can tell.
+    EXPECT_GE(std::count(package.begin(), package.end(), '.'), 2) << package;
+    // The library's own claim stays recorded beside it, under its own name.
+    EXPECT_TRUE(file.has_attribute("/", "backend_box2d_version"));
 }
 
 }  // namespace

@@ -36,6 +36,45 @@ TEST(Statistics, LogLogFitIsUndefinedWithTooFewDistinctPoints) {
     EXPECT_FALSE(log_log_fit({0.1, 0.05, 0.02}, {0, 0, 0}));
 }
 
+// Points exactly on a line with equal error bars s on log(y): the slope's standard error is the
+// textbook s / sqrt(sum (log x - mean log x)^2) (chi^2 = 0, so no Birge scaling).
+TEST(Statistics, WeightedLogLogFitGivesTheSlopesStandardErrorFromTheErrorBars) {
+    const std::vector<double> h = {0.1, 0.05, 0.025, 0.0125};
+    std::vector<double> e, e_error;
+    for (double dt : h) e.push_back(2.0 * dt), e_error.push_back(0.01 * 2.0 * dt);  // s = 0.01 in log(y)
+    double mean = 0, sxx = 0;
+    for (double dt : h) mean += std::log(dt) / 4;
+    for (double dt : h) sxx += (std::log(dt) - mean) * (std::log(dt) - mean);
+    // Equal error bars: the weighted and the ordinary fit are the same line, same error.
+    for (FitWeights weights : {FitWeights::error_bars, FitWeights::none}) {
+        const auto fit = log_log_fit(h, e, 3, e_error, weights);
+        ASSERT_TRUE(fit);
+        EXPECT_EQ(fit->weighted, weights == FitWeights::error_bars);
+        EXPECT_NEAR(fit->slope, 1.0, 1e-12);
+        EXPECT_NEAR(fit->slope_standard_error, 0.01 / std::sqrt(sxx), 1e-12);
+    }
+}
+
+// A point with a wide error bar barely moves a weighted fit; it pulls an unweighted one.
+TEST(Statistics, WeightedLogLogFitFollowsThePreciseOnes) {
+    const std::vector<double> h = {0.1, 0.05, 0.025, 0.0125};
+    const std::vector<double> e = {0.01, 0.0025, 0.000625, 0.0005};  // second order but the last point
+    const std::vector<double> precise_but_last = {1e-5, 2.5e-6, 6.25e-7, 0.0005};
+    const auto weighted = log_log_fit(h, e, 3, precise_but_last, FitWeights::error_bars);
+    const auto unweighted = log_log_fit(h, e, 3);
+    ASSERT_TRUE(weighted && unweighted);
+    EXPECT_NEAR(weighted->slope, 2.0, 0.01);
+    EXPECT_LT(unweighted->slope, 1.9);
+    EXPECT_FALSE(unweighted->weighted);
+    EXPECT_GT(unweighted->slope_standard_error, 0) << "the scatter about the line gives the error";
+    // One point without an error bar: no weights at all.
+    EXPECT_FALSE(log_log_fit(h, e, 3, {1e-5, 2.5e-6, 0, 0.0005}, FitWeights::error_bars)->weighted);
+    // The ordinary fit with error bars: the same line as without, its error from the bars.
+    const auto ordinary = log_log_fit(h, e, 3, precise_but_last);
+    EXPECT_DOUBLE_EQ(ordinary->slope, unweighted->slope);
+    EXPECT_NE(ordinary->slope_standard_error, unweighted->slope_standard_error);
+}
+
 TEST(Statistics, MeanAndStandardError) {
     const auto m = mean_and_error({1, 2, 3, 4});
     EXPECT_DOUBLE_EQ(m.mean, 2.5);
