@@ -1,8 +1,9 @@
 // Suite `throughput`: ParticleBox's headless benchmark made real. Every registered stepped
 // backend that supports the scene runs the benchmark gas (area fraction 0.3, collide-first)
-// for 240 fixed-timestep frames at N = 10^3 ... 10^6; `cpu` at 1 and 2 threads. A backend
-// stops at the first N where one frame takes longer than max_seconds / frames. The event
-// solver has its own suite (its cost is per collision, not per frame).
+// for 240 steps of dt (--steps; ParticleBox's 240 frames) at N = 10^3 ... 10^6; `cpu` at 1 and
+// 2 threads. A backend stops at the first N where one step takes longer than max_seconds /
+// steps. The event
+// solver has its own suite (its cost is per collision, not per step).
 #include <algorithm>
 #include <cstdio>
 
@@ -20,19 +21,19 @@ void run_throughput_suite(const BenchArgs& args, BenchReport& report) {
     std::vector<std::int64_t> sizes = args.sizes;
     if (sizes.empty()) sizes = args.quick ? std::vector<std::int64_t>{1000, 10000}
                                           : std::vector<std::int64_t>{1000, 10000, 100000, 1000000};
-    const double frame_limit = args.max_seconds_per_case / args.frames;
+    const double frame_limit = args.max_seconds_per_case / args.steps;
     for (const auto& backend : all_backends()) {
         if (backend.name == "event" || !wanted(args, backend.name)) continue;
         for (int threads : thread_counts(args, backend.name)) {
             for (std::int64_t n : sizes) {
-                const GasCase gas = gas_case(n);
+                const GasCase gas = bench_gas(n);
                 if (auto reason = backend.supports(gas.scene)) {
                     report.note(backend.name + " left out: " + *reason);
                     break;
                 }
                 BackendOptions options;
                 options.threads = threads;
-                const FrameTiming t = measure_frames(backend, options, gas, args.frames, frame_limit);
+                const FrameTiming t = measure_frames(backend, options, gas, args.steps, frame_limit);
                 if (t.stopped) {
                     char text[200];
                     std::snprintf(text, sizeof text, "%s (threads %s) stopped at N = %lld: one frame took %.3g s > %.3g s",
@@ -42,7 +43,7 @@ void run_throughput_suite(const BenchArgs& args, BenchReport& report) {
                     break;
                 }
                 Row row{{"backend", backend.name}, {"rule", "collide-first"}, {"area_fraction", 0.3},
-                        {"frames", std::int64_t(args.frames)}};
+                        {"steps", std::int64_t(args.steps)}};
                 add_timing(row, t, n);
                 report.add(row);
             }
