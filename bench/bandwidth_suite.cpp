@@ -72,13 +72,13 @@ void run_bandwidth_suite(const BenchArgs& args, BenchReport& report) {
     }
 
     const std::int64_t particles = !args.sizes.empty() ? args.sizes.back() : args.quick ? 100000 : 1000000;
-    const GasCase gas = gas_case(particles);
+    const GasCase gas = bench_gas(particles);
     // Cells of edge 2 r_max = 1 over the box (the grid's rule).
     const double cells = std::floor(gas.scene.world.width()) * std::floor(gas.scene.world.height());
     const double bytes = cpu_bytes_per_particle_step(cells / double(particles));
     BackendOptions options;
     options.threads = all;
-    const FrameTiming t = measure_frames(find_backend("cpu"), options, gas, args.quick ? 40 : args.frames, 1e9);
+    const FrameTiming t = measure_frames(find_backend("cpu"), options, gas, args.quick ? 40 : args.steps, 1e9);
     const double bound = bandwidth / bytes;
     Row row{{"measure", "cpu"}, {"bytes_per_particle_step", bytes}, {"triad_gb_per_s", bandwidth / 1e9},
             {"bound_particle_steps_per_s", bound}, {"fraction_of_bound", t.particle_steps_per_second / bound},

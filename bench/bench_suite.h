@@ -19,7 +19,7 @@ struct BenchArgs {
     std::vector<std::string> backends;  // empty: every backend the suite applies to
     std::vector<std::int64_t> sizes;    // particle counts; empty: the suite's default ladder
     std::vector<int> threads;           // thread counts to try; empty: the suite's default
-    int frames = 240;                   // fixed-timestep frames per scenario (ParticleBox's suite)
+    int steps = 240;                    // timed steps of dt per scenario (ParticleBox's suite: 240 frames)
     bool quick = false;                 // smaller ladder, for smoke tests
     double max_seconds_per_case = 60;   // a case whose first frame exceeds this is stopped
 };

@@ -16,45 +16,26 @@
 #include <string>
 
 #include "bench_suite.h"
+#include "core/gas_scene.h"
 #include "core/median.h"
 #include "reference/event_solver.h"
 
 namespace collide::bench {
 namespace {
 
-struct LatticeGas {
-    Scene scene;
-    ParticleState<double> state;
-};
-
 // n unit-mass disks of radius 1/2 on a square lattice in a periodic square box whose size
 // gives the requested area fraction phi = n pi r^2 / L^2; velocity components Gaussian with
-// unit variance (kT/m = 1), the centre-of-mass motion removed.
-LatticeGas lattice_gas(std::int64_t n, double area_fraction, std::uint64_t seed) {
-    const double radius = 0.5;
-    const double box = std::sqrt(double(n) * M_PI * radius * radius / area_fraction);
-    const std::int64_t columns = std::int64_t(std::ceil(std::sqrt(double(n))));
-    const double spacing = box / double(columns);
-    LatticeGas gas;
+// unit variance (kT/m = 1), the centre-of-mass motion removed (core/gas_scene.h).
+GasCase lattice_gas(std::int64_t n, double area_fraction, std::uint64_t seed) {
+    GasSceneSpec spec;
+    spec.count = n;
+    spec.area_fraction = area_fraction;
+    spec.seed = seed;
+    spec.boundary = Boundary::periodic;
+    spec.placement = GasPlacement::lattice;
+    spec.remove_drift = true;
+    GasCase gas = make_gas(spec);
     gas.scene.name = "event_bench";
-    gas.scene.seed = seed;
-    gas.scene.world = World{0, 0, box, box, Boundary::periodic};
-    gas.state.resize(std::size_t(n));
-    std::mt19937_64 rng(seed);
-    std::normal_distribution<double> gauss(0.0, 1.0);
-    double px = 0, py = 0;
-    for (std::int64_t k = 0; k < n; ++k) {
-        const std::size_t i = std::size_t(k);
-        gas.state.x[i] = (double(k % columns) + 0.5) * spacing;
-        gas.state.y[i] = (double(k / columns) + 0.5) * spacing;
-        gas.state.vx[i] = gauss(rng);
-        gas.state.vy[i] = gauss(rng);
-        gas.state.radius[i] = radius;
-        gas.state.mass[i] = gas.state.inv_mass[i] = 1.0;
-        px += gas.state.vx[i];
-        py += gas.state.vy[i];
-    }
-    for (std::size_t i = 0; i < gas.state.size(); ++i) gas.state.vx[i] -= px / double(n), gas.state.vy[i] -= py / double(n);
     return gas;
 }
 
@@ -112,9 +93,9 @@ SizeCase melted_case(std::int64_t n, double phi, bool quick) {
     c.per_window = measured / timing_windows;
     std::fprintf(stderr, "[event] N = %lld, area fraction %.1f: melting (%lld collisions)...\n",
                  static_cast<long long>(n), phi, static_cast<long long>(melt));
-    LatticeGas gas = lattice_gas(n, phi, 42);
+    GasCase gas = lattice_gas(n, phi, 42);
     c.solver = std::make_unique<EventSolver>();
-    c.solver->load(gas.scene, gas.state);
+    c.solver->load(gas.scene, gas.initial);
     // Melt the lattice: a few collisions per disk forget the initial order.
     c.melt_seconds = run_collisions(*c.solver, melt).seconds;
     c.before = c.solver->stats();

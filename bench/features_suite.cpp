@@ -56,21 +56,21 @@ void run_features_suite(const BenchArgs& args, BenchReport& report) {
         BackendOptions options;
         options.threads = threads;
         options.extra = {{"specialise", specialise}, {"sort_interval", std::to_string(sort_interval)}};
-        const FrameTiming t = measure_frames(cpu, options, gas, args.frames, no_limit);
+        const FrameTiming t = measure_frames(cpu, options, gas, args.steps, no_limit);
         Row row{{"backend", "cpu"}, {"feature", variant}, {"specialise", specialise},
-                {"sort_interval", std::int64_t(sort_interval)}, {"frames", std::int64_t(args.frames)},
+                {"sort_interval", std::int64_t(sort_interval)}, {"steps", std::int64_t(args.steps)},
                 {"rule", to_string(gas.scene.run.order)}};
         add_timing(row, t, n);
         report.add(row);
     };
     const int default_sort = cpu::CpuSolver::kDefaultSortInterval;
     for (const auto& v : variants()) {
-        GasCase gas = gas_case(n);
+        GasCase gas = bench_gas(n);
         v.apply(gas);
         run(v.name, gas, "on", default_sort);
         run(v.name, gas, "off", default_sort);
     }
-    const GasCase plain = gas_case(n);
+    const GasCase plain = bench_gas(n);
     for (int k : {0, 4, 16}) run("none", plain, "on", k);
     report.note("sort_interval K = particles moved into cell order at every K-th grid build, 0 = never; the default is " + std::to_string(default_sort));
 }

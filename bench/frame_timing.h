@@ -8,7 +8,7 @@
 
 #include "bench_suite.h"
 #include "core/backend_registry.h"
-#include "gas_scene.h"
+#include "bench_gas.h"
 
 namespace collide::bench {
 

@@ -5,13 +5,13 @@
 // grid, reorder, kernels. The `cpu` backend, when compiled in, runs the same scenes for
 // comparison.
 //
-// Scene: the benchmark gas of gas_scene.h at area fraction 0.3, the same as the `throughput`
+// Scene: the benchmark gas of bench_gas.h at area fraction 0.3, the same as the `throughput`
 // suite's, so that the two suites' figures compare directly.
 #include <algorithm>
 #include <cmath>
 
 #include "bench_suite.h"
-#include "gas_scene.h"
+#include "bench_gas.h"
 #include "core/backend_registry.h"
 
 namespace collide::bench {
@@ -34,7 +34,7 @@ std::string sort_interval_of(const Solver& solver) {
 // Runs one case and adds its row; returns the seconds per step.
 double measure(const BackendInfo& backend, const BackendOptions& options, const std::string& grid, std::int64_t n,
                const BenchArgs& args, BenchReport& report) {
-    const GasCase gas = gas_case(n);
+    const GasCase gas = bench_gas(n);
     const Scene& scene = gas.scene;
     const ParticleState<double>& initial = gas.initial;
     auto solver = backend.create(options);
@@ -43,8 +43,8 @@ double measure(const BackendInfo& backend, const BackendOptions& options, const 
     const int warmup = 2;
     solver->advance_to(warmup * scene.run.dt);
     const SolverStats before = solver->stats();
-    // Enough steps for about 2e7 particle-steps, within [3, frames] (fewer with --quick).
-    const int cap = args.quick ? std::min(args.frames, 10) : args.frames;
+    // Enough steps for about 2e7 particle-steps, within [3, steps] (fewer with --quick).
+    const int cap = args.quick ? std::min(args.steps, 10) : args.steps;
     const int steps = int(std::clamp<std::int64_t>(20'000'000 / n, 3, std::max(cap, 3)));
     const double seconds = time_seconds([&] { solver->advance_to((warmup + steps) * scene.run.dt); });
     const SolverStats after = solver->stats();

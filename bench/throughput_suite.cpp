@@ -1,9 +1,10 @@
 // Suite `throughput`: ParticleBox's headless benchmark made real. Every registered stepped
 // backend that supports the scene runs the benchmark gas (area fraction 0.3, collide-first)
-// for 240 fixed-timestep frames at N = 10^3 ... 10^6; `cpu` at 1 and 2 threads; `box2d` once
-// per preset (tuned and shipped, docs/box2d-baseline.md) so the speed cost of tuning shows. A
-// backend stops at the first N where one frame takes longer than max_seconds / frames. The
-// event solver has its own suite (its cost is per collision, not per frame).
+// for 240 steps of dt (--steps; ParticleBox's 240 frames) at N = 10^3 ... 10^6; `cpu` at 1 and
+// 2 threads; `box2d` once per preset (tuned and shipped, docs/box2d-baseline.md) so the speed
+// cost of tuning shows. A backend stops at the first N where one step takes longer than
+// max_seconds / steps. The event solver has its own suite (its cost is per collision, not per
+// step).
 #include <algorithm>
 #include <cstdio>
 
@@ -29,12 +30,12 @@ std::vector<Configuration> configurations(const std::string& backend) {
     return {{backend, {}}};
 }
 
-// One backend, configuration and thread count over the sizes, up to the first too-slow frame.
+// One backend, configuration and thread count over the sizes, up to the first too-slow step.
 void run_sizes(const BenchArgs& args, BenchReport& report, const BackendInfo& backend, const Configuration& config,
                int threads, const std::vector<std::int64_t>& sizes) {
-    const double frame_limit = args.max_seconds_per_case / args.frames;
+    const double frame_limit = args.max_seconds_per_case / args.steps;
     for (std::int64_t n : sizes) {
-        GasCase gas = gas_case(n);
+        GasCase gas = bench_gas(n);
         if (!config.options.empty()) gas.scene.backend_options[backend.name] = config.options;
         if (auto reason = backend.supports(gas.scene)) {
             report.note(config.label + " left out: " + *reason);
@@ -42,17 +43,17 @@ void run_sizes(const BenchArgs& args, BenchReport& report, const BackendInfo& ba
         }
         BackendOptions options;
         options.threads = threads;
-        const FrameTiming t = measure_frames(backend, options, gas, args.frames, frame_limit);
+        const FrameTiming t = measure_frames(backend, options, gas, args.steps, frame_limit);
         if (t.stopped) {
             char text[200];
-            std::snprintf(text, sizeof text, "%s (threads %s) stopped at N = %lld: one frame took %.3g s > %.3g s",
+            std::snprintf(text, sizeof text, "%s (threads %s) stopped at N = %lld: one step took %.3g s > %.3g s",
                           config.label.c_str(), t.threads.c_str(), static_cast<long long>(n), t.first_frame_seconds,
                           frame_limit);
             report.note(text);
             return;
         }
         Row row{{"backend", config.label}, {"rule", "collide-first"}, {"area_fraction", 0.3},
-                {"frames", std::int64_t(args.frames)}};
+                {"steps", std::int64_t(args.steps)}};
         add_timing(row, t, n);
         report.add(row);
     }

@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "cell_list.h"
+#include "cpu_cell_list.h"
 #include "core/solver.h"
 #include "feature_set.h"
 #include "phase_kernels.h"

@@ -11,7 +11,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "cell_list.h"
+#include "cpu_cell_list.h"
 #include "core/particle_state.h"
 #include "physics/stepping_laws.h"
 

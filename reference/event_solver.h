@@ -4,7 +4,7 @@
 //
 // Between events every disk flies freely (a straight line, a parabola under gravity). The
 // solver predicts, for every disk, its earliest event: a collision with a neighbour
-// (collision_time.h), a wall, or the crossing of a cell border (cell_list.h). It jumps to
+// (collision_time.h), a wall, or the crossing of a cell border (event_cell_list.h). It jumps to
 // the earliest event of all (event_queue.h), applies it, and re-predicts only the disks whose
 // course changed. Each disk carries its own clock (the time its position was last written),
 // so an event touches only the disks involved, whatever N is.
@@ -19,7 +19,7 @@
 
 #include <Eigen/Core>
 
-#include "cell_list.h"
+#include "event_cell_list.h"
 #include "physics/collision_time.h"
 #include "core/compensated_sum.h"
 #include "core/huge_page_allocator.h"
@@ -125,7 +125,7 @@ private:
         double t;             // the disk's clock
         double radius;
         std::uint32_t count;  // event counter: bumped whenever the disk changes course
-        CellLinks links;      // cell and neighbours in the cell (cell_list.h)
+        CellLinks links;      // cell and neighbours in the cell (event_cell_list.h)
     };
     static_assert(sizeof(Disk) == 64);
     // A disk's position and velocity as the vectors of the equations (views, no copies: x, y

@@ -29,6 +29,7 @@ double z_score(const MeanAndError& a, const MeanAndError& b) {
 
 namespace {
 // Q_KS(lambda) = 2 sum_{j>=1} (-1)^{j-1} exp(-2 j^2 lambda^2), the Kolmogorov distribution's tail.
+// (Hand-written: neither GSL nor Eigen offers the Kolmogorov distribution.)
 double kolmogorov_tail(double lambda) {
     if (lambda < 0.3) return 1.0;  // the series converges slowly here and the tail is ~1
     double sum = 0, sign = 1;

@@ -1,4 +1,4 @@
-// `collide bench [SUITE...] [--sizes ...] [--threads ...] [--out PREFIX]`
+// `collide bench [SUITE...] [--sizes ...] [--threads ...] [--steps N] [--out PREFIX]`
 #include <algorithm>
 #include <cstdint>
 #include <stdexcept>
@@ -26,7 +26,8 @@ void add_bench_command(CLI::App& app) {
     cmd->add_option("--backend", args->bench.backends, "Only these backends");
     cmd->add_option("--sizes", args->bench.sizes, "Particle counts (default: each suite's ladder)");
     cmd->add_option("--threads", args->bench.threads, "Thread counts to try");
-    cmd->add_option("--frames", args->bench.frames, "Fixed-timestep frames per scenario")->capture_default_str();
+    // (Not --frames: `collide run --frames` is a switch that stores states; here it is a count.)
+    cmd->add_option("--steps", args->bench.steps, "Timed steps of dt per scenario (stepping suites)")->capture_default_str();
     cmd->add_flag("--quick", args->bench.quick, "Small sizes only (smoke test)");
     cmd->add_option("--max-seconds", args->bench.max_seconds_per_case, "Stop a backend at the size where one case exceeds this")
         ->capture_default_str();

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "tests/support/program_runner.h"
 #include "tests/support/scratch_directory.h"
 
@@ -91,6 +93,26 @@ TEST(BenchCommand, EventSuiteWritesAConsistentTablePerAreaFractionAndSize) {
     std::stringstream text;
     text << json.rdbuf();
     EXPECT_TRUE(contains(text.str(), "\"git_commit\"")) << "the JSON carries the build's provenance";
+}
+
+// `--steps` is the count of timed steps (`run --frames` is a different thing: a switch that
+// stores states); the JSON beside the CSV is valid JSON with the same rows and the provenance.
+TEST(BenchCommand, StepsSetsTheTimedStepsAndTheJsonHoldsTheRows) {
+    ScratchDirectory dir;
+    const auto result = run_program(COLLIDE_EXECUTABLE, {"bench", "throughput", "--quick", "--sizes", "500", "--backend",
+                                                         "step", "--steps", "3", "-o", dir.file("b")}, dir);
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    const std::vector<CsvRow> rows = read_csv(dir.file("b-throughput.csv"));
+    ASSERT_EQ(rows.size(), 1u);
+    EXPECT_EQ(number(rows[0], "steps"), 3);
+    std::ifstream in(dir.file("b-throughput.json"));
+    const nlohmann::json json = nlohmann::json::parse(in);  // throws on invalid JSON
+    EXPECT_EQ(json.at("suite"), "throughput");
+    EXPECT_EQ(json.at("provenance").at("command_line").get<std::string>().find(COLLIDE_EXECUTABLE), 0u);
+    ASSERT_EQ(json.at("rows").size(), 1u);
+    EXPECT_EQ(json.at("rows")[0].at("steps"), 3);
+    EXPECT_EQ(json.at("rows")[0].at("backend"), "step");
+    EXPECT_EQ(json.at("rows")[0].at("n"), 500);
 }
 
 TEST(BenchCommand, UnknownSuiteFailsNamingItAndTheKnownOnesBeforeRunningAny) {

@@ -2,10 +2,12 @@
 // radius distributions against their analytic moments, lattice geometry, determinism.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "core/gas_scene.h"
+#include "core/metrics.h"
 #include "core/scene_loader.h"
 #include "core/state_hash.h"
 #include "tests/support/test_scenes.h"
@@ -308,6 +310,48 @@ TEST(GasScene, RejectsAnAreaFractionBeyondJamming) {
     spec.area_fraction = 0.3;
     spec.count = 0;
     EXPECT_THROW(make_gas_scene(spec), SceneError);
+}
+
+// The lattice placement reaches area fractions random placement cannot (up to pi/4), keeps
+// every disk apart with its jitter, and can remove the centre-of-mass drift.
+TEST(GasScene, LatticePlacementHoldsDenseGasesWithoutOverlap) {
+    GasSceneSpec spec;
+    spec.count = 1000;
+    spec.area_fraction = 0.7;
+    spec.placement = GasPlacement::lattice;
+    spec.boundary = Boundary::periodic;
+    spec.remove_drift = true;
+    const GasCase gas = make_gas(spec);
+    ASSERT_EQ(gas.initial.size(), 1000u);
+    const double area = gas.scene.world.width() * gas.scene.world.height();
+    EXPECT_NEAR(1000 * pi * 0.25 / area, 0.7, 1e-12);
+    double px = 0, py = 0;
+    for (std::size_t i = 0; i < gas.initial.size(); ++i) px += gas.initial.vx[i], py += gas.initial.vy[i];
+    EXPECT_NEAR(px, 0, 1e-10);
+    EXPECT_NEAR(py, 0, 1e-10);
+    EXPECT_EQ(compute_metrics(gas.scene, gas.initial, 0.0).overlapping_pairs, 0);
+
+    // Jittered, shuffled, uniform velocities (the benchmarks' gas): still apart, velocities
+    // within the bound, and not listed row by row.
+    spec.area_fraction = 0.3;
+    spec.boundary = Boundary::reflect;
+    spec.jitter = spec.shuffle = spec.uniform_velocities = true;
+    spec.remove_drift = false;
+    const GasCase jittered = make_gas(spec);
+    EXPECT_EQ(compute_metrics(jittered.scene, jittered.initial, 0.0).overlapping_pairs, 0);
+    for (std::size_t i = 0; i < jittered.initial.size(); ++i) EXPECT_LE(std::fabs(jittered.initial.vx[i]), 1.0);
+    EXPECT_FALSE(std::is_sorted(jittered.initial.y.begin(), jittered.initial.y.end())) << "shuffled";
+}
+
+TEST(GasScene, LatticeRefusesWhatASquareLatticeCannotHold) {
+    GasSceneSpec spec;
+    spec.placement = GasPlacement::lattice;
+    spec.area_fraction = 0.8;  // beyond pi/4
+    EXPECT_THROW(make_gas(spec), SceneError);
+    spec.area_fraction = 0.5;
+    spec.aspect = 2;
+    EXPECT_THROW(make_gas(spec), SceneError);
+    EXPECT_THROW(make_gas_scene(spec), SceneError) << "a lattice gas has no scene of its own";
 }
 
 }  // namespace

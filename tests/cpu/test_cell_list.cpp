@@ -8,7 +8,7 @@
 #include <numeric>
 #include <random>
 
-#include "cpu/cell_list.h"
+#include "cpu/cpu_cell_list.h"
 
 namespace collide {
 namespace {

@@ -1,4 +1,4 @@
-#include "cell_list.h"
+#include "cpu_cell_list.h"
 
 #include <algorithm>
 #include <stdexcept>
