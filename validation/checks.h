@@ -15,6 +15,7 @@
 //   speed_distribution   two-sample Kolmogorov-Smirnov p-value of final speeds vs the reference
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,8 @@ struct CheckResult {
     double tolerance = 0;
     std::string comparison = "<=";  // how value relates to tolerance for a pass ("<=" or ">=")
     std::string detail;             // failure message or left-out reason
+    std::optional<double> predicted;              // what a model of the rule expects (value's quantity or a difference)
+    std::optional<double> predicted_uncertainty;  // its one-standard-deviation uncertainty
 };
 
 // The checks of one case on its own (run, conservation, overlaps).

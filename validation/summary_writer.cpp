@@ -103,6 +103,8 @@ std::string check_json(const CheckResult& c) {
     o.text("subject", c.subject).text("scene", c.scene).text("backend", c.backend).text("check", c.check)
         .text("status", to_string(c.status)).number("value", c.value).number("tolerance", c.tolerance)
         .text("comparison", c.comparison).text("detail", c.detail);
+    if (c.predicted) o.number("predicted", *c.predicted);
+    if (c.predicted_uncertainty) o.number("predicted_uncertainty", *c.predicted_uncertainty);
     return o.str();
 }
 
