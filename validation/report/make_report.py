@@ -285,6 +285,13 @@ def predicted_text(c, percent=False):
         unc = f" ± {100 * u:.2g}" if isinstance(u, (int, float)) else ""
         verb = "loses" if (v or 0) >= 0 else "gains"  # the drift is recorded as a loss
         return f"{verb} {100 * abs(v):.2g} % where the rule is expected to lose {100 * p:.2g}{unc} %"
+    if c.get("check") in ("pressure", "collision_rate"):
+        # The value is then the distance from the predicted difference in standard deviations;
+        # the prediction is the stepped rule's bias against the reference (Z, or collisions per
+        # disk per time), signed.
+        unc = f" ± {u:.2g}" if isinstance(u, (int, float)) else ""
+        what = "Z" if c["check"] == "pressure" else "the rate"
+        return f"the rule is expected to shift {what} by {p:+.3g}{unc} from the reference"
     return f"expected {fmt(p)}" + (f" ± {fmt(u)}" if isinstance(u, (int, float)) else "")
 
 
