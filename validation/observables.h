@@ -17,7 +17,10 @@ namespace collide::validation {
 // The estimator's bias is O(shell) and the same for every backend, so a comparison between
 // backends is fair; it is not a precision equation of state. Returns NaN for polydisperse
 // states (no single sigma) or fewer than two disks.
-double compressibility_factor(const Scene& scene, const ParticleState<double>& state, double shell = 0.05);
+// The shell fraction s of the contact-value estimator: pairs closer than sigma (1 + s) count.
+inline constexpr double contact_shell = 0.05;
+double compressibility_factor(const Scene& scene, const ParticleState<double>& state,
+                              double shell = contact_shell);
 
 // |v| of every mobile disk.
 std::vector<double> speeds(const ParticleState<double>& state);

@@ -75,7 +75,8 @@ Json check_json(const CheckResult& c) {
     o.text("subject", c.subject).text("scene", c.scene).text("backend", c.backend).text("check", c.check)
         .text("status", to_string(c.status)).number("value", c.value).number("tolerance", c.tolerance)
         .text("comparison", c.comparison).text("detail", c.detail);
-    // energy_drift of a stepped backend: the rule's predicted drift (energy_loss_model.h)
+    // a stepped backend's energy drift, pressure or collision rate: what the rule's model predicts
+    // (energy_loss_model.h, statistics_bias_model.h)
     if (!std::isnan(c.predicted))
         o.number("predicted", c.predicted).number("predicted_uncertainty", c.predicted_uncertainty);
     return o.json();

@@ -6,6 +6,7 @@ usage: test_report_data.py RESULTS_DIR
 """
 import copy
 import json
+import math
 import os
 import shutil
 import subprocess
@@ -89,6 +90,43 @@ class OrderFit(unittest.TestCase):
         fit = digest.fit_order([{"dt": 2.0 ** -k, "error": 3 * 4.0 ** -k} for k in range(5)], "step")
         self.assertAlmostEqual(fit["order"], 2.0, places=6)
         self.assertIsNone(fit["floor"])
+
+    def test_statistical_noise_is_no_floor(self):
+        # Z errors of a first-order bias over a narrow dt range: the finest point lies above the
+        # coarser one, but well within its error bars, so the descent still explains it.
+        pts = [{"dt": 6e-3, "error": 0.0100, "se": 0.0019}, {"dt": 4.8e-3, "error": 0.0080, "se": 0.0020},
+               {"dt": 4e-3, "error": 0.0086, "se": 0.0022}]
+        fit = digest.fit_order(pts, "step")
+        self.assertIsNone(fit["floor"])
+        self.assertEqual(fit["used"], 3)
+        self.assertTrue(fit["statistical"])
+        # Without the error bars the same numbers would be read as a floor.
+        bare = digest.fit_order([{"dt": p["dt"], "error": p["error"]} for p in pts], "step")
+        self.assertIsNotNone(bare["floor"])
+
+    def test_significant_statistical_rise_is_a_floor(self):
+        pts = [{"dt": 8e-3, "error": 0.016, "se": 0.001}, {"dt": 4e-3, "error": 0.008, "se": 0.001},
+               {"dt": 2e-3, "error": 0.004, "se": 0.0005}, {"dt": 1e-3, "error": 0.012, "se": 0.001}]
+        fit = digest.fit_order(pts, "cpu")
+        self.assertEqual(fit["floor"]["dt"], 2e-3)
+        self.assertAlmostEqual(fit["order"], 1.0, places=6)
+
+    def test_order_error_bar_from_the_points(self):
+        # Exact first-order points with 10 % log-space error bars at h = 1, 1/2, 1/4: the weighted
+        # slope's standard error is 0.1 / sqrt(sum (x - mean x)^2) = 0.1 / (ln 2 * sqrt(2)).
+        pts = [{"dt": 2.0 ** -k, "error": 2.0 ** -k, "se": 0.1 * 2.0 ** -k} for k in range(3)]
+        fit = digest.fit_order(pts, "step")
+        self.assertAlmostEqual(fit["order"], 1.0, places=9)
+        self.assertAlmostEqual(fit["order_se"], 0.1 / (math.log(2) * math.sqrt(2)), places=9)
+        self.assertIn("1.00 ± 0.10", digest.describe_order(fit))
+
+    def test_box2d_floor_is_its_tolerances_not_rounding(self):
+        errors = {4e-3: 1.6, 2e-3: 1.6, 1e-3: 1.61, 5e-4: 1.6}
+        fit = digest.fit_order([{"dt": dt, "error": e} for dt, e in errors.items()], "box2d[shipped]")
+        self.assertEqual(fit["floor"]["kind"], "solver floor")
+        text = digest.describe_floor(fit["floor"])
+        self.assertIn("Box2D's tolerances", text)
+        self.assertNotIn("rounding", text)
 
     def test_too_few_points(self):
         fit = digest.fit_order([{"dt": 1e-3, "error": 1e-3}, {"dt": 5e-4, "error": 5e-4}])

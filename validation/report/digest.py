@@ -244,41 +244,86 @@ def reference_cost(summary, scene):
 # Convergence order on the asymptotic range, with the error floor named
 
 FLAT_SLOPE = 0.3  # below this local order the error has stopped falling with dt
+FLOOR_SE = 2.0    # a statistical point lies on a floor only if it sits this many SE above the descent
+
+
+def floor_kind(backend):
+    """What sets an error floor: rounding for the float rules, Box2D's own tolerances (linear slop,
+    restitution threshold, its iterations) for Box2D, otherwise the method itself."""
+    base = base_backend(backend)
+    if base == "box2d":
+        return "solver floor"
+    return "float floor" if is_float(backend) else "error floor"
+
+
+def _flat(e_prev, e, h_prev, h, se_prev=None, se=None):
+    """Whether the error stopped falling from one point to the next, finer one. With standard
+    errors (statistical observables), only when the finer point lies significantly (FLOOR_SE
+    combined SE) above the order-FLAT_SLOPE descent from the coarser one: a noisy point that the
+    descent still explains is no floor."""
+    if h_prev == h:
+        return True
+    slope = math.log(e_prev / e) / math.log(h_prev / h)
+    if slope >= FLAT_SLOPE:
+        return False
+    if se is None or se_prev is None:
+        return True
+    descent = e_prev * (h / h_prev) ** FLAT_SLOPE
+    return e - descent > FLOOR_SE * math.hypot(se, se_prev * (h / h_prev) ** FLAT_SLOPE)
+
+
+def _log_slope(h, e, se=None):
+    """Least-squares slope of log e against log h, and its standard error: weighted by the points'
+    log-space error bars se/e where they have them (sigma of the slope from those bars), otherwise
+    the unweighted fit's residual-based standard error (None with fewer than 3 points)."""
+    x = [math.log(v) for v in h]
+    y = [math.log(v) for v in e]
+    w = [1.0 / (s / v) ** 2 if s else 1.0 for s, v in zip(se, e)] if se and all(se) else [1.0] * len(x)
+    sw = sum(w)
+    mx = sum(wi * a for wi, a in zip(w, x)) / sw
+    my = sum(wi * b for wi, b in zip(w, y)) / sw
+    sxx = sum(wi * (a - mx) ** 2 for wi, a in zip(w, x))
+    slope = sum(wi * (a - mx) * (b - my) for wi, a, b in zip(w, x, y)) / sxx
+    if se and all(se):
+        return slope, math.sqrt(1.0 / sxx)
+    if len(x) < 3:
+        return slope, None
+    resid = sum((b - my - slope * (a - mx)) ** 2 for a, b in zip(x, y)) / (len(x) - 2)
+    return slope, math.sqrt(resid / sxx)
 
 
 def fit_order(points, backend="", min_points=3):
-    """points: [{'dt', 'substeps'?, 'error'}] (any order). Sorted from coarse to fine, the
+    """points: [{'dt', 'substeps'?, 'error', 'se'?}] (any order). Sorted from coarse to fine, the
     asymptotic range ends where the error stops falling: the first point after which every
     local slope log(e_i-1 / e_i) / log(h_i-1 / h_i) is below FLAT_SLOPE (the error flattens or
-    rises as dt shrinks). The order is the least-squares slope of log error against log h on
-    that range; the points below it are the floor. Returns
-    {'order', 'used', 'floor': {'dt', 'error', 'excluded'} or None, 'note'}."""
+    rises as dt shrinks; for points with standard errors, only where that is significant, see
+    _flat). The order is the least-squares slope of log error against log h on that range
+    (weighted by the error bars where there are some), with its standard error; the points below
+    it are the floor. Returns {'order', 'order_se', 'used', 'floor': {'dt', 'error', 'excluded',
+    'kind'} or None, 'note'}."""
     pts = sorted((p for p in points if p.get("error") and p["error"] > 0 and math.isfinite(p["error"])),
                  key=lambda p: -p["dt"] / max(1, p.get("substeps", 1) or 1))
     h = [p["dt"] / max(1, p.get("substeps", 1) or 1) for p in pts]
     e = [p["error"] for p in pts]
+    se = [p.get("se") for p in pts]
     n = len(pts)
     end = n  # asymptotic range: pts[0:end]
     if n >= 2:
-        slopes = [math.log(e[i - 1] / e[i]) / math.log(h[i - 1] / h[i]) if h[i - 1] != h[i] else 0.0
-                  for i in range(1, n)]
-        # slopes[i - 1] is the slope into point i; find the smallest k with all later slopes flat
+        flat = [_flat(e[i - 1], e[i], h[i - 1], h[i], se[i - 1], se[i]) for i in range(1, n)]
+        # flat[i - 1] is about the step into point i; find the smallest k with all later steps flat
         for k in range(0, n - 1):
-            if all(s < FLAT_SLOPE for s in slopes[k:]):
+            if all(flat[k:]):
                 end = k + 1
                 break
     floor = None
     if end < n:
         floor = {"dt": pts[end - 1]["dt"], "error": e[end - 1], "excluded": n - end,
-                 "finest": {"dt": pts[-1]["dt"], "error": e[-1]},
-                 "kind": "float floor" if is_float(backend) else "error floor"}
+                 "finest": {"dt": pts[-1]["dt"], "error": e[-1]}, "kind": floor_kind(backend)}
     used = pts[:end]
-    result = {"order": None, "used": len(used), "points": n, "floor": floor, "note": ""}
+    result = {"order": None, "order_se": None, "used": len(used), "points": n, "floor": floor, "note": ""}
     if len(used) >= min_points and len({h[i] for i in range(end)}) >= min_points:
-        x = [math.log(v) for v in h[:end]]
-        y = [math.log(v) for v in e[:end]]
-        mx, my = sum(x) / len(x), sum(y) / len(y)
-        result["order"] = sum((a - mx) * (b - my) for a, b in zip(x, y)) / sum((a - mx) ** 2 for a in x)
+        result["order"], result["order_se"] = _log_slope(h[:end], e[:end], se[:end])
+        result["statistical"] = all(se[:end])  # order_se from the points' error bars
     elif len(used) == 2 and h[0] != h[1]:
         result["two_point"] = math.log(e[0] / e[1]) / math.log(h[0] / h[1])
         result["note"] = f"2 points above the floor (slope {result['two_point']:.2f} between them)"
@@ -287,15 +332,21 @@ def fit_order(points, backend="", min_points=3):
     return result
 
 
+FLOOR_CAUSE = {"float floor": "; rounding accumulates below it",
+               "solver floor": "; Box2D's tolerances (linear slop, restitution threshold), not dt, set it"}
+
+
 def describe_floor(floor):
     return (f"{floor['kind']} from dt ≈ {floor['dt']:g} at error ≈ {floor['error']:.2g} "
             f"({floor['finest']['error']:.2g} at dt = {floor['finest']['dt']:g})"
-            + ("; rounding accumulates below it" if floor["kind"] == "float floor" else ""))
+            + FLOOR_CAUSE.get(floor["kind"], ""))
 
 
 def describe_order(fit):
     if fit["order"] is not None:
         text = f"{fit['order']:.2f}"
+        if fit.get("statistical") and fit.get("order_se") is not None:
+            text += f" ± {fit['order_se']:.2f}"  # a statistical order carries its error bar
         if fit["floor"]:
             text += f" (on {fit['used']} of {fit['points']} points)"
         return text
@@ -333,7 +384,7 @@ def order_summary(fits):
     if not orders:
         return "n/a"
     if len(orders) == 1:
-        return f"{orders[0]:.2f}"
+        return describe_order(next(f for f in fits if f["order"] is not None)).split(" (on")[0]
     return f"{min(orders):.2f}–{max(orders):.2f} ({len(orders)} scenes)"
 
 

@@ -286,6 +286,13 @@ def predicted_text(c, percent=False):
         # The drift is max_t |K(t) - K(0)| / K(0): multi-contact steps change K by either sign
         # (docs/stepping-rules.md, "Energy at e = 1"), so the model predicts its size, not a sign.
         return f"drifts {100 * abs(v or 0):.2g} % where the rule is expected to drift {100 * p:.2g}{unc} %"
+    if c.get("check") in ("pressure", "collision_rate"):
+        # The value is then the distance from the predicted difference in standard deviations;
+        # the prediction is the stepped rule's bias against the reference (Z, or collisions per
+        # disk per time), signed.
+        unc = f" ± {u:.2g}" if isinstance(u, (int, float)) else ""
+        what = "Z" if c["check"] == "pressure" else "the rate"
+        return f"the rule is expected to shift {what} by {p:+.3g}{unc} from the reference"
     return f"expected {fmt(p)}" + (f" ± {fmt(u)}" if isinstance(u, (int, float)) else "")
 
 

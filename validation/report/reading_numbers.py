@@ -10,6 +10,7 @@ usage: reading_numbers.py RESULTS_DIR DOC.md            rewrite the values in DO
        reading_numbers.py RESULTS_DIR DOC.md --check    exit 1 listing every value that differs
        reading_numbers.py RESULTS_DIR DOC.md --keys     exit 1 if DOC.md names a key not computed
 """
+import math
 import os
 import re
 import sys
@@ -17,7 +18,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import digest  # noqa: E402
 
-MARKER = re.compile(r"<!--n:([a-z0-9_.]+)-->(.*?)<!--/n-->", re.S)
+MARKER = re.compile(r"<!--n:([a-z0-9_.\[\]]+)-->(.*?)<!--/n-->", re.S)
 
 
 def g(x):
@@ -65,6 +66,9 @@ def numbers(directory):
     for c in s["checks"]:
         if c["status"] != "left_out":
             n[f"check.{c['subject']}.{c['check']}"] = g(c["value"])
+        if isinstance(c.get("predicted"), (int, float)) and math.isfinite(c["predicted"]):
+            n[f"predicted.{c['subject']}.{c['check']}"] = g(c["predicted"])
+            n[f"predicted_se.{c['subject']}.{c['check']}"] = g(c["predicted_uncertainty"])
     for c in s["cases"]:
         if c["duration"] and c["wall_seconds"] is not None and c["seed"] == 1:
             n[f"cost.{c['id']}"] = g(c["wall_seconds"] / c["duration"])
