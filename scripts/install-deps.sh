@@ -10,6 +10,7 @@ packages=(
   ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers pocl-opencl-icd clinfo
   clang libclang-rt-14-dev libomp-dev
   python3 python3-matplotlib python3-numpy python3-h5py
+  libsdl2-dev libpng-dev libgif-dev python3-pil
 )
 
 missing=()
