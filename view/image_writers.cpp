@@ -2,7 +2,12 @@
 
 #include <gif_lib.h>
 #include <png.h>
+#include <fcntl.h>
 #include <unistd.h>
+
+#include <cerrno>
+#include <csignal>
+#include <cstring>
 
 #include <algorithm>
 #include <cstdio>
@@ -17,7 +22,10 @@ class TemporaryFile {
 public:
     explicit TemporaryFile(const std::string& path) : target_(path) {
         const std::filesystem::path p(path);
-        temp_ = (p.parent_path() / ("." + p.filename().string() + ".tmp-" + std::to_string(::getpid()))).string();
+        // Built by append: GCC 12 warns falsely (-Wrestrict) on "." + std::string.
+        std::string name(".");
+        name.append(p.filename().string()).append(".tmp-").append(std::to_string(::getpid()));
+        temp_ = (p.parent_path() / name).string();
     }
     ~TemporaryFile() {
         std::error_code ignored;
@@ -36,6 +44,12 @@ private:
 
 [[noreturn]] void cannot_write(const std::string& path, const std::string& why) {
     throw std::runtime_error("cannot write '" + path + "': " + why);
+}
+
+std::string shell_quoted(const std::string& word) {
+    std::string quoted = "'";
+    for (char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return quoted + "'";
 }
 
 struct FileCloser {
@@ -64,9 +78,16 @@ public:
     GifWriter(const std::string& path, int width, int height, double fps)
         : path_(path), temp_(path), width_(width), height_(height),
           delay_(std::max(2, int(std::lround(100 / fps)))) {
+        // Opened here, not by EGifOpenFileName, which would create the file readable by its
+        // owner only; with open() the permissions follow the umask like every other output.
+        const int fd = ::open(temp_.path().c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0666);
+        if (fd < 0) cannot_write(path, std::strerror(errno));
         int error = 0;
-        gif_ = EGifOpenFileName(temp_.path().c_str(), false, &error);
-        if (!gif_) cannot_write(path, GifErrorString(error));
+        gif_ = EGifOpenFileHandle(fd, &error);
+        if (!gif_) {
+            ::close(fd);
+            cannot_write(path, GifErrorString(error));
+        }
         EGifSetGifVersion(gif_, true);  // GIF89a: needed for frame delays and looping
         check(EGifPutScreenDesc(gif_, width, height, 8, 0, nullptr));
         // The NETSCAPE2.0 application block: loop forever.
@@ -131,8 +152,11 @@ public:
     Mp4Writer(const std::string& path, int width, int height, double fps) : path_(path), temp_(path) {
         const std::string command = "ffmpeg -loglevel error -y -f rawvideo -pix_fmt rgba -s " + std::to_string(width) +
                                     "x" + std::to_string(height) + " -r " + std::to_string(fps) +
-                                    " -i - -vf pad=ceil(iw/2)*2:ceil(ih/2)*2 -pix_fmt yuv420p -f mp4 '" +
-                                    temp_.path() + "'";
+                                    " -i - -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -pix_fmt yuv420p -f mp4 " +
+                                    shell_quoted(temp_.path());
+        // A failed ffmpeg closes the pipe; without this the next write would kill us silently
+        // (SIGPIPE) instead of failing with a message.
+        std::signal(SIGPIPE, SIG_IGN);
         pipe_ = ::popen(command.c_str(), "w");
         if (!pipe_) cannot_write(path, "cannot start ffmpeg");
     }
