@@ -99,7 +99,9 @@ void build_frame(const FrameContent& content, const FrameLayout& l, Geometry& g)
             add_circle(g, l, content.compare->x[i], content.compare->y[i], content.compare->radius[i],
                        palette::outline, AtlasCell::ring);
     add_legend(g, l, content.speed_max);
-    add_text(g, l.hud_x, l.hud_y, l.text_scale, content.hud, palette::text);
+    // Cut to the frame's width: a narrow frame (a strip panel) must not spill into the next.
+    const auto fits = std::size_t(std::max(0.0f, (float(l.width) - 2 * l.hud_x) / float(glyph_advance * l.text_scale)));
+    add_text(g, l.hud_x, l.hud_y, l.text_scale, content.hud.substr(0, fits), palette::text);
 }
 
 }  // namespace collide::view

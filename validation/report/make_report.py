@@ -13,6 +13,7 @@ import tomllib
 from collections import OrderedDict
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import animations  # noqa: E402
 import figures  # noqa: E402
 import stability  # noqa: E402
 
@@ -219,6 +220,7 @@ def scene_sections(summary, directory):
                            f"<b>Configuration, {html.escape(scene)}.</b> The disks (drawn to scale, coloured by "
                            f"speed) at the start and at the end of the case {html.escape(case['id'])}, inside the "
                            "scene's box.", "initial and final configuration"))
+        parts.append(animations.section(summary, directory, scene, image))  # motion strips, if frames were stored
     return "\n".join(parts)
 
 
