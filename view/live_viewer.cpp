@@ -114,15 +114,17 @@ void run_viewer(ViewSession& session, const ViewOptions& options) {
         // The first frame shows the initial state; every later one advances.
         draw_frame(session, *canvas, geometry, frame == 0 ? 0 : s.playback.output_steps(), speed_hud(fps, session, s.playback));
         if (std::exchange(s.screenshot, false)) write_png(screenshot_name(session), canvas->read_pixels());
+        // Read before present: after it, a GPU renderer's back buffer is undefined.
+        const bool final_frame = s.quit || (options.frames > 0 && frame + 1 >= options.frames);
+        if (final_frame && !options.screenshot.empty()) {
+            write_png(options.screenshot, canvas->read_pixels());
+            std::printf("screenshot %s (t = %g)\n", options.screenshot.c_str(), session.time());
+        }
         if (!options.headless) canvas->present();
         const auto now = Clock::now();
         const double dt = seconds_between(last, now);
         last = now;
         fps = fps == 0 ? 1 / dt : 0.9 * fps + 0.1 / dt;  // smoothed, so the HUD stays readable
-    }
-    if (!options.screenshot.empty()) {
-        write_png(options.screenshot, canvas->read_pixels());
-        std::printf("screenshot %s (t = %g)\n", options.screenshot.c_str(), session.time());
     }
 }
 
