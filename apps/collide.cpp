@@ -19,6 +19,8 @@ int main(int argc, char** argv) {
     collide::cli::add_validate_command(app);
     collide::cli::add_report_command(app);
     collide::cli::add_devices_command(app);
+    collide::cli::add_view_command(app);
+    collide::cli::add_render_command(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

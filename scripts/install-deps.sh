@@ -13,6 +13,7 @@ packages=(
   python3-dev pybind11-dev python3-pybind11 python3-pytest
   chromium chromium-driver python3-selenium
   libopenmpi-dev openmpi-bin
+  libsdl2-dev libpng-dev libgif-dev python3-pil
 )
 
 missing=()

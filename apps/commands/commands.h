@@ -3,6 +3,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "core/backend_registry.h"
+
 namespace collide::cli {
 
 void add_run_command(CLI::App& app);       // run one scene on one backend -> HDF5
@@ -12,5 +14,11 @@ void add_bench_command(CLI::App& app);     // benchmark suites
 void add_validate_command(CLI::App& app);  // validation suites -> summary.json, junit.xml
 void add_report_command(CLI::App& app);    // validation results -> HTML and Markdown report
 void add_devices_command(CLI::App& app);   // list OpenCL platforms and devices
+void add_view_command(CLI::App& app);      // watch a scene run (SDL2 window or headless)
+void add_render_command(CLI::App& app);    // run file with frames -> GIF, MP4 or PNG strip
+
+// Throws "backend 'NAME' cannot run scene 'SCENE': REASON" when the backend does not support
+// the scene; every command that runs a scene says it in these words (run_command.cpp).
+void require_support(const BackendInfo& backend, const Scene& scene);
 
 }  // namespace collide::cli

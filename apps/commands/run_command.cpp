@@ -107,8 +107,7 @@ void print_summary(const Scene& scene, const std::string& backend, const RunResu
 void execute(const RunArgs& args) {
     const BackendInfo& backend = find_backend(args.backend);
     const Scene scene = load_scene(args.scene_path);
-    if (auto reason = backend.supports(scene))
-        throw std::runtime_error("backend '" + backend.name + "' cannot run scene '" + scene.name + "': " + *reason);
+    require_support(backend, scene);
     const ParticleState<double> initial = generate_initial_state(scene);
     auto solver = backend.create(args.options);
 
@@ -136,6 +135,11 @@ void execute(const RunArgs& args) {
 }
 
 }  // namespace
+
+void require_support(const BackendInfo& backend, const Scene& scene) {
+    if (auto reason = backend.supports(scene))
+        throw std::runtime_error("backend '" + backend.name + "' cannot run scene '" + scene.name + "': " + *reason);
+}
 
 void add_run_command(CLI::App& app) {
     auto args = std::make_shared<RunArgs>();

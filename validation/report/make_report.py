@@ -22,6 +22,7 @@ import tomllib
 from collections import OrderedDict
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import animations  # noqa: E402
 import digest  # noqa: E402
 import figures  # noqa: E402
 import stability  # noqa: E402
@@ -457,6 +458,7 @@ def scene_sections(summary, directory, a=None):
                            f"<b>Configuration, {html.escape(scene)}.</b> The disks (drawn to scale, coloured by "
                            f"speed) at the start and at the end of the case {html.escape(case['id'])}, inside the "
                            "scene's box.", "initial and final configuration"))
+        parts.append(animations.section(summary, directory, scene, image))  # motion strips, if frames were stored
     return "\n".join(parts)
 
 

@@ -1,0 +1,96 @@
+"""Strips of frames for the report: for each trajectory scene, one stepped backend against the
+exact reference drawn as outlines, at the largest and at the smallest time step of the sweep,
+so the sweep's error is seen and not only read. The pictures are drawn by `collide render`
+(the viewer's own drawing path, docs/viewer.md), never by a second drawing code here.
+
+Needs run files written with frames (`[output] frames = true` in the suite, as suites/full.toml
+has); a suite without frames gets a one-line note instead.
+"""
+import html
+import os
+import shutil
+import subprocess
+import tempfile
+
+import h5py
+
+FRAMES = 5          # panels per strip
+PANEL = "320x180"   # pixels of one panel
+
+
+def collide_program():
+    """The collide program: $COLLIDE_EXECUTABLE, else the program that started this script
+    (`collide report` runs it as a child), else `collide` on PATH."""
+    explicit = os.environ.get("COLLIDE_EXECUTABLE")
+    if explicit:
+        return explicit
+    try:
+        parent = os.readlink(f"/proc/{os.getppid()}/exe")
+        if os.path.basename(parent) == "collide":
+            return parent
+    except OSError:
+        pass
+    return shutil.which("collide")
+
+
+def has_frames(path):
+    try:
+        with h5py.File(path, "r") as f:
+            return "frames" in f
+    except OSError:
+        return False
+
+
+def trajectory_scenes(summary):
+    ids = {c["subject"] for c in summary["checks"] if c["check"] == "trajectory_error" and c["status"] != "left_out"}
+    # A check's subject is a case id, or a sweep group's id for checks over replicates.
+    return {c["scene"] for c in summary["cases"] if c["id"] in ids or c.get("group") in ids}
+
+
+def chosen_pair(summary, directory, scene):
+    """(reference case, [backend case at largest dt, at smallest dt]) or None."""
+    done = [c for c in summary["cases"] if c["scene"] == scene and c["status"] == "completed" and c.get("hdf5_file")
+            and has_frames(os.path.join(directory, c["hdf5_file"]))]
+    refs = [c for c in done if c["reference"]]
+    if not refs:
+        return None
+    ref = min(refs, key=lambda c: c["seed"])
+    others = [c for c in done if not c["reference"] and c["seed"] == ref["seed"]]
+    if not others:
+        return None
+    backend = others[0]["backend"]
+    runs = sorted((c for c in others if c["backend"] == backend), key=lambda c: c["dt"])
+    return ref, [runs[-1]] if len(runs) == 1 else [runs[-1], runs[0]]
+
+
+def render_strip(collide, directory, case, ref):
+    with tempfile.TemporaryDirectory() as tmp:
+        out = os.path.join(tmp, "strip.png")
+        result = subprocess.run([collide, "render", os.path.join(directory, case["hdf5_file"]), "--compare",
+                                 os.path.join(directory, ref["hdf5_file"]), "--out", out, "--frames", str(FRAMES),
+                                 "--size", PANEL], capture_output=True, text=True)
+        if result.returncode != 0:
+            return None
+        with open(out, "rb") as f:
+            return f.read()
+
+
+def section(summary, directory, scene, image):
+    """HTML for one scene: the strips, a note why there are none, or "" for a scene that is not
+    compared by trajectory. `image(png, caption, alt)` is the report's figure helper."""
+    if scene not in trajectory_scenes(summary):
+        return ""
+    pair = chosen_pair(summary, directory, scene)
+    collide = collide_program()
+    if pair is None or collide is None:
+        why = "the suite stored no frames" if pair is None else "no collide program was found to draw them"
+        return f"<p>No motion strip for {html.escape(scene)}: {why}.</p>"
+    ref, cases = pair
+    parts = []
+    for case in cases:
+        png = render_strip(collide, directory, case, ref)
+        caption = (f"<b>Motion, {html.escape(scene)}: {html.escape(case['backend'])} at dt = {case['dt']:g}</b> "
+                   f"(filled, coloured by speed) against the exact {html.escape(ref['backend'])} solution (white "
+                   f"outlines), {FRAMES} frames from start to end. Red dots mark overlapping pairs.")
+        parts.append(image(png, caption, "motion strip"))
+    return "\n".join(parts)
