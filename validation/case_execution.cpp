@@ -31,19 +31,13 @@ void append(MetricSeries& m, const Metrics& x) {
     m.nonfinite.push_back(double(x.nonfinite));
 }
 
-BackendOptions options_for(const CaseSpec& spec) {
-    BackendOptions options;
-    if (spec.iterations) options.extra["iterations"] = std::to_string(*spec.iterations);
-    return options;
-}
-
 // A short run on a separate solver before the timed one, so that the timed run does not pay
 // for first-touch page faults, lazy initialisation (OpenCL program builds) or cold caches.
 double warm_up(const Scene& scene, const BackendInfo& backend, const CaseSpec& spec,
                const ParticleState<double>& initial, double fraction) {
     if (fraction <= 0) return 0;
     const auto start = std::chrono::steady_clock::now();
-    auto solver = backend.create(options_for(spec));
+    auto solver = backend.create(case_backend_options(spec));
     solver->load(scene, initial);
     const double dt = scene.run.dt;
     const double t = std::max(dt, std::round(fraction * scene.run.duration / dt) * dt);
@@ -58,14 +52,6 @@ std::map<std::string, std::string> file_attributes(const Scene& scene, const Cas
     return attributes;
 }
 
-// The generated state; for trajectory comparisons shifted to replicate `seed`'s collision
-// phase (phase_shift.h), identically for the reference and every tested backend.
-ParticleState<double> initial_state_of(const Scene& scene, const SuiteScene& entry, std::uint64_t seed) {
-    ParticleState<double> initial = generate_initial_state(scene);
-    if (entry.comparison == Comparison::trajectory) advance_free_flight(scene, initial, phase_shift(seed, scene.run.dt));
-    return initial;
-}
-
 void measure(const CaseSpec& spec, const CaseContext& ctx, CaseResult& result) {
     const Suite& suite = *ctx.suite;
     const SuiteScene& entry = suite.scenes[spec.scene_index];
@@ -73,7 +59,7 @@ void measure(const CaseSpec& spec, const CaseContext& ctx, CaseResult& result) {
     result.duration = scene.run.duration;
     result.dt = scene.run.dt;
     result.substeps = scene.run.substeps;
-    const ParticleState<double> initial = initial_state_of(scene, entry, spec.seed);
+    const ParticleState<double> initial = case_initial_state(scene, entry, spec.seed);
     result.disks = initial.size();
     for (std::size_t i = 0; i < initial.size(); ++i)
         if (!initial.is_stone(i)) result.total_mass += initial.mass[i];
@@ -101,7 +87,7 @@ void measure(const CaseSpec& spec, const CaseContext& ctx, CaseResult& result) {
         if (entry.comparison == Comparison::statistics && m.time >= 0.5 * scene.run.duration && m.nonfinite == 0)
             result.compressibility.push_back(compressibility_factor(scene, state));
     };
-    auto solver = ctx.backend->create(options_for(spec));
+    auto solver = ctx.backend->create(case_backend_options(spec));
     try {
         const RunResult run = run_scene(scene, *solver, initial, options);
         result.wall_seconds = run.wall_seconds;
@@ -129,6 +115,18 @@ void measure(const CaseSpec& spec, const CaseContext& ctx, CaseResult& result) {
 }
 
 }  // namespace
+
+BackendOptions case_backend_options(const CaseSpec& spec) {
+    BackendOptions options;
+    if (spec.iterations) options.extra["iterations"] = std::to_string(*spec.iterations);
+    return options;
+}
+
+ParticleState<double> case_initial_state(const Scene& scene, const SuiteScene& entry, std::uint64_t seed) {
+    ParticleState<double> initial = generate_initial_state(scene);
+    if (entry.comparison == Comparison::trajectory) advance_free_flight(scene, initial, phase_shift(seed, scene.run.dt));
+    return initial;
+}
 
 CaseResult execute_case(const CaseSpec& spec, const CaseContext& ctx) {
     CaseResult result;

@@ -17,6 +17,14 @@ struct CaseContext {
     std::string output_dir;               // HDF5 file goes to <output_dir>/runs/<id>.h5
 };
 
+// The options a case's solver is created with (a swept `iterations` value).
+BackendOptions case_backend_options(const CaseSpec& spec);
+
+// The case's initial state: the scene's generated disks, for trajectory comparisons shifted to
+// replicate `seed`'s collision phase (phase_shift.h), identically for the reference and every
+// tested backend.
+ParticleState<double> case_initial_state(const Scene& scene, const SuiteScene& entry, std::uint64_t seed);
+
 // Never throws for a problem of the case itself (a solver exception or NaN becomes
 // status = error with the message); throws only when the output cannot be written.
 CaseResult execute_case(const CaseSpec& spec, const CaseContext& context);

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <toml++/toml.h>
 
+#include "core/scene_loader.h"
 #include "core/toml_fields.h"
 
 namespace collide::validation {
@@ -318,6 +319,16 @@ Suite load_suite(const std::string& path) {
     text << in.rdbuf();
     const auto dir = std::filesystem::absolute(path).parent_path().string();
     return parse_suite(text.str(), path, dir);
+}
+
+std::vector<Scene> load_suite_scenes(const Suite& suite) {
+    std::vector<Scene> scenes;
+    for (const SuiteScene& entry : suite.scenes) {
+        Scene scene = entry.scene ? *entry.scene : load_scene(entry.path);
+        if (scene.name.empty()) scene.name = entry.name;
+        scenes.push_back(std::move(scene));
+    }
+    return scenes;
 }
 
 }  // namespace collide::validation

@@ -91,6 +91,9 @@ struct Suite {
 };
 
 Suite load_suite(const std::string& path);
+
+// The scene of every [[scene]] entry, in order (a scene file's, or the suite's inline one).
+std::vector<Scene> load_suite_scenes(const Suite& suite);
 // `source_dir` resolves relative scene paths (the suite file's directory).
 Suite parse_suite(const std::string& text, const std::string& source_name, const std::string& source_dir);
 

@@ -32,16 +32,6 @@ std::size_t SuiteOutcome::count(CheckStatus s) const {
 
 namespace {
 
-std::vector<Scene> load_scenes(const Suite& suite) {
-    std::vector<Scene> scenes;
-    for (const SuiteScene& entry : suite.scenes) {
-        Scene scene = entry.scene ? *entry.scene : load_scene(entry.path);
-        if (scene.name.empty()) scene.name = entry.name;
-        scenes.push_back(std::move(scene));
-    }
-    return scenes;
-}
-
 // The scene of every (scene, parameter point) of the suite, built before any case runs so that
 // a sweep path that does not exist, or a value a scene rule rejects, stops the suite at once.
 // Keyed by scene index and parameter_label; the features decide which checks apply.
@@ -176,7 +166,7 @@ void classify_all(SuiteOutcome& outcome, const CaseScenes& case_scenes, const st
 SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& available, const RunnerOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     const std::vector<BackendInfo> backends = select_backends(suite, available);
-    const std::vector<Scene> scenes = load_scenes(suite);  // bad scene files fail here, before any case
+    const std::vector<Scene> scenes = load_suite_scenes(suite);  // bad scene files fail here, before any case
     const CaseScenes case_scenes(suite, scenes);
     std::vector<SceneFeatures> features;
     // Per scene for the comparisons (which only ask about the disks' radii): its first sweep point.

@@ -16,6 +16,7 @@ void add_report_command(CLI::App& app);    // validation results -> HTML and Mar
 void add_devices_command(CLI::App& app);   // list OpenCL platforms and devices
 void add_view_command(CLI::App& app);      // watch a scene run (SDL2 window or headless)
 void add_render_command(CLI::App& app);    // run file with frames -> GIF, MP4 or PNG strip
+void add_explain_command(CLI::App& app);   // the step of a validated case that changed the energy most
 
 // Throws "backend 'NAME' cannot run scene 'SCENE': REASON" when the backend does not support
 // the scene; every command that runs a scene says it in these words (run_command.cpp).

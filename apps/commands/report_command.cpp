@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <stdexcept>
@@ -37,6 +38,11 @@ void execute(const std::string& dir) {
     const pid_t pid = ::fork();
     if (pid < 0) throw std::runtime_error("fork failed");
     if (pid == 0) {
+        // The renderer calls this program back (`collide render` for motion strips, `collide
+        // explain` for energy jumps): tell it which one, unless the caller chose another.
+        std::error_code error;
+        const auto self = std::filesystem::read_symlink("/proc/self/exe", error);
+        if (!error) ::setenv("COLLIDE_EXECUTABLE", self.c_str(), 0);
         ::execl(COLLIDE_PYTHON, COLLIDE_PYTHON, script.c_str(), dir.c_str(), static_cast<char*>(nullptr));
         std::perror(COLLIDE_PYTHON);
         ::_exit(127);

@@ -134,6 +134,37 @@ class OrderFit(unittest.TestCase):
         self.assertIn("2 points", fit["note"])
 
 
+class JumpExplained(unittest.TestCase):
+    """An energy jump is named down to its step, disks and kind of contact by `collide explain`;
+    a failing program is reported in the note, never silently dropped."""
+
+    def stepped_case(self):
+        with open(os.path.join(RESULTS, "summary.json"), encoding="utf-8") as f:
+            summary = json.load(f)
+        return next(c for c in summary["cases"] if c["backend"] == "step" and c["scene"] == "periodic_gas")
+
+    def test_named_by_collide_explain(self):
+        case = self.stepped_case()
+        jump = {"t0": 0.0, "t1": case["duration"]}
+        note = make_report.explain_jump(RESULTS, case, jump)
+        self.assertIn("In detail: the step ending at t = ", note)
+        # a 1000-disk gas in a periodic box: the largest change comes from disks in contact
+        self.assertRegex(note, r"(an isolated pair|\d+ disks in contact at once) \(disk \d+ touches \d+")
+        self.assertEqual(jump["explained"]["case"], case["id"])
+
+    def test_failure_is_reported(self):
+        saved = os.environ.get("COLLIDE_EXECUTABLE")
+        os.environ["COLLIDE_EXECUTABLE"] = "/bin/false"
+        try:
+            note = make_report.explain_jump(RESULTS, self.stepped_case(), {"t0": 0.0, "t1": 0.1})
+        finally:
+            if saved is None:
+                del os.environ["COLLIDE_EXECUTABLE"]
+            else:
+                os.environ["COLLIDE_EXECUTABLE"] = saved
+        self.assertIn("The step could not be named", note)
+
+
 class Resolution(unittest.TestCase):
     def check(self, mean, se, ref, ref_se):
         return {"status": "pass", "check": "pressure",

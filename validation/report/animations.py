@@ -8,29 +8,15 @@ has); a suite without frames gets a one-line note instead.
 """
 import html
 import os
-import shutil
 import subprocess
 import tempfile
 
 import h5py
 
+from collide_program import collide_program
+
 FRAMES = 5          # panels per strip
 PANEL = "320x180"   # pixels of one panel
-
-
-def collide_program():
-    """The collide program: $COLLIDE_EXECUTABLE, else the program that started this script
-    (`collide report` runs it as a child), else `collide` on PATH."""
-    explicit = os.environ.get("COLLIDE_EXECUTABLE")
-    if explicit:
-        return explicit
-    try:
-        parent = os.readlink(f"/proc/{os.getppid()}/exe")
-        if os.path.basename(parent) == "collide":
-            return parent
-    except OSError:
-        pass
-    return shutil.which("collide")
 
 
 def has_frames(path):

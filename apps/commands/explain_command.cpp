@@ -1,0 +1,105 @@
+// `collide explain DIR CASE_ID [--from T0] [--to T1] [--json]`: reruns one case of a finished
+// suite (validation/case_replay.h) step by step and names the step in which the kinetic energy
+// changed most, the disks it changed and the kind of contact behind it (validation/energy_jump.h).
+// The report calls it for every energy jump it shows (docs/reading-a-report.md).
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+#include "commands.h"
+#include "validation/case_replay.h"
+#include "validation/energy_jump.h"
+
+namespace collide::cli {
+namespace {
+
+struct ExplainArgs {
+    std::string dir, case_id, suite;
+    double from = 0, to = -1;
+    bool json = false;
+};
+
+// The suite file the results came from, as summary.json records it (or --suite).
+std::string suite_of(const ExplainArgs& args) {
+    if (!args.suite.empty()) return args.suite;
+    const std::string path = args.dir + "/summary.json";
+    std::ifstream in(path);
+    if (!in) throw std::runtime_error(path + ": not found; expected the output directory of `collide validate`");
+    try {
+        return nlohmann::json::parse(in).at("suite_file").get<std::string>();
+    } catch (const nlohmann::json::exception& e) {
+        throw std::runtime_error(path + ": no suite_file to rebuild the case from (" + std::string(e.what()) + ")");
+    }
+}
+
+nlohmann::json to_json(const validation::ReplayedCase& c, const validation::EnergyJump& jump) {
+    nlohmann::json groups = nlohmann::json::array();
+    for (const auto& g : jump.groups) {
+        nlohmann::json disks = nlohmann::json::array(), pairs = nlohmann::json::array(), walls = nlohmann::json::array();
+        for (const auto& d : g.disks)
+            disks.push_back({{"index", d.index}, {"kinetic_before", d.kinetic_before}, {"kinetic_after", d.kinetic_after}});
+        for (const auto& [i, j] : g.pairs) pairs.push_back({i, j});
+        for (const auto& [i, w] : g.walls) walls.push_back({{"disk", i}, {"wall", w}});
+        groups.push_back({{"kind", g.kind}, {"kinetic_change", g.kinetic_change}, {"disks", disks},
+                          {"pairs", pairs}, {"walls", walls}});
+    }
+    return {{"case", c.spec.id}, {"backend", c.spec.backend}, {"dt", c.scene.run.dt}, {"step", jump.step},
+            {"time_before", jump.time_before}, {"time_after", jump.time_after},
+            {"kinetic_before", jump.kinetic_before}, {"kinetic_change", jump.kinetic_change},
+            {"groups", groups}, {"description", validation::describe(jump)}};
+}
+
+void print_text(const validation::ReplayedCase& c, const validation::EnergyJump& jump) {
+    std::printf("case      %s (%s, dt = %g)\n", c.spec.id.c_str(), c.spec.backend.c_str(), c.scene.run.dt);
+    std::printf("step      %lld: t = %.6g -> %.6g\n", static_cast<long long>(jump.step), jump.time_before, jump.time_after);
+    std::printf("change    K %+.6g of %.6g\n", jump.kinetic_change, jump.kinetic_before);
+    for (std::size_t k = 0; k < jump.groups.size() && k < 5; ++k) {
+        const auto& g = jump.groups[k];
+        std::printf("group %zu   %s: K %+.6g\n", k + 1, g.kind.c_str(), g.kinetic_change);
+        for (const auto& d : g.disks)
+            std::printf("          disk %zu: %.6g -> %.6g\n", d.index, d.kinetic_before, d.kinetic_after);
+        for (const auto& [i, j] : g.pairs) std::printf("          contact %zu-%zu\n", i, j);
+        for (const auto& [i, w] : g.walls) std::printf("          disk %zu at the %s wall\n", i, w.c_str());
+    }
+    std::printf("in words  %s\n", validation::describe(jump).c_str());
+}
+
+void execute(const ExplainArgs& args) {
+    const validation::ReplayedCase c = validation::replay_case(suite_of(args), args.case_id, all_backends());
+    if (c.spec.backend == "event")
+        throw std::runtime_error("case " + c.spec.id + " ran on 'event', which has no time steps to look inside");
+    const double dt = c.scene.run.dt, end = args.to < 0 ? c.scene.run.duration : args.to;
+    if (!(args.from >= 0) || !(end <= c.scene.run.duration + 0.5 * dt) || !(end > args.from))
+        throw std::runtime_error("--from " + std::to_string(args.from) + " --to " + std::to_string(end) +
+                                 ": expected 0 <= from < to <= the case's duration " + std::to_string(c.scene.run.duration));
+    auto solver = c.backend.create(c.options);
+    solver->load(c.scene, c.initial);
+    const double start = std::floor(args.from / dt + 1e-9) * dt;
+    if (start > 0) solver->advance_to(start);
+    const validation::EnergyJump jump = validation::largest_energy_change(*solver, c.scene, end);
+    if (args.json)
+        std::printf("%s\n", to_json(c, jump).dump(2).c_str());
+    else
+        print_text(c, jump);
+}
+
+}  // namespace
+
+void add_explain_command(CLI::App& app) {
+    auto args = std::make_shared<ExplainArgs>();
+    auto* cmd = app.add_subcommand(
+        "explain", "Rerun one case of `collide validate` results and name the step that changed the energy most, "
+                   "its disks and the kind of contact");
+    cmd->add_option("dir", args->dir, "Output directory of `collide validate`")->required()->check(CLI::ExistingDirectory);
+    cmd->add_option("case", args->case_id, "Case id (summary.json's cases[].id)")->required();
+    cmd->add_option("--from", args->from, "Look at steps after this time (default 0)");
+    cmd->add_option("--to", args->to, "... and up to this time (default: the case's duration)");
+    cmd->add_option("--suite", args->suite, "Suite file (default: the one summary.json records)");
+    cmd->add_flag("--json", args->json, "Print JSON instead of text");
+    cmd->callback([args] { execute(*args); });
+}
+
+}  // namespace collide::cli

@@ -1,0 +1,31 @@
+// A case of a finished suite, rebuilt from its suite file: the scene exactly as the case ran it
+// (the scene file, the sweep's parameters, the suite's overrides, the seed), its initial state
+// (the phase replicate included) and its backend (a variant such as box2d[shipped] included).
+// Every backend here is deterministic for a given thread count, so running the rebuilt case
+// again retraces the run, step by step; `collide explain` uses this to look inside one step.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "case_plan.h"
+#include "core/backend_registry.h"
+#include "core/particle_state.h"
+#include "core/scene.h"
+
+namespace collide::validation {
+
+struct ReplayedCase {
+    CaseSpec spec;
+    Scene scene;                     // as the case ran it
+    ParticleState<double> initial;
+    BackendInfo backend;
+    BackendOptions options;
+};
+
+// Throws std::runtime_error naming the suite file and the case id when the suite does not plan
+// that case (another suite, an edited suite, a backend this build lacks).
+ReplayedCase replay_case(const std::string& suite_path, const std::string& case_id,
+                         const std::vector<BackendInfo>& available);
+
+}  // namespace collide::validation
