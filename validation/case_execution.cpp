@@ -71,7 +71,8 @@ void measure(const CaseSpec& spec, const CaseContext& ctx, CaseResult& result) {
     if (suite.output.hdf5) {
         std::filesystem::create_directories(ctx.output_dir + "/runs");
         result.hdf5_file = "runs/" + spec.id + ".h5";
-        writer = std::make_unique<RunWriter>(ctx.output_dir + "/" + result.hdf5_file, suite.output.frames);
+        writer = std::make_unique<RunWriter>(ctx.output_dir + "/" + result.hdf5_file,
+                                             entry.frames.value_or(suite.output.frames));
     }
     const bool record_trajectory = initial.size() <= suite.output.max_trajectory_disks;
     RunOptions options;

@@ -218,7 +218,8 @@ std::vector<SceneParameter> read_parameter_sweeps(const toml::table& t, const st
 SuiteScene read_scene(const toml::table& t, const std::string& file, int index, const std::string& dir,
                       const std::string& scene_dir) {
     TableReader r(t, file, "[[scene]] #" + std::to_string(index));
-    r.only({"name", "path", "compare", "dt", "substeps", "iterations", "seeds", "duration", "output_interval", "set"});
+    r.only({"name", "path", "compare", "dt", "substeps", "iterations", "seeds", "duration", "output_interval", "set",
+            "frames"});
     SuiteScene s;
     const auto name = r.string("name");
     const auto path = r.string("path");
@@ -241,6 +242,7 @@ SuiteScene read_scene(const toml::table& t, const std::string& file, int index, 
     s.seeds = r.positive_array<std::uint64_t>("seeds", "positive integer seeds");
     s.duration = r.positive("duration");
     s.output_interval = r.positive("output_interval");
+    s.frames = r.boolean("frames");
     s.set = read_parameter_sweeps(t, file, "[[scene]] #" + std::to_string(index));
     // Where the run settings a case may break are set (checked against the scene later).
     s.line = int(t.source().begin.line);

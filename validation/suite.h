@@ -49,6 +49,7 @@ struct SuiteScene {
     std::vector<SceneParameter> set;  // scene-key sweeps (all combinations, crossed with dt)
     std::optional<double> duration;   // overrides [run].duration of the scene
     std::optional<double> output_interval;
+    std::optional<bool> frames;       // overrides [output].frames for this scene's cases
     int line = 0;                     // in the suite file: of dt (or the overrides), else [[scene]]
 };
 
