@@ -1,6 +1,7 @@
 #include "case_replay.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "case_execution.h"
@@ -16,9 +17,15 @@ ReplayedCase replay_case(const std::string& suite_path, const std::string& case_
     const std::vector<BackendInfo> backends = select_backends(suite, available);
     const std::vector<CaseSpec> specs = plan_cases(suite, scenes, backends);
     const auto spec = std::find_if(specs.begin(), specs.end(), [&](const CaseSpec& s) { return s.id == case_id; });
-    if (spec == specs.end())
+    if (spec == specs.end()) {
+        std::string names;
+        for (const BackendInfo& b : backends) names += (names.empty() ? "" : ", ") + b.name;
         throw std::runtime_error(suite_path + ": the suite plans no case '" + case_id +
-                                 "' (was the suite file edited since the run, or the case id mistyped?)");
+                                 "' with the backends this build has (" + names +
+                                 "); was the suite file edited since the run, or the case id mistyped?");
+    }
+    if (!spec->left_out.empty())
+        throw std::runtime_error("case " + case_id + " was left out, not run: " + spec->left_out);
     const auto backend = std::find_if(backends.begin(), backends.end(),
                                       [&](const BackendInfo& b) { return b.name == spec->backend; });
     const SuiteScene& entry = suite.scenes[spec->scene_index];
@@ -26,6 +33,40 @@ ReplayedCase replay_case(const std::string& suite_path, const std::string& case_
                      {}, *backend, case_backend_options(*spec)};
     out.initial = case_initial_state(out.scene, entry, spec->seed);
     return out;
+}
+
+namespace {
+
+void require_equal(const std::string& id, const char* what, double rebuilt, double recorded) {
+    if (rebuilt != recorded)
+        throw std::runtime_error("case " + id + ": the rebuilt case has " + what + " = " + std::to_string(rebuilt) +
+                                 ", the run recorded " + std::to_string(recorded) +
+                                 " (the suite or scene file was edited since the run; validate again)");
+}
+
+}  // namespace
+
+void require_same_start(const ReplayedCase& replay, const CaseResult& record) {
+    const std::string& id = replay.spec.id;
+    require_equal(id, "dt", replay.scene.run.dt, record.dt);
+    require_equal(id, "substeps", replay.scene.run.substeps, record.substeps);
+    require_equal(id, "duration", replay.scene.run.duration, record.duration);
+    require_equal(id, "the number of disks", double(replay.initial.size()), double(record.disks));
+    const Snapshot& s = record.initial;
+    if (s.x.size() != replay.initial.size()) return;  // a record without the initial state
+    for (std::size_t i = 0; i < s.x.size(); ++i)
+        if (s.x[i] != replay.initial.x[i] || s.y[i] != replay.initial.y[i] || s.vx[i] != replay.initial.vx[i] ||
+            s.vy[i] != replay.initial.vy[i])
+            throw std::runtime_error("case " + id + ": disk " + std::to_string(i) +
+                                     " starts elsewhere or otherwise than the run recorded (the suite or scene file "
+                                     "was edited since the run; validate again)");
+}
+
+std::optional<double> recorded_kinetic_energy(const CaseResult& record, double t) {
+    const auto& times = record.series.time;
+    for (std::size_t k = 0; k < times.size(); ++k)
+        if (std::fabs(times[k] - t) <= 1e-9 * record.dt) return record.series.kinetic_energy[k];
+    return std::nullopt;
 }
 
 }  // namespace collide::validation

@@ -5,10 +5,12 @@
 // again retraces the run, step by step; `collide explain` uses this to look inside one step.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "case_plan.h"
+#include "case_result.h"
 #include "core/backend_registry.h"
 #include "core/particle_state.h"
 #include "core/scene.h"
@@ -24,8 +26,16 @@ struct ReplayedCase {
 };
 
 // Throws std::runtime_error naming the suite file and the case id when the suite does not plan
-// that case (another suite, an edited suite, a backend this build lacks).
+// that case (another suite, an edited suite, a backend this build lacks) or left it out.
 ReplayedCase replay_case(const std::string& suite_path, const std::string& case_id,
                          const std::vector<BackendInfo>& available);
+
+// Throws std::runtime_error, naming what differs, unless the rebuilt case ran with the run
+// settings, disk count and initial state (bit for bit) that the case's record holds: a suite or
+// scene file edited since the run would otherwise be replayed silently under the same id.
+void require_same_start(const ReplayedCase& replay, const CaseResult& record);
+
+// The kinetic energy the record holds at output time t (within 1e-9 dt), if it holds one.
+std::optional<double> recorded_kinetic_energy(const CaseResult& record, double t);
 
 }  // namespace collide::validation

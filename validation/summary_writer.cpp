@@ -142,9 +142,13 @@ void write_summary_json(const Suite& suite, const SuiteOutcome& outcome, const s
         seeds[s.name] = list;
     }
     std::map<std::string, std::string> scene_files;
-    for (const auto& s : suite.scenes) scene_files[s.name] = s.path;
+    // Absolute paths: `collide report` and `collide explain` may run from another directory.
+    auto absolute = [](const std::string& path) {
+        return path.empty() ? path : std::filesystem::absolute(path).lexically_normal().string();
+    };
+    for (const auto& s : suite.scenes) scene_files[s.name] = absolute(s.path);
     Object root;
-    root.text("suite", suite.name).boolean("stability", suite.stability).text("description", suite.description).text("suite_file", suite.source_path)
+    root.text("suite", suite.name).boolean("stability", suite.stability).text("description", suite.description).text("suite_file", absolute(suite.source_path))
         .text("reference", suite.reference).boolean("passed", outcome.passed())
         .number("wall_seconds", outcome.wall_seconds).integer("cases_run", (long long)outcome.cases_run)
         .integer("cases_resumed", (long long)outcome.cases_resumed).field("counts", counts.json())

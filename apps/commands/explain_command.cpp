@@ -1,7 +1,9 @@
-// `collide explain DIR CASE_ID [--from T0] [--to T1] [--json]`: reruns one case of a finished
-// suite (validation/case_replay.h) step by step and names the step in which the kinetic energy
-// changed most, the disks it changed and the kind of contact behind it (validation/energy_jump.h).
-// The report calls it for every energy jump it shows (docs/reading-a-report.md).
+// `collide explain DIR CASE_ID [--from T0] [--to T1] [--suite FILE] [--json]`: reruns one case
+// of a finished suite (validation/case_replay.h), checks that the rerun retraces the recorded run
+// (its start bit for bit, its kinetic energy at the last output time before T0), then steps it
+// one dt at a time and names the step in which the energy changed most, the disks it changed and
+// the kind of contact behind it (validation/energy_jump.h). The report calls it for every energy
+// jump it shows (docs/reading-a-report.md).
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -11,6 +13,7 @@
 
 #include "commands.h"
 #include "validation/case_replay.h"
+#include "validation/case_result.h"
 #include "validation/energy_jump.h"
 
 namespace collide::cli {
@@ -31,7 +34,8 @@ std::string suite_of(const ExplainArgs& args) {
     try {
         return nlohmann::json::parse(in).at("suite_file").get<std::string>();
     } catch (const nlohmann::json::exception& e) {
-        throw std::runtime_error(path + ": no suite_file to rebuild the case from (" + std::string(e.what()) + ")");
+        throw std::runtime_error(path + ": no suite_file to rebuild the case from (" + std::string(e.what()) +
+                                 "); name the suite with --suite");
     }
 }
 
@@ -39,38 +43,65 @@ nlohmann::json to_json(const validation::ReplayedCase& c, const validation::Ener
     nlohmann::json groups = nlohmann::json::array();
     for (const auto& g : jump.groups) {
         nlohmann::json disks = nlohmann::json::array(), pairs = nlohmann::json::array(), walls = nlohmann::json::array();
+        nlohmann::json stones = nlohmann::json::array();
         for (const auto& d : g.disks)
-            disks.push_back({{"index", d.index}, {"kinetic_before", d.kinetic_before}, {"kinetic_after", d.kinetic_after}});
+            disks.push_back({{"index", d.index}, {"energy_before", d.energy_before}, {"energy_after", d.energy_after}});
         for (const auto& [i, j] : g.pairs) pairs.push_back({i, j});
         for (const auto& [i, w] : g.walls) walls.push_back({{"disk", i}, {"wall", w}});
-        groups.push_back({{"kind", g.kind}, {"kinetic_change", g.kinetic_change}, {"disks", disks},
-                          {"pairs", pairs}, {"walls", walls}});
+        for (const auto& [i, st] : g.stones) stones.push_back({{"disk", i}, {"stone", st}});
+        groups.push_back({{"kind", g.kind}, {"energy_change", g.energy_change}, {"disks", disks},
+                          {"pairs", pairs}, {"walls", walls}, {"stones", stones}});
     }
     return {{"case", c.spec.id}, {"backend", c.spec.backend}, {"dt", c.scene.run.dt}, {"step", jump.step},
             {"time_before", jump.time_before}, {"time_after", jump.time_after},
-            {"kinetic_before", jump.kinetic_before}, {"kinetic_change", jump.kinetic_change},
-            {"groups", groups}, {"description", validation::describe(jump)}};
+            {"kinetic_before", jump.kinetic_before}, {"energy_change", jump.energy_change},
+            {"nonfinite", jump.nonfinite}, {"groups", groups}, {"description", validation::describe(jump)}};
 }
 
 void print_text(const validation::ReplayedCase& c, const validation::EnergyJump& jump) {
     std::printf("case      %s (%s, dt = %g)\n", c.spec.id.c_str(), c.spec.backend.c_str(), c.scene.run.dt);
     std::printf("step      %lld: t = %.6g -> %.6g\n", static_cast<long long>(jump.step), jump.time_before, jump.time_after);
-    std::printf("change    K %+.6g of %.6g\n", jump.kinetic_change, jump.kinetic_before);
+    std::printf("change    energy %+.6g (kinetic energy before the step %.6g)\n", jump.energy_change,
+                jump.kinetic_before);
     for (std::size_t k = 0; k < jump.groups.size() && k < 5; ++k) {
         const auto& g = jump.groups[k];
-        std::printf("group %zu   %s: K %+.6g\n", k + 1, g.kind.c_str(), g.kinetic_change);
+        std::printf("group %zu   %s: energy %+.6g\n", k + 1, g.kind.c_str(), g.energy_change);
         for (const auto& d : g.disks)
-            std::printf("          disk %zu: %.6g -> %.6g\n", d.index, d.kinetic_before, d.kinetic_after);
+            std::printf("          disk %zu: %.6g -> %.6g\n", d.index, d.energy_before, d.energy_after);
         for (const auto& [i, j] : g.pairs) std::printf("          contact %zu-%zu\n", i, j);
         for (const auto& [i, w] : g.walls) std::printf("          disk %zu at the %s wall\n", i, w.c_str());
+        for (const auto& [i, st] : g.stones) std::printf("          disk %zu at stone %zu\n", i, st);
     }
+    if (jump.groups.size() > 5) std::printf("          (%zu more groups)\n", jump.groups.size() - 5);
     std::printf("in words  %s\n", validation::describe(jump).c_str());
+}
+
+// Advances the solver to the last output time at or before t and checks its kinetic energy
+// against the record's (relative 1e-9: the same code on the same input retraces the run).
+void require_same_path(Solver& solver, const validation::ReplayedCase& c, const validation::CaseResult& record,
+                       double t) {
+    const double interval = c.scene.run.output_interval, dt = c.scene.run.dt;
+    const double check = std::floor(t / interval + 1e-9) * interval;
+    const auto recorded = validation::recorded_kinetic_energy(record, check);
+    if (!recorded) return;
+    if (check > 0) solver.advance_to(std::round(check / dt) * dt);
+    ParticleState<double> state;
+    solver.read_state(state);
+    double k = 0;
+    for (std::size_t i = 0; i < state.size(); ++i)
+        if (!state.is_stone(i)) k += 0.5 * state.mass[i] * (state.vx[i] * state.vx[i] + state.vy[i] * state.vy[i]);
+    if (!(std::fabs(k - *recorded) <= 1e-9 * std::fabs(*recorded)))
+        throw std::runtime_error("case " + c.spec.id + ": the rerun does not retrace the recorded run (kinetic energy " +
+                                 std::to_string(k) + " at t = " + std::to_string(check) + ", recorded " +
+                                 std::to_string(*recorded) + "); was the program or a file changed since the run?");
 }
 
 void execute(const ExplainArgs& args) {
     const validation::ReplayedCase c = validation::replay_case(suite_of(args), args.case_id, all_backends());
-    if (c.spec.backend == "event")
+    if (c.backend.name == "event")  // the exact solver jumps from collision to collision
         throw std::runtime_error("case " + c.spec.id + " ran on 'event', which has no time steps to look inside");
+    const validation::CaseResult record = validation::read_case_result(args.dir + "/cases/" + c.spec.id + ".toml");
+    validation::require_same_start(c, record);
     const double dt = c.scene.run.dt, end = args.to < 0 ? c.scene.run.duration : args.to;
     if (!(args.from >= 0) || !(end <= c.scene.run.duration + 0.5 * dt) || !(end > args.from))
         throw std::runtime_error("--from " + std::to_string(args.from) + " --to " + std::to_string(end) +
@@ -78,7 +109,8 @@ void execute(const ExplainArgs& args) {
     auto solver = c.backend.create(c.options);
     solver->load(c.scene, c.initial);
     const double start = std::floor(args.from / dt + 1e-9) * dt;
-    if (start > 0) solver->advance_to(start);
+    require_same_path(*solver, c, record, start);
+    if (start > solver->time()) solver->advance_to(start);
     const validation::EnergyJump jump = validation::largest_energy_change(*solver, c.scene, end);
     if (args.json)
         std::printf("%s\n", to_json(c, jump).dump(2).c_str());

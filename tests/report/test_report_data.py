@@ -145,12 +145,13 @@ class JumpExplained(unittest.TestCase):
 
     def test_named_by_collide_explain(self):
         case = self.stepped_case()
-        jump = {"t0": 0.0, "t1": case["duration"]}
+        jump = {"t0": 0.0, "t1": case["duration"], "change": -0.01, "scale": 1000.0}
         note = make_report.explain_jump(RESULTS, case, jump)
         self.assertIn("In detail: the step ending at t = ", note)
         # a 1000-disk gas in a periodic box: the largest change comes from disks in contact
         self.assertRegex(note, r"(an isolated pair|\d+ disks in contact at once) \(disk \d+ touches \d+")
         self.assertEqual(jump["explained"]["case"], case["id"])
+        self.assertRegex(note, r"That step is -?\d+ % of the interval's change\.")
 
     def test_failure_is_reported(self):
         saved = os.environ.get("COLLIDE_EXECUTABLE")

@@ -423,7 +423,7 @@ def identical_backends(summary):
 def energy_jumps(result, threshold=1e-3, factor=10.0):
     """The largest change of energy over one output interval, divided by max K, when it is
     above `threshold` and `factor` times the median change: {'t0', 't1', 'change', 'median',
-    'gravity' (the energy is the total, not the kinetic)} or None."""
+    'scale' (max K)} or None."""
     s = result["series"]
     t, kinetic, total = s["time"], s["kinetic_energy"], s["total_energy"]
     if len(t) < 3:
@@ -437,4 +437,4 @@ def energy_jumps(result, threshold=1e-3, factor=10.0):
     median = sorted(abs(x) for x in steps)[len(steps) // 2]
     if abs(steps[i]) < threshold or abs(steps[i]) < factor * median:
         return None
-    return {"t0": t[i], "t1": t[i + 1], "change": steps[i], "median": median, "gravity": energy is total}
+    return {"t0": t[i], "t1": t[i + 1], "change": steps[i], "median": median, "scale": scale}

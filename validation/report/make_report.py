@@ -400,12 +400,16 @@ def explain_jump(directory, case, jump):
     except ValueError:
         return " The step could not be named: `collide explain` printed no JSON."
     jump["explained"] = found
-    return f" In detail: {html.escape(found['description'])}."
+    share = ""
+    interval = jump.get("change", 0) * jump.get("scale", 0)  # the output interval's change
+    if interval and math.isfinite(found["energy_change"]):
+        share = f" That step is {100 * found['energy_change'] / interval:.0f} % of the interval's change."
+    return f" In detail: {html.escape(found['description'])}.{share}"
 
 
 def jump_notes(scene, chosen, a, directory):
     """Energy jumps of the cases shown, for scenes where energy is conserved (its check applies),
-    each named down to its step and disks by `collide explain` where energy is kinetic only."""
+    each named down to its step and disks by `collide explain`."""
     conserved = any(c["check"] == "energy_drift" and c["status"] != "left_out" and c.get("scene") == scene
                     for c in a.summary["checks"])
     jumps, notes = {}, []
@@ -418,19 +422,20 @@ def jump_notes(scene, chosen, a, directory):
         if not j:
             continue
         jumps[backend] = j
-        detail = (" Under gravity a step's change of energy cannot be told from the free fall by the kinetic "
-                  "energy alone, so the step is not named." if j["gravity"] else explain_jump(directory, case, j))
+        detail = explain_jump(directory, case, j)
         notes.append(f"<li><b>{html.escape(backend)}</b> ({html.escape(case['id'])}): the energy changes by "
                      f"{100 * j['change']:+.2g} % of max K between t = {j['t0']:g} and t = {j['t1']:g}, one output "
                      f"interval; the median interval changes it by {100 * j['median']:.2g} %.{detail}</li>")
     if not notes:
         return jumps, ""
+    box2d = any(digest.base_backend(b) == "box2d" for b in jumps)
     return jumps, ("<p>Energy jumps in the cases shown:</p><ul>" + "".join(notes) + "</ul><p>Why the stepped rule "
                    "changes the energy in one step where several contacts meet (three disks in contact at once, a disk "
                    "touching a wall and a disk; `collide explain` reruns a case and names them): "
-                   "docs/stepping-rules.md, section “Energy at e = 1”. An "
-                   "isolated pair keeps its energy at e = 1 in the stepped rules; where Box2D's pair loses it, its "
-                   "restitution threshold made a slow collision inelastic (docs/box2d-baseline.md).</p>")
+                   "docs/stepping-rules.md, section 7, “Energy at e = 1”. An isolated pair keeps its energy at e = 1 "
+                   "in the stepped rules." + (" Where Box2D's isolated pair loses energy, look first at its "
+                   "restitution threshold, below which it makes a collision inelastic (docs/box2d-baseline.md)."
+                   if box2d else "") + "</p>")
 
 
 def scene_sections(summary, directory, a=None):
