@@ -56,7 +56,7 @@ double wall_penetration(const World& w, double x, double y, double r) {
 
 }  // namespace
 
-Metrics compute_metrics(const Scene& scene, const ParticleState<double>& s, double time) {
+Metrics compute_disk_metrics(const Scene& scene, const ParticleState<double>& s, double time) {
     Metrics m;
     m.time = time;
     CompensatedSum px, py, kinetic, potential;
@@ -80,7 +80,11 @@ Metrics compute_metrics(const Scene& scene, const ParticleState<double>& s, doub
     m.momentum_y = py.value();
     m.kinetic_energy = kinetic.value();
     m.potential_energy = potential.value();
+    return m;
+}
 
+Metrics compute_metrics(const Scene& scene, const ParticleState<double>& s, double time) {
+    Metrics m = compute_disk_metrics(scene, s, time);
     CompensatedSum depth_sum;
     for_each_overlap(scene, s, [&](double depth) {
         ++m.overlapping_pairs;

@@ -91,15 +91,6 @@ TEST(FrameDrawing, TheBoxKeepsItsAspectRatioInAnyFrameShape) {
     }
 }
 
-TEST(OverlapFinder, FindsAPairAcrossAPeriodicWallAtItsMinimumImageMidpoint) {
-    const Scene scene = test::box_scene(10, 10, Boundary::periodic);
-    const auto state = test::make_state({{0.2, 5.0, 0, 0, 0.5, 1}, {9.9, 5.0, 0, 0, 0.5, 1}, {5, 5, 0, 0, 0.5, 1}});
-    std::vector<OverlapMark> marks;
-    OverlapFinder().find(scene.world, state, marks);
-    ASSERT_EQ(marks.size(), 1u);
-    EXPECT_NEAR(marks[0].x, 0.05, 1e-12);
-}
-
 TEST(ColorMap, ViridisEndsAndClamps) {
     EXPECT_EQ(viridis(0), (Rgb{68, 1, 84}));
     EXPECT_EQ(viridis(1), (Rgb{253, 231, 37}));
