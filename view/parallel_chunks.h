@@ -24,13 +24,18 @@ struct ChunkPlan {
     std::size_t items = 0, size = 1, count = 0;  // [c * size, min(items, (c + 1) * size)) is chunk c
 };
 
-inline ChunkPlan plan_chunks(std::size_t items, int threads) {
-    const std::size_t wanted = items < parallel_from ? 1 : chunks_per_thread * std::size_t(thread_count(threads));
+// `items` cut into at most `chunks` chunks of equal size (the last one shorter).
+inline ChunkPlan split_into(std::size_t items, std::size_t chunks) {
     ChunkPlan p;
     p.items = items;
-    p.size = std::max<std::size_t>(1, (items + wanted - 1) / wanted);
+    p.size = std::max<std::size_t>(1, (items + chunks - 1) / std::max<std::size_t>(1, chunks));
     p.count = (items + p.size - 1) / p.size;
     return p;
+}
+
+// A few chunks per thread, or one chunk for a loop too short to share.
+inline ChunkPlan plan_chunks(std::size_t items, int threads) {
+    return split_into(items, items < parallel_from ? 1 : chunks_per_thread * std::size_t(thread_count(threads)));
 }
 
 // Calls body(chunk, begin, end) once for every chunk of `plan`, on up to `threads` threads.
