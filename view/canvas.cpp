@@ -115,6 +115,9 @@ void Canvas::draw_into_streaming_texture(const Geometry& g, int threads) {
         if (frame_texture_) SDL_DestroyTexture(frame_texture_);
         frame_texture_ = SDL_CreateTexture(renderer_, SDL_PIXELFORMAT_RGBA32, SDL_TEXTUREACCESS_STREAMING, w, h);
         if (!frame_texture_) sdl_failed("create the frame texture");
+        // A plain copy: SDL gives a texture with alpha blending by default, whose approximate
+        // arithmetic would change opaque pixels by one unit.
+        SDL_SetTextureBlendMode(frame_texture_, SDL_BLENDMODE_NONE);
         frame_texture_width_ = w, frame_texture_height_ = h;
     }
     void* pixels = nullptr;

@@ -50,7 +50,8 @@ void append_in_parallel(Geometry& g, std::size_t count, int threads, QuadOf&& qu
 // The filled disks, coloured by speed (stones grey).
 void add_disks(Geometry& g, const FrameLayout& l, const ParticleState<double>& s, double speed_max, int threads) {
     append_in_parallel(g, s.size(), threads, [&](std::size_t i) {
-        const Rgb c = s.is_stone(i) ? palette::stone : speed_color(std::hypot(s.vx[i], s.vy[i]), speed_max);
+        const double speed = std::sqrt(s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i]);
+        const Rgb c = s.is_stone(i) ? palette::stone : speed_color(speed, speed_max);
         return circle_quad(l, s.x[i], s.y[i], s.radius[i], c, AtlasCell::disk);
     });
 }

@@ -54,8 +54,28 @@ void Rasteriser::draw(const Geometry& g, Rgb background, const PixelTarget& targ
 
 void Rasteriser::draw_band(const Geometry& g, Rgb background, const PixelTarget& target, int row_begin,
                            int row_end) const {
-    fill_rows(target, {row_begin, row_end}, {0, target.width}, background);
+    clear_band(g, background, target, row_begin, row_end);
     for (const Quad& q : g.quads) draw_quad(q, target, row_begin, row_end);
+}
+
+// The background, except where the first quad is a solid one (the box) that will paint the
+// pixels opaquely anyway: each pixel of the page and of the box is written once.
+void Rasteriser::clear_band(const Geometry& g, Rgb background, const PixelTarget& target, int row_begin,
+                            int row_end) const {
+    Span skip_rows{row_begin, row_begin}, skip_columns{0, 0};
+    if (!g.quads.empty() && g.quads.front().cell == AtlasCell::solid) {
+        const Quad& first = g.quads.front();
+        skip_rows = covered_pixels(first.y0, first.y1, row_begin, row_end);
+        skip_columns = covered_pixels(first.x0, first.x1, 0, target.width);
+    }
+    for (int y = row_begin; y < row_end; ++y) {
+        if (y < skip_rows.begin || y >= skip_rows.end || skip_columns.begin >= skip_columns.end) {
+            fill_rows(target, {y, y + 1}, {0, target.width}, background);
+            continue;
+        }
+        fill_rows(target, {y, y + 1}, {0, skip_columns.begin}, background);
+        fill_rows(target, {y, y + 1}, {skip_columns.end, target.width}, background);
+    }
 }
 
 void Rasteriser::draw_quad(const Quad& q, const PixelTarget& target, int row_begin, int row_end) const {

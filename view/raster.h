@@ -31,6 +31,8 @@ public:
 private:
     void draw_band(const Geometry& geometry, Rgb background, const PixelTarget& target, int row_begin,
                    int row_end) const;
+    void clear_band(const Geometry& geometry, Rgb background, const PixelTarget& target, int row_begin,
+                    int row_end) const;
     void draw_quad(const Quad& quad, const PixelTarget& target, int row_begin, int row_end) const;
 
     std::vector<std::uint8_t> alpha_;  // the atlas (atlas.h)
