@@ -14,6 +14,7 @@ namespace {
 // one pixel, and a quad smaller than a pixel could fall between pixel centres and vanish.
 constexpr float min_half_pixels = 0.75f;
 
+// Appends one quad (pixel corners, y down).
 void add_quad(Geometry& g, float x0, float y0, float x1, float y1, Rgb c, AtlasCell cell) {
     g.quads.push_back({x0, y0, x1, y1, c, cell});
 }
@@ -25,6 +26,7 @@ Quad circle_quad(const FrameLayout& l, double x, double y, double r, Rgb c, Atla
     return {cx - h, cy - h, cx + h, cy + h, c, cell};
 }
 
+// One solid quad per lit font pixel, `scale` screen pixels square, from the top-left (x, y).
 void add_text(Geometry& g, float x, float y, int scale, const std::string& text, Rgb c) {
     const float s = float(scale);
     for (char ch : text) {

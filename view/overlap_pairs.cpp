@@ -5,23 +5,17 @@
 #include <limits>
 
 #include "core/compensated_sum.h"
+#include "physics/stepping_laws.h"
 #include "parallel_chunks.h"
 
 namespace collide::view {
 namespace {
-
-// The shortest displacement along a periodic axis of length `length`.
-double minimum_image(double d, double length) { return d - length * std::round(d / length); }
 
 // Brings a coordinate that a wrap took past the box back inside it.
 double wrap_into(double v, double lo, double hi) {
     if (v < lo) return v + (hi - lo);
     if (v >= hi) return v - (hi - lo);
     return v;
-}
-
-bool finite_disk(const ParticleState<double>& s, std::size_t i) {
-    return std::isfinite(s.x[i]) && std::isfinite(s.y[i]) && std::isfinite(s.vx[i]) && std::isfinite(s.vy[i]);
 }
 
 }  // namespace
@@ -55,7 +49,7 @@ void OverlapFinder::gather_in_slot_order(const ParticleState<double>& s, int thr
     parallel_chunks(plan_chunks(n, threads), threads, [&](std::size_t, std::size_t begin, std::size_t end) {
         for (std::size_t k = begin; k < end; ++k) {
             const std::size_t i = index[k];
-            const bool finite = finite_disk(s, i);
+            const bool finite = s.is_finite(i);
             x_[k] = finite ? s.x[i] : std::numeric_limits<double>::quiet_NaN();
             y_[k] = s.y[i];
             radius_[k] = s.radius[i];
@@ -73,8 +67,8 @@ void OverlapFinder::find_from_slots(std::size_t begin, std::size_t end, std::vec
             for (std::size_t b = std::max<std::size_t>(first, a + 1); b < last; ++b) {
                 double dx = x_[b] - xa, dy = y_[b] - ya;
                 if (periodic) {
-                    dx = minimum_image(dx, lx);
-                    dy = minimum_image(dy, ly);
+                    dx = WallLaw<double>::minimum_image(dx, lx);
+                    dy = WallLaw<double>::minimum_image(dy, ly);
                 }
                 const double contact = ra + radius_[b], d2 = dx * dx + dy * dy;
                 if (!(d2 < contact * contact)) continue;
