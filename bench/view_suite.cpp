@@ -1,8 +1,9 @@
 // Suite `view`: how fast `collide view` draws, headless, on the `cpu` backend (integrate-first
 // rule with 4 sub-steps, 2 threads; ParticleBox's setting) for N = 10^3, 10^4, 10^5 disks of the
-// benchmark gas. One frame = one time step dt, drawn off-screen at 1280x720 with the software
-// renderer, HUD and overlap marks included, exactly as the viewer draws it. The target is
-// 60 frames per second at N = 10^5 (docs/viewer.md records the figures).
+// benchmark gas. One frame = one time step dt, drawn off-screen at 1280x720 as `collide view
+// --headless` draws it: SDL's software renderer's surface, filled by the canvas's CPU rasteriser
+// (its path for software renderers), HUD and overlap marks included. The target is 60 frames
+// per second at N = 10^5 (docs/viewer.md records the figures).
 #include <chrono>
 #include <cstdio>
 

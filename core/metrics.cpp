@@ -16,11 +16,6 @@ double max_radius(const ParticleState<double>& s) {
     return r;
 }
 
-bool finite_disk(const ParticleState<double>& s, std::size_t i) {
-    return std::isfinite(s.x[i]) && std::isfinite(s.y[i]) && std::isfinite(s.vx[i]) &&
-           std::isfinite(s.vy[i]);
-}
-
 // Calls on_overlap(relative_depth) once for every overlapping pair i < j of finite disks.
 template <typename OnOverlap>
 void for_each_overlap(const Scene& scene, const ParticleState<double>& s, OnOverlap&& on_overlap) {
@@ -32,9 +27,9 @@ void for_each_overlap(const Scene& scene, const ParticleState<double>& s, OnOver
     const bool periodic = scene.periodic();
     const double lx = scene.world.width(), ly = scene.world.height();
     for (std::size_t i = 0; i < n; ++i) {
-        if (!finite_disk(s, i)) continue;
+        if (!s.is_finite(i)) continue;
         grid.for_each_candidate(s.x[i], s.y[i], [&](std::uint32_t j) {
-            if (j <= i || !finite_disk(s, j)) return;
+            if (j <= i || !s.is_finite(j)) return;
             double dx = s.x[i] - s.x[j], dy = s.y[i] - s.y[j];
             if (periodic) {
                 dx = WallLaw<double>::minimum_image(dx, lx);
@@ -56,13 +51,13 @@ double wall_penetration(const World& w, double x, double y, double r) {
 
 }  // namespace
 
-Metrics compute_metrics(const Scene& scene, const ParticleState<double>& s, double time) {
+Metrics compute_disk_metrics(const Scene& scene, const ParticleState<double>& s, double time) {
     Metrics m;
     m.time = time;
     CompensatedSum px, py, kinetic, potential;
     const double gx = scene.physics.gravity_x, gy = scene.physics.gravity_y;
     for (std::size_t i = 0; i < s.size(); ++i) {
-        if (!finite_disk(s, i)) {
+        if (!s.is_finite(i)) {
             ++m.nonfinite;
             continue;
         }
@@ -80,7 +75,11 @@ Metrics compute_metrics(const Scene& scene, const ParticleState<double>& s, doub
     m.momentum_y = py.value();
     m.kinetic_energy = kinetic.value();
     m.potential_energy = potential.value();
+    return m;
+}
 
+Metrics compute_metrics(const Scene& scene, const ParticleState<double>& s, double time) {
+    Metrics m = compute_disk_metrics(scene, s, time);
     CompensatedSum depth_sum;
     for_each_overlap(scene, s, [&](double depth) {
         ++m.overlapping_pairs;

@@ -26,6 +26,11 @@ struct Metrics {
 
 Metrics compute_metrics(const Scene& scene, const ParticleState<double>& state, double time);
 
+// The per-disk part of compute_metrics alone, O(N) and without a pair search: time, momentum,
+// energies, wall penetration, non-finite disks; the three overlap fields stay 0. For callers
+// that search the pairs themselves (the viewer lists them for its marks).
+Metrics compute_disk_metrics(const Scene& scene, const ParticleState<double>& state, double time);
+
 // Relative overlap depth (r_i + r_j - d)/(r_i + r_j) of every overlapping pair, for histograms.
 std::vector<double> overlap_depths(const Scene& scene, const ParticleState<double>& state);
 

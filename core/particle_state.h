@@ -4,6 +4,8 @@
 // the float backends keep a ParticleState<float> internally.
 #pragma once
 
+#include <cmath>
+
 #include <cstddef>
 #include <vector>
 
@@ -24,6 +26,10 @@ struct ParticleState {
     }
 
     bool is_stone(std::size_t i) const { return inv_mass[i] == Real(0); }
+    // Position and velocity are finite (metrics and overlap searches skip other disks).
+    bool is_finite(std::size_t i) const {
+        return std::isfinite(x[i]) && std::isfinite(y[i]) && std::isfinite(vx[i]) && std::isfinite(vy[i]);
+    }
 
     // Appends one disk; a stone keeps its mass but gets inverse mass 0 (kinematic).
     void append_disk(Real x0, Real y0, Real vx0, Real vy0, Real r, Real m, bool stone) {

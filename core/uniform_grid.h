@@ -89,6 +89,27 @@ public:
         }
     }
 
+    // Calls visit(begin, end) for the slot ranges of `sorted_index` that hold the 3x3 cell
+    // neighbourhood of cell (cx, cy): one range per row where the row's three cells are
+    // contiguous (away from the side walls and wraps), one per cell elsewhere.
+    template <typename Visit>
+    void for_each_neighbour_range(std::int64_t cx, std::int64_t cy, Visit&& visit) const {
+        for (int oy : offsets_y_) {
+            std::int64_t ny = cy + oy;
+            if (!wrap_or_skip(ny, cells_y_)) continue;
+            if (cx >= 1 && cx + 1 < cells_x_) {
+                visit(cell_start_[cell_index(cx - 1, ny)], cell_start_[cell_index(cx + 1, ny) + 1]);
+                continue;
+            }
+            for (int ox : offsets_x_) {
+                std::int64_t nx = cx + ox;
+                if (!wrap_or_skip(nx, cells_x_)) continue;
+                const std::int64_t c = cell_index(nx, ny);
+                visit(cell_start_[c], cell_start_[c + 1]);
+            }
+        }
+    }
+
     std::int64_t cells_x() const { return cells_x_; }
     std::int64_t cells_y() const { return cells_y_; }
     std::int64_t cell_count() const { return cells_x_ * cells_y_; }

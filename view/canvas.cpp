@@ -1,7 +1,5 @@
 #include "canvas.h"
 
-#include <algorithm>
-#include <cmath>
 #include <stdexcept>
 
 namespace collide::view {
@@ -11,16 +9,26 @@ namespace {
     throw std::runtime_error("SDL: cannot " + what + " (" + SDL_GetError() + ")");
 }
 
-// Coverage of a pixel by the band inner <= d <= outer, 1 px of linear smoothing at each
-// edge: smooth rims when a disk is drawn larger than the atlas, and an exact, opaque centre.
-std::uint8_t band_alpha(double d, double inner, double outer) {
-    const double a = std::clamp(outer - d + 0.5, 0.0, 1.0) * std::clamp(d - inner + 0.5, 0.0, 1.0);
-    return std::uint8_t(std::lround(255 * a));
+bool is_software(SDL_Renderer* renderer) {
+    SDL_RendererInfo info;
+    return SDL_GetRendererInfo(renderer, &info) == 0 && (info.flags & SDL_RENDERER_SOFTWARE);
+}
+
+// A quad as two triangles of SDL vertices sampling its atlas cell, colour from the vertices.
+void append_vertices(const Quad& q, std::vector<SDL_Vertex>& vertices, std::vector<int>& indices) {
+    const CellUv uv = cell_uv(q.cell);
+    const SDL_Color color{q.color.r, q.color.g, q.color.b, 255};
+    const int base = int(vertices.size());
+    vertices.push_back({{q.x0, q.y0}, color, {uv.u0, uv.v0}});
+    vertices.push_back({{q.x1, q.y0}, color, {uv.u1, uv.v0}});
+    vertices.push_back({{q.x1, q.y1}, color, {uv.u1, uv.v1}});
+    vertices.push_back({{q.x0, q.y1}, color, {uv.u0, uv.v1}});
+    for (int offset : {0, 1, 2, 0, 2, 3}) indices.push_back(base + offset);
 }
 
 }  // namespace
 
-Canvas::Canvas(int width, int height) {
+Canvas::Canvas(int width, int height, DrawPath path) : path_(path) {
     surface_ = SDL_CreateRGBSurfaceWithFormat(0, width, height, 32, SDL_PIXELFORMAT_RGBA32);
     if (!surface_) sdl_failed("create a " + std::to_string(width) + "x" + std::to_string(height) + " surface");
     renderer_ = SDL_CreateSoftwareRenderer(surface_);
@@ -35,10 +43,12 @@ Canvas::Canvas(const std::string& title, int width, int height, bool vsync) {
     if (!window_) sdl_failed("open a window");
     renderer_ = SDL_CreateRenderer(window_, -1, vsync ? SDL_RENDERER_PRESENTVSYNC : 0);
     if (!renderer_) sdl_failed("create a renderer");
+    path_ = is_software(renderer_) ? DrawPath::cpu_raster : DrawPath::render_geometry;
     create_atlas();
 }
 
 Canvas::~Canvas() {
+    if (frame_texture_) SDL_DestroyTexture(frame_texture_);
     if (atlas_) SDL_DestroyTexture(atlas_);
     if (renderer_) SDL_DestroyRenderer(renderer_);
     if (surface_) SDL_FreeSurface(surface_);
@@ -48,24 +58,14 @@ Canvas::~Canvas() {
     }
 }
 
-// The atlas: white shapes whose colour comes from the vertices (colour modulation), alpha
-// from the shape: a filled disk, a ring (outline) and a solid square.
+// The atlas texture: white, with the atlas alpha; colour modulation gives each quad its colour.
 void Canvas::create_atlas() {
-    const int w = atlas_cell * atlas_cells, h = atlas_cell;
-    std::vector<std::uint8_t> pixels(std::size_t(w * h) * 4, 255);
-    const double c = atlas_cell / 2.0, outer = c - 1.0, ring_width = 0.12 * atlas_cell;
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            const int cell = x / atlas_cell;
-            const double d = std::hypot(x % atlas_cell + 0.5 - c, y + 0.5 - c);
-            std::uint8_t alpha = 255;
-            if (cell == 0) alpha = band_alpha(d, -1.0, outer);
-            if (cell == 1) alpha = band_alpha(d, outer - ring_width, outer);
-            pixels[(std::size_t(y) * w + x) * 4 + 3] = alpha;
-        }
-    atlas_ = SDL_CreateTexture(renderer_, SDL_PIXELFORMAT_RGBA32, SDL_TEXTUREACCESS_STATIC, w, h);
+    const std::vector<std::uint8_t> alpha = atlas_alpha();
+    std::vector<std::uint8_t> pixels(alpha.size() * 4, 255);
+    for (std::size_t k = 0; k < alpha.size(); ++k) pixels[4 * k + 3] = alpha[k];
+    atlas_ = SDL_CreateTexture(renderer_, SDL_PIXELFORMAT_RGBA32, SDL_TEXTUREACCESS_STATIC, atlas_width, atlas_height);
     if (!atlas_) sdl_failed("create the disk texture");
-    if (SDL_UpdateTexture(atlas_, nullptr, pixels.data(), w * 4) != 0) sdl_failed("fill the disk texture");
+    if (SDL_UpdateTexture(atlas_, nullptr, pixels.data(), atlas_width * 4) != 0) sdl_failed("fill the disk texture");
     SDL_SetTextureBlendMode(atlas_, SDL_BLENDMODE_BLEND);
 }
 
@@ -81,13 +81,51 @@ int Canvas::height() const {
     return h;
 }
 
-void Canvas::draw(const Geometry& g) {
+void Canvas::draw(const Geometry& g, int threads) {
+    if (path_ == DrawPath::render_geometry) return draw_with_render_geometry(g);
+    if (window_) return draw_into_streaming_texture(g, threads);
+    draw_with_rasteriser(g, threads);
+}
+
+// Clears to the page colour and draws every quad in one SDL_RenderGeometry call.
+void Canvas::draw_with_render_geometry(const Geometry& g) {
     SDL_SetRenderDrawColor(renderer_, palette::page.r, palette::page.g, palette::page.b, 255);
     SDL_RenderClear(renderer_);
-    if (g.indices.empty()) return;
-    if (SDL_RenderGeometry(renderer_, atlas_, g.vertices.data(), int(g.vertices.size()), g.indices.data(),
-                           int(g.indices.size())) != 0)
+    if (g.quads.empty()) return;
+    vertices_.clear();
+    indices_.clear();
+    for (const Quad& q : g.quads) append_vertices(q, vertices_, indices_);
+    if (SDL_RenderGeometry(renderer_, atlas_, vertices_.data(), int(vertices_.size()), indices_.data(),
+                           int(indices_.size())) != 0)
         sdl_failed("draw the frame");
+}
+
+// Off-screen: the rasteriser writes the software renderer's own surface.
+void Canvas::draw_with_rasteriser(const Geometry& g, int threads) {
+    if (SDL_MUSTLOCK(surface_) && SDL_LockSurface(surface_) != 0) sdl_failed("lock the frame surface");
+    rasteriser_.draw(g, palette::page, {static_cast<std::uint8_t*>(surface_->pixels), surface_->w, surface_->h, surface_->pitch},
+                     threads);
+    if (SDL_MUSTLOCK(surface_)) SDL_UnlockSurface(surface_);
+}
+
+// On a window: the rasteriser fills a streaming texture of the window's size, copied once.
+void Canvas::draw_into_streaming_texture(const Geometry& g, int threads) {
+    const int w = width(), h = height();
+    if (!frame_texture_ || w != frame_texture_width_ || h != frame_texture_height_) {
+        if (frame_texture_) SDL_DestroyTexture(frame_texture_);
+        frame_texture_ = SDL_CreateTexture(renderer_, SDL_PIXELFORMAT_RGBA32, SDL_TEXTUREACCESS_STREAMING, w, h);
+        if (!frame_texture_) sdl_failed("create the frame texture");
+        // A plain copy: SDL gives a texture with alpha blending by default, whose approximate
+        // arithmetic would change opaque pixels by one unit.
+        SDL_SetTextureBlendMode(frame_texture_, SDL_BLENDMODE_NONE);
+        frame_texture_width_ = w, frame_texture_height_ = h;
+    }
+    void* pixels = nullptr;
+    int pitch = 0;
+    if (SDL_LockTexture(frame_texture_, nullptr, &pixels, &pitch) != 0) sdl_failed("lock the frame texture");
+    rasteriser_.draw(g, palette::page, {static_cast<std::uint8_t*>(pixels), w, h, pitch}, threads);
+    SDL_UnlockTexture(frame_texture_);
+    if (SDL_RenderCopy(renderer_, frame_texture_, nullptr, nullptr) != 0) sdl_failed("show the frame");
 }
 
 void Canvas::present() { SDL_RenderPresent(renderer_); }

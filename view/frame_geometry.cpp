@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "bitmap_font.h"
+#include "parallel_chunks.h"
 
 namespace collide::view {
 namespace {
@@ -13,28 +14,19 @@ namespace {
 // one pixel, and a quad smaller than a pixel could fall between pixel centres and vanish.
 constexpr float min_half_pixels = 0.75f;
 
+// Appends one quad (pixel corners, y down).
 void add_quad(Geometry& g, float x0, float y0, float x1, float y1, Rgb c, AtlasCell cell) {
-    // Texture coordinates of the cell; the solid cell is sampled well inside its border so
-    // that neighbouring cells never bleed in.
-    const float k = float(static_cast<int>(cell));
-    const float inset = cell == AtlasCell::solid ? 0.25f : 0.0f;
-    const float u0 = (k + inset) / atlas_cells, u1 = (k + 1 - inset) / atlas_cells;
-    const float v0 = inset, v1 = 1 - inset;
-    const SDL_Color color{c.r, c.g, c.b, 255};
-    const int base = int(g.vertices.size());
-    g.vertices.push_back({{x0, y0}, color, {u0, v0}});
-    g.vertices.push_back({{x1, y0}, color, {u1, v0}});
-    g.vertices.push_back({{x1, y1}, color, {u1, v1}});
-    g.vertices.push_back({{x0, y1}, color, {u0, v1}});
-    for (int offset : {0, 1, 2, 0, 2, 3}) g.indices.push_back(base + offset);
+    g.quads.push_back({x0, y0, x1, y1, c, cell});
 }
 
-void add_circle(Geometry& g, const FrameLayout& l, double x, double y, double r, Rgb c, AtlasCell cell) {
+// The quad of a disk or mark of radius r centred at (x, y), never under min_half_pixels.
+Quad circle_quad(const FrameLayout& l, double x, double y, double r, Rgb c, AtlasCell cell) {
     const float cx = l.px(x), cy = l.py(y);
     const float h = std::max(float(r * l.scale), min_half_pixels);
-    add_quad(g, cx - h, cy - h, cx + h, cy + h, c, cell);
+    return {cx - h, cy - h, cx + h, cy + h, c, cell};
 }
 
+// One solid quad per lit font pixel, `scale` screen pixels square, from the top-left (x, y).
 void add_text(Geometry& g, float x, float y, int scale, const std::string& text, Rgb c) {
     const float s = float(scale);
     for (char ch : text) {
@@ -47,11 +39,30 @@ void add_text(Geometry& g, float x, float y, int scale, const std::string& text,
     }
 }
 
-void add_disks(Geometry& g, const FrameLayout& l, const ParticleState<double>& s, double speed_max) {
-    for (std::size_t i = 0; i < s.size(); ++i) {
-        const Rgb c = s.is_stone(i) ? palette::stone : speed_color(std::hypot(s.vx[i], s.vy[i]), speed_max);
-        add_circle(g, l, s.x[i], s.y[i], s.radius[i], c, AtlasCell::disk);
-    }
+// Appends quad_of(i) for i in [0, count), written in place by chunks on up to `threads` threads.
+template <typename QuadOf>
+void append_in_parallel(Geometry& g, std::size_t count, int threads, QuadOf&& quad_of) {
+    const std::size_t base = g.quads.size();
+    g.quads.resize(base + count);
+    parallel_chunks(plan_chunks(count, threads), threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) g.quads[base + i] = quad_of(i);
+    });
+}
+
+// The filled disks, coloured by speed (stones grey).
+void add_disks(Geometry& g, const FrameLayout& l, const ParticleState<double>& s, double speed_max, int threads) {
+    append_in_parallel(g, s.size(), threads, [&](std::size_t i) {
+        const double speed = std::sqrt(s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i]);
+        const Rgb c = s.is_stone(i) ? palette::stone : speed_color(speed, speed_max);
+        return circle_quad(l, s.x[i], s.y[i], s.radius[i], c, AtlasCell::disk);
+    });
+}
+
+// The comparison state's outlines.
+void add_outlines(Geometry& g, const FrameLayout& l, const ParticleState<double>& s, int threads) {
+    append_in_parallel(g, s.size(), threads, [&](std::size_t i) {
+        return circle_quad(l, s.x[i], s.y[i], s.radius[i], palette::outline, AtlasCell::ring);
+    });
 }
 
 void add_legend(Geometry& g, const FrameLayout& l, double speed_max) {
@@ -87,17 +98,15 @@ double default_speed_max(const Scene& scene, const ParticleState<double>& initia
     return v > 0 ? v : 1;
 }
 
-void build_frame(const FrameContent& content, const FrameLayout& l, Geometry& g) {
+void build_frame(const FrameContent& content, const FrameLayout& l, Geometry& g, int threads) {
     g.clear();
     add_quad(g, l.box.x, l.box.y, l.box.x + l.box.w, l.box.y + l.box.h, palette::box, AtlasCell::solid);
-    if (content.state) add_disks(g, l, *content.state, content.speed_max);
+    if (content.state) add_disks(g, l, *content.state, content.speed_max, threads);
     if (content.overlaps)
         for (const OverlapMark& m : *content.overlaps)
-            add_circle(g, l, m.x, m.y, std::max(0.35 * m.radius, 2.0 / l.scale), palette::overlap, AtlasCell::disk);
-    if (content.compare)
-        for (std::size_t i = 0; i < content.compare->size(); ++i)
-            add_circle(g, l, content.compare->x[i], content.compare->y[i], content.compare->radius[i],
-                       palette::outline, AtlasCell::ring);
+            g.quads.push_back(circle_quad(l, m.x, m.y, std::max(0.35 * m.radius, 2.0 / l.scale), palette::overlap,
+                                          AtlasCell::disk));
+    if (content.compare) add_outlines(g, l, *content.compare, threads);
     add_legend(g, l, content.speed_max);
     // Cut to the frame's width: a narrow frame (a strip panel) must not spill into the next.
     const auto fits = std::size_t(std::max(0.0f, (float(l.width) - 2 * l.hud_x) / float(glyph_advance * l.text_scale)));

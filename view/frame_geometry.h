@@ -1,26 +1,21 @@
-// The one drawing path. A frame is a list of textured quads: the box, one quad per disk, a dot
-// per overlapping pair, one outline per disk of the comparison state, the legend and every lit
-// pixel of the HUD text. All sample one small texture (the atlas: a filled disk, a ring and a
-// solid square), so the whole frame is a single SDL_RenderGeometry call, as in ParticleBox; a
-// textured quad costs 4 vertices where a smooth triangle fan costs 17 or more.
+// The one frame description. A frame is a list of textured quads: the box, one quad per disk,
+// a dot per overlapping pair, one outline per disk of the comparison state, the legend and every
+// lit pixel of the HUD text. Each quad samples one cell of the atlas (a filled disk, a ring or a
+// solid square) in its own colour. The canvas draws the list either in a single
+// SDL_RenderGeometry call (as in ParticleBox; a quad is 4 vertices where a smooth triangle fan is
+// 17 or more) or with its CPU rasteriser (software renderers): the same quads, the same atlas.
 #pragma once
-
-#include <SDL2/SDL.h>
 
 #include <string>
 #include <vector>
 
+#include "atlas.h"
 #include "color_map.h"
 #include "core/particle_state.h"
 #include "frame_layout.h"
 #include "overlap_pairs.h"
 
 namespace collide::view {
-
-// The cells of the atlas texture, side by side, each atlas_cell pixels square.
-enum class AtlasCell { disk = 0, ring = 1, solid = 2 };
-inline constexpr int atlas_cell = 64;
-inline constexpr int atlas_cells = 3;
 
 // What one frame shows. Pointers may be null (no comparison state).
 struct FrameContent {
@@ -31,14 +26,22 @@ struct FrameContent {
     std::string hud;       // the line of text on top
 };
 
-struct Geometry {
-    std::vector<SDL_Vertex> vertices;
-    std::vector<int> indices;
-    void clear() { vertices.clear(); indices.clear(); }
+// An axis-aligned quad in pixels (x0 < x1, y0 < y1; y down) showing one atlas cell in a colour.
+struct Quad {
+    float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    Rgb color;
+    AtlasCell cell = AtlasCell::solid;
 };
 
-// Builds the quads of `content` for `layout` into `out` (cleared first).
-void build_frame(const FrameContent& content, const FrameLayout& layout, Geometry& out);
+// The quads of a frame, drawn in order (later ones on top) over the page colour.
+struct Geometry {
+    std::vector<Quad> quads;
+    void clear() { quads.clear(); }
+};
+
+// Builds the quads of `content` for `layout` into `out` (cleared first); the disks' quads on up
+// to `threads` threads (<= 0: OpenMP's default).
+void build_frame(const FrameContent& content, const FrameLayout& layout, Geometry& out, int threads = 0);
 
 // The colour a disk of this speed gets (exposed for tests and the legend).
 Rgb speed_color(double speed, double speed_max);

@@ -88,9 +88,10 @@ FrameTimes draw_frame(ViewSession& session, Canvas& canvas, Geometry& geometry, 
     if (output_steps > 0) session.advance(output_steps);
     const auto simulated = Clock::now();
     if (output_steps > 0) session.analyse();
-    build_frame(session.frame(extra_hud), make_layout(session.scene().world, canvas.width(), canvas.height()), geometry);
+    const FrameLayout layout = make_layout(session.scene().world, canvas.width(), canvas.height());
+    build_frame(session.frame(extra_hud), layout, geometry, session.threads());
     const auto built = Clock::now();
-    canvas.draw(geometry);
+    canvas.draw(geometry, session.threads());
     canvas.flush();
     t.simulation = seconds_between(start, simulated);
     t.geometry = seconds_between(simulated, built);

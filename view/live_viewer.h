@@ -20,7 +20,7 @@ struct ViewOptions {
 struct FrameTimes {
     double simulation = 0;       // advance_to + read_state of the backend(s)
     double geometry = 0;         // metrics, overlap marks and the quads of the frame
-    double draw = 0;             // the one SDL_RenderGeometry call, until the pixels are written
+    double draw = 0;             // the canvas's drawing of the quads, until the pixels are written
 };
 
 // Advances `session` by `output_steps` (0: redraw only) and draws the frame on `canvas`.

@@ -68,7 +68,7 @@ public:
         c.compare = ref_ ? &ref_state_ : nullptr;
         c.overlaps = &overlaps_;
         c.speed_max = speed_max_;
-        c.hud = physics_hud(run_.scene(), initial_, compute_metrics(run_.scene(), state_, run_.time(k))) + "  " +
+        c.hud = physics_hud(run_.scene(), initial_, frame_metrics(run_.scene(), state_, run_.time(k), overlaps_)) + "  " +
                 run_.backend() + (ref_ ? " (OUTLINES " + ref_->backend() + ")" : "");
         build_frame(c, make_layout(run_.scene().world, canvas_.width(), canvas_.height()), geometry_);
         canvas_.draw(geometry_);

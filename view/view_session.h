@@ -1,7 +1,7 @@
 // ViewSession: a scene advanced by one backend (and optionally by a second one to compare with,
 // e.g. the exact `event` solver), one output step at a time, through the common Solver
-// interface. It keeps what a frame shows: the states, their metrics, the overlapping pairs, and
-// the time each part took (for the HUD and `collide bench view`).
+// interface. It keeps what a frame shows: the states, their metrics, the overlapping pairs (one
+// search serves both), and the time each part took (for the HUD and `collide bench view`).
 #pragma once
 
 #include <memory>
@@ -29,6 +29,7 @@ public:
     FrameContent frame(const std::string& extra_hud) const;
 
     const Scene& scene() const { return scene_; }
+    int threads() const { return options_.threads; }  // also the drawing's (0: all cores)
     std::size_t disk_count() const { return initial_.size(); }
     double time() const;
     double last_simulation_seconds() const { return simulation_seconds_; }

@@ -76,6 +76,29 @@ TEST_P(GridVsBruteForce, SmallBoxWithFewCells) {
     }
 }
 
+TEST_P(GridVsBruteForce, NeighbourRangesHoldExactlyTheCandidates) {
+    // Every cell, also in boxes of 1 and 2 cells per axis: the slot ranges must name the same
+    // disks as for_each_candidate, each once.
+    for (double width : {1.0, 1.7, 2.5, 10.0}) {
+        const Scene scene = test::box_scene(width, 7.0, GetParam());
+        const auto s = random_overlapping_state(scene, 200, 0.4, 11);
+        UniformGrid<double> grid;
+        grid.configure(scene.world, 0.8);
+        grid.build(s.x.data(), s.y.data(), s.size());
+        for (std::int64_t cy = 0; cy < grid.cells_y(); ++cy)
+            for (std::int64_t cx = 0; cx < grid.cells_x(); ++cx) {
+                const double px = scene.world.xmin + (double(cx) + 0.5) * scene.world.width() / double(grid.cells_x());
+                const double py = scene.world.ymin + (double(cy) + 0.5) * scene.world.height() / double(grid.cells_y());
+                std::multiset<std::uint32_t> from_candidates, from_ranges;
+                grid.for_each_candidate(px, py, [&](std::uint32_t j) { from_candidates.insert(j); });
+                grid.for_each_neighbour_range(cx, cy, [&](std::uint32_t begin, std::uint32_t end) {
+                    for (std::uint32_t k = begin; k < end; ++k) from_ranges.insert(grid.sorted_index()[k]);
+                });
+                EXPECT_EQ(from_ranges, from_candidates) << "width " << width << " cell " << cx << "," << cy;
+            }
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Boundaries, GridVsBruteForce,
                          ::testing::Values(Boundary::reflect, Boundary::periodic),
                          [](const auto& info) { return std::string(to_string(info.param)); });
