@@ -81,9 +81,11 @@ TEST(EnergyGate, RestitutionSlightlyBelowOneFails) {
 
 // An impulse applied twice: J = -(1 + e) u_n / (w_i + w_j) doubled at e = 1 is the impulse of
 // e = 3, which multiplies the normal relative speed by -3 and gains energy at every collision
-// (the gas heats without bound, so half a time unit suffices).
+// (the gas heats without bound; a tenth of a time unit, 0.26 collisions per disk, each gaining
+// of the order of a disk's energy, already exceeds the bound many times over; longer runs heat
+// the gas until every step is crowded with contacts and cost minutes under the sanitizers).
 TEST(EnergyGate, ImpulseAppliedTwiceFails) {
-    const Scene s = gas_scene(0.5);
+    const Scene s = gas_scene(0.1);
     Scene defect = s;
     defect.physics.restitution = 3.0;
     const CheckResult c = energy_check_of(s, defect);
