@@ -1,16 +1,20 @@
 #include "case_plan.h"
 
-#include <cstdio>
+#include <charconv>
+#include <map>
 
 #include "backend_variant.h"
 
 namespace collide::validation {
 namespace {
 
+// The shortest text that reads back as the same double (std::to_chars without a precision:
+// round-trip by the C++17 standard). "%g" kept six digits, so dt = 0.0010000001 and 0.001
+// shared an id and one case's record overwrote the other's.
 std::string format_number(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
+    char buf[64];
+    const auto [end, error] = std::to_chars(buf, buf + sizeof buf, v);
+    return error == std::errc() ? std::string(buf, end) : std::string("?");
 }
 
 std::string make_id(const CaseSpec& c) {
@@ -72,6 +76,30 @@ const BackendVariant* find_variant(const std::string& label, const Suite& suite)
     for (const auto& v : suite.variants) names += ", " + v.label;
     throw SuiteError(suite.source_path + ": backends: unknown backend '" + name +
                      "'; expected \"all\" or names from: " + names);
+}
+
+// Where a case comes from in the suite file, for messages: "suite.toml:12 ([[scene]] 'gas')".
+std::string origin(const Suite& suite, const CaseSpec& c) {
+    const SuiteScene& entry = suite.scenes[c.scene_index];
+    std::string where = suite.source_path.empty() ? std::string("suite") : suite.source_path;
+    if (entry.line) where += ":" + std::to_string(entry.line);
+    return where + " ([[scene]] #" + std::to_string(c.scene_index + 1) + " '" + entry.name + "')";
+}
+
+// A case id names the case's record and run file, its --resume entry and its report row: two
+// cases with one id would write one file and lose the other result. Refused before any case
+// runs, naming both sources and the usual causes.
+void refuse_duplicate_ids(const Suite& suite, const std::vector<CaseSpec>& cases) {
+    std::map<std::string, std::size_t> first;
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+        const auto [it, inserted] = first.emplace(cases[i].id, i);
+        if (inserted) continue;
+        const CaseSpec& a = cases[it->second];
+        const CaseSpec& b = cases[i];
+        throw SuiteError(origin(suite, b) + ": case '" + b.id + "' is planned twice (also by " + origin(suite, a) +
+                         "); each case needs its own id: give scenes that share a file stem different `name`s (with `path` naming each file), "
+                         "and list each seed, dt and `set` value once");
+    }
 }
 
 }  // namespace
@@ -136,6 +164,7 @@ std::vector<CaseSpec> plan_cases(const Suite& suite, const std::vector<Scene>& s
                         }
         }
     }
+    refuse_duplicate_ids(suite, cases);
     return cases;
 }
 

@@ -70,6 +70,58 @@ TEST(SuiteFile, PlanIsScenesTimesBackendsTimesSweepTimesSeedsWithTheReferenceRun
     EXPECT_EQ(ids.size(), cases.size()) << "case ids must be unique";
 }
 
+// Plans the suite on event and step and returns the SuiteError's message ("" when it plans).
+std::string plan_error(const Suite& suite, const std::vector<Scene>& scenes) {
+    const std::vector<BackendInfo> backends = {test::test_backend("event", test::Fault::none),
+                                               test::test_backend("step", test::Fault::none)};
+    try {
+        plan_cases(suite, scenes, select_backends(suite, backends));
+    } catch (const SuiteError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+// Two cases with one id wrote one record, and summary.json listed it twice: one result lost.
+TEST(SuiteFile, CasesThatWouldShareAnIdAreRefusedBeforeAnyRuns) {
+    auto suite = test::test_suite(test::two_disk_scene(), {"all"});
+    suite.source_path = "suites/twice.toml";
+    suite.scenes[0].line = 7;
+    suite.scenes.push_back(suite.scenes[0]);  // a repeated [[scene]] (or two files with one stem)
+    suite.scenes[1].line = 12;
+    std::string msg = plan_error(suite, {test::two_disk_scene(), test::two_disk_scene()});
+    EXPECT_NE(msg.find("planned twice"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("suites/twice.toml:12"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("suites/twice.toml:7"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("`name`"), std::string::npos) << msg;
+
+    suite.scenes.pop_back();
+    suite.scenes[0].seeds = {3, 3};  // a repeated seed
+    msg = plan_error(suite, {test::two_disk_scene()});
+    EXPECT_NE(msg.find("seed3"), std::string::npos) << msg;
+
+    suite.scenes[0].seeds = {3};
+    suite.scenes[0].dt = {0.01, 0.01};  // a repeated dt
+    EXPECT_NE(plan_error(suite, {test::two_disk_scene()}).find("planned twice"), std::string::npos);
+}
+
+// "%g" printed dt = 0.0010000001 and 0.001 alike; the id must read back as the case's dt.
+TEST(SuiteFile, DtAndParameterValuesInIdsRoundTrip) {
+    auto suite = test::test_suite(test::two_disk_scene(), {"step"});
+    suite.scenes[0].dt = {0.001, 0.0010000001, 1.0 / 3.0};
+    suite.scenes[0].set = {SceneParameter{"world.restitution", {0.9, 0.90000001}}};
+    const std::vector<BackendInfo> backends = {test::test_backend("step", test::Fault::none)};
+    const auto cases = plan_cases(suite, {test::two_disk_scene()}, select_backends(suite, backends));
+    std::set<std::string> ids;
+    for (const auto& c : cases) {
+        ids.insert(c.id);
+        const auto at = c.id.find("__dt");
+        ASSERT_NE(at, std::string::npos) << c.id;
+        EXPECT_EQ(std::stod(c.id.substr(at + 4)), *c.dt) << c.id;
+    }
+    EXPECT_EQ(ids.size(), cases.size()) << "3 dt x 2 restitutions x seeds, each its own id";
+}
+
 TEST(SuiteFile, IterationsSweepOnlyMultipliesBackendsThatHaveIterations) {
     auto suite = test::test_suite(test::two_disk_scene(), {"all"});
     suite.scenes[0].iterations = {8, 16, 32};
