@@ -1,5 +1,6 @@
 #include "case_plan.h"
 
+#include <algorithm>
 #include <charconv>
 #include <map>
 
@@ -24,6 +25,12 @@ std::string make_id(const CaseSpec& c) {
     if (c.substeps) id += "__sub" + std::to_string(*c.substeps);
     if (c.iterations) id += "__it" + std::to_string(*c.iterations);
     return id + "__seed" + std::to_string(c.seed);
+}
+
+// A [[scene]] with `backends = [...]` runs on those alone (the physics scenes: event only,
+// where the other backends would only spend the suite's time budget).
+bool runs_on(const SuiteScene& entry, const std::string& backend) {
+    return entry.backends.empty() || std::find(entry.backends.begin(), entry.backends.end(), backend) != entry.backends.end();
 }
 
 // A sweep with no values is one point: "the scene's own setting".
@@ -102,6 +109,15 @@ void refuse_duplicate_ids(const Suite& suite, const std::vector<CaseSpec>& cases
     }
 }
 
+// A misspelt name in a [[scene]]'s `backends` would silently run the scene on nothing.
+void refuse_unknown_scene_backends(const Suite& suite, const std::vector<BackendInfo>& backends) {
+    for (const SuiteScene& entry : suite.scenes)
+        for (const std::string& name : entry.backends)
+            if (std::none_of(backends.begin(), backends.end(), [&](const BackendInfo& b) { return b.name == name; }))
+                throw SuiteError(suite.source_path + ":" + std::to_string(entry.line) + ": [[scene]] '" + entry.name +
+                                 "'.backends: '" + name + "' is not one of the suite's backends");
+}
+
 }  // namespace
 
 std::vector<BackendInfo> select_backends(const Suite& suite, const std::vector<BackendInfo>& available) {
@@ -129,11 +145,13 @@ std::vector<BackendInfo> select_backends(const Suite& suite, const std::vector<B
 
 std::vector<CaseSpec> plan_cases(const Suite& suite, const std::vector<Scene>& scenes,
                                  const std::vector<BackendInfo>& backends) {
+    refuse_unknown_scene_backends(suite, backends);
     std::vector<CaseSpec> cases;
     for (std::size_t s = 0; s < suite.scenes.size(); ++s) {
         const SuiteScene& entry = suite.scenes[s];
         const auto& seeds = entry.seeds.empty() ? suite.seeds : entry.seeds;
         for (const BackendInfo& backend : backends) {
+            if (!runs_on(entry, backend.name)) continue;
             const bool reference = backend.name == suite.reference;
             const auto refused = backend.supports(case_scene(scenes[s], entry, CaseSpec{}));
             // The reference solves the exact dynamics: dt, substeps and iterations mean nothing to

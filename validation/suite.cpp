@@ -9,6 +9,7 @@
 
 #include "core/scene_loader.h"
 #include "core/toml_fields.h"
+#include "physics_rows.h"
 
 namespace collide::validation {
 
@@ -76,6 +77,20 @@ public:
                 fail(key, "an array of " + what);
             }
             out.push_back(*v);
+        }
+        return out;
+    }
+
+    // An optional non-empty array of strings (empty when the key is absent).
+    std::vector<std::string> strings(const std::string& key, const std::string& what) const {
+        std::vector<std::string> out;
+        const toml::node* node = table_.get(key);
+        if (!node) return out;
+        const toml::array* array = node->as_array();
+        if (!array || array->empty()) fail(key, "a non-empty array of " + what);
+        for (const auto& element : *array) {
+            if (!element.is_string()) fail(key, what);
+            out.push_back(*element.value<std::string>());
         }
         return out;
     }
@@ -215,11 +230,24 @@ std::vector<SceneParameter> read_parameter_sweeps(const toml::table& t, const st
     return out;
 }
 
+// `physics = ["equation_of_state", ...]`: each a row of physics_row_kinds().
+std::vector<std::string> read_physics_rows(const TableReader& r) {
+    std::string names;
+    for (const auto& k : physics_row_kinds()) names += (names.empty() ? "" : ", ") + std::string("\"") + k.name + "\"";
+    std::vector<std::string> rows = r.strings("physics", "an array of row names from " + names);
+    for (const std::string& row : rows) {
+        const auto& kinds = physics_row_kinds();
+        if (std::none_of(kinds.begin(), kinds.end(), [&](const PhysicsRowKind& k) { return row == k.name; }))
+            r.fail("physics", "row names from " + names + " (not \"" + row + "\")");
+    }
+    return rows;
+}
+
 SuiteScene read_scene(const toml::table& t, const std::string& file, int index, const std::string& dir,
                       const std::string& scene_dir) {
     TableReader r(t, file, "[[scene]] #" + std::to_string(index));
     r.only({"name", "path", "compare", "dt", "substeps", "iterations", "seeds", "duration", "output_interval", "set",
-            "frames"});
+            "frames", "physics", "backends"});
     SuiteScene s;
     const auto name = r.string("name");
     const auto path = r.string("path");
@@ -244,6 +272,8 @@ SuiteScene read_scene(const toml::table& t, const std::string& file, int index, 
     s.output_interval = r.positive("output_interval");
     s.frames = r.boolean("frames");
     s.set = read_parameter_sweeps(t, file, "[[scene]] #" + std::to_string(index));
+    s.physics = read_physics_rows(r);
+    s.backends = r.strings("backends", "an array of backend names");
     // Where the run settings a case may break are set (checked against the scene later).
     s.line = int(t.source().begin.line);
     for (const char* key : {"output_interval", "duration", "dt"})
@@ -264,7 +294,7 @@ Suite parse_suite(const std::string& text, const std::string& file, const std::s
     }
     TableReader r(root, file, "");
     r.only({"name", "description", "scene_dir", "backends", "reference", "seeds", "time_limit",
-            "warmup_fraction", "stability", "output", "tolerances", "scene", "variant"});
+            "warmup_fraction", "stability", "output", "tolerances", "scene", "variant", "reference_dir"});
     Suite suite;
     suite.source_path = file;
     suite.name = r.string("name").value_or(std::filesystem::path(file).stem().string());
@@ -305,6 +335,9 @@ Suite parse_suite(const std::string& text, const std::string& file, const std::s
     read_tolerances(root, file, suite.tolerances);
     suite.variants = read_variants(root, file);
     const std::string scene_dir = r.string("scene_dir").value_or("../../data/scenes");
+    const std::filesystem::path reference_dir = r.string("reference_dir").value_or("../../data/references");
+    suite.reference_dir = (reference_dir.is_relative() ? std::filesystem::path(dir) / reference_dir : reference_dir)
+                              .lexically_normal().string();
     const toml::node* scenes = root.get("scene");
     if (!scenes || !scenes->is_array_of_tables() || scenes->as_array()->empty())
         r.fail("scene", "one or more [[scene]] tables");

@@ -51,6 +51,8 @@ struct SuiteScene {
     std::optional<double> output_interval;
     std::optional<bool> frames;       // overrides [output].frames for this scene's cases
     int line = 0;                     // in the suite file: of dt (or the overrides), else [[scene]]
+    std::vector<std::string> physics; // rows of "Reference against physics" it feeds (physics_rows.h)
+    std::vector<std::string> backends;// only these backends run it (empty: the suite's backends)
 };
 
 // One backend run with settings of its own, reported as a backend of its own: the suite's
@@ -78,6 +80,7 @@ struct Suite {
     std::string name;
     std::string description;
     std::string source_path;          // the suite file ("" when built in code)
+    std::string reference_dir;        // published references (data/references), resolved
     std::vector<std::string> backends;  // names; {"all"} = every backend given to the runner,
                                         // then every variant whose base is among them
     std::vector<BackendVariant> variants;

@@ -30,6 +30,11 @@ std::size_t SuiteOutcome::count(CheckStatus s) const {
     return n;
 }
 
+std::size_t SuiteOutcome::physics_failures() const {
+    return std::size_t(std::count_if(physics.rows.begin(), physics.rows.end(),
+                                     [](const PhysicsRow& r) { return r.verdict == PhysicsVerdict::fail; }));
+}
+
 namespace {
 
 // The scene of every (scene, parameter point) of the suite, built before any case runs so that
@@ -237,6 +242,9 @@ SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& avail
     outcome.checks.insert(outcome.checks.end(), comparisons.checks.begin(), comparisons.checks.end());
     apply_variant_leave_outs(outcome.checks, suite.variants);
     outcome.work_precision = std::move(comparisons.work_precision);
+    outcome.physics = compare_with_physics(suite, outcome.cases, [&](const CaseSpec& c) -> const Scene& {
+        return case_scenes.scene(c);
+    });
     outcome.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     write_summary_json(suite, outcome, options.output_dir + "/summary.json");

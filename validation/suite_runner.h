@@ -18,6 +18,7 @@
 #include "case_result.h"
 #include "checks.h"
 #include "core/backend_registry.h"
+#include "physics_rows.h"
 #include "reference_comparison.h"
 #include "stability.h"
 #include "suite.h"
@@ -38,11 +39,13 @@ struct SuiteOutcome {
     std::vector<CheckResult> checks;
     std::vector<Classification> classifications;  // parallel to cases; empty unless suite.stability
     std::vector<WorkPrecisionLine> work_precision;
+    PhysicsComparison physics;                     // "Reference against physics" (physics_rows.h)
     std::size_t cases_run = 0, cases_resumed = 0;
     double wall_seconds = 0;
     std::map<std::string, std::string> execution;  // ranks, hosts, jobs per rank (summary provenance)
     std::size_t count(CheckStatus s) const;
-    bool passed() const { return count(CheckStatus::fail) == 0; }
+    std::size_t physics_failures() const;
+    bool passed() const { return count(CheckStatus::fail) == 0 && physics_failures() == 0; }
 };
 
 // `backends` are the backends the suite may use (all_backends() in the program, test doubles

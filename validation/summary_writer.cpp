@@ -99,6 +99,32 @@ Json line_json(const WorkPrecisionLine& line) {
     return o.json();
 }
 
+Json physics_row_json(const PhysicsRow& r) {
+    Object o;
+    o.text("row", r.row).text("scene", r.scene).text("backend", r.backend).text("group", r.group)
+        .text("parameter_name", r.parameter_name).number("parameter", r.parameter).text("measured", r.measured)
+        .text("estimator", r.estimator).number("value", r.value).number("standard_error", r.standard_error)
+        .integer("replicates", (long long)r.replicates).number("reference", r.reference)
+        .number("reference_uncertainty", r.reference_uncertainty).text("reference_name", r.reference_name)
+        .text("citation", r.citation).number("second_reference", r.second_reference)
+        .text("second_reference_name", r.second_reference_name).text("statistic", r.statistic)
+        .number("score", r.score).boolean("resolved", r.resolved).text("verdict", to_string(r.verdict))
+        .text("detail", r.detail);
+    return o.json();
+}
+
+Json physics_json(const PhysicsComparison& p) {
+    Object o;
+    o.field("rows", array(p.rows, physics_row_json));
+    o.field("curves", array(p.curves, [](const ReferenceCurve& c) {
+        Object q;
+        q.text("name", c.name).text("citation", c.citation).field("eta", c.eta).field("z", c.z);
+        return q.json();
+    }));
+    o.number("z_max", physics_z_max);
+    return o.json();
+}
+
 // A full disk used to leave an empty file or PATH.partial behind; now it throws naming why.
 void write_atomically(const std::string& path, const std::string& text) { write_text_file_atomically(path, text); }
 
@@ -131,7 +157,8 @@ void write_summary_json(const Suite& suite, const SuiteOutcome& outcome, const s
     Object counts;
     counts.integer("pass", (long long)outcome.count(CheckStatus::pass))
         .integer("fail", (long long)outcome.count(CheckStatus::fail))
-        .integer("left_out", (long long)outcome.count(CheckStatus::left_out));
+        .integer("left_out", (long long)outcome.count(CheckStatus::left_out))
+        .integer("physics_fail", (long long)outcome.physics_failures());
     std::map<std::string, std::string> seeds;
     for (const auto& s : suite.scenes) {
         std::string list;
@@ -157,7 +184,8 @@ void write_summary_json(const Suite& suite, const SuiteOutcome& outcome, const s
         .field("seeds", string_map(seeds)).field("scene_files", string_map(scene_files))
         .field("cases", cases_json(outcome))
         .field("checks", array(outcome.checks, check_json))
-        .field("work_precision", array(outcome.work_precision, line_json));
+        .field("work_precision", array(outcome.work_precision, line_json))
+        .field("physics", physics_json(outcome.physics));
     // Bytes that are not UTF-8 (in a path or a diagnostic) are replaced, not fatal: the summary
     // of a suite that ran for hours must still be written.
     write_atomically(path, root.json().dump(1, ' ', false, Json::error_handler_t::replace) + "\n");

@@ -25,6 +25,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import animations  # noqa: E402
 import digest  # noqa: E402
 import figures  # noqa: E402
+import physics  # noqa: E402
 import stability  # noqa: E402
 from collide_program import run_collide  # noqa: E402
 from digest import ReportInputError, anchor  # noqa: E402
@@ -169,6 +170,10 @@ def verdict_text(a):
                 f"({counts['fail']} failed checks are the map's findings)")
     else:
         tail = f"{counts['pass']} checks passed, {counts['fail']} failed, {counts['left_out']} left out"
+        judged = [r for r in physics.rows(s) if r["verdict"] != "shown"]
+        if judged:
+            tail += (f"; reference against physics: {sum(r['verdict'] == 'pass' for r in judged)} of "
+                     f"{len(judged)} rows pass")
     return f"{word}: {tail}; {len(s['cases'])} cases in {s['wall_seconds']:.1f} s (commit {commit})"
 
 
@@ -225,6 +230,8 @@ def toc(a):
     items = []
     if a.stability:
         items.append("<li><a href='#stability'>Stability: first failures and maps</a></li>")
+    if physics.rows(a.summary):
+        items.append("<li><a href='#physics'>Reference against physics</a></li>")
     items += ["<li><a href='#headline'>Work against precision (headline)</a></li>",
               "<li><a href='#failures'>1. Failures</a></li>",
               "<li><a href='#checks'>2. Checks by scene and backend</a> · <a href='checks.html'>every check</a></li>",
@@ -504,6 +511,8 @@ table.digest { font-size: 12px; margin: 0.2em 0 0.4em 0; } table.digest tr.total
 .top .main { flex: 1 1 auto; min-width: 0; overflow-x: auto; }
 nav#toc { flex: 0 0 290px; font-size: 12px; border: 1px solid #ddd; padding: 4px 8px; background: #fafafa; }
 nav#toc ul { margin: 2px 0; padding-left: 16px; } nav#toc p { margin: 4px 0; }
+div.physics-top { display: flex; gap: 12px; align-items: flex-start; } div.physics-top figure { margin: 0; }
+table.physics { font-size: 11px; } table.physics td.pass { background: #dfd; } table.physics td.fail { background: #fdd; }
 figure { margin: 0.6em 0 1.6em 0; } figure img { max-width: 100%; border: 1px solid #ddd; }
 figure#headline { margin-top: 0.2em; } figure#headline img { max-height: 440px; }
 figcaption { font-size: 12px; color: #444; max-width: 1300px; }
@@ -532,6 +541,7 @@ def write_html(summary, directory, path, a=None):
 {'<h2>Digest</h2>' if a.stability else ''}{digest_table(a)}
 {identical_line(a)}
 </div>{toc(a)}</div>
+{physics.section(summary, image)}
 {headline_figure(a)}
 <p>{html.escape(summary.get('description', ''))}</p>
 {stability.section(summary, image) if a.stability else ''}
@@ -611,7 +621,8 @@ def write_markdown(summary, path, a=None, full_name="summary-full.md"):
                      f"{digest.order_summary(r['orders'].get('Z', []))} | {md(floor_text(r['floors'], 3))} |")
     for x, b, n in a.identical:
         lines += ["", f"{b} gives the same numbers as {x} bit for bit ({n} compared values)."]
-    lines += ["", "## Failures", ""]
+    lines += [""] + physics.markdown(summary)
+    lines += ["## Failures", ""]
     if a.stability:
         lines += [f"- UNEXPECTED {md(u)}" for u in a.unexpected[:20]] or \
                  ["Nothing unexpected (every case classified, the exact solver stable, no crash)."]

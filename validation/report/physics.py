@@ -1,0 +1,184 @@
+"""The report's "Reference against physics" section: why the reference solver itself is right.
+
+Every number here comes from summary.json's "physics" object (validation/physics_rows.cpp
+computes the rows, data/references/*.toml holds the published values and their citations); this
+module only lays them out and draws the equation-of-state figure.
+"""
+import html
+import io
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+ROW_TITLES = {
+    "equation_of_state": "Equation of state",
+    "collision_rate": "Collision rate (Enskog)",
+    "speed_distribution": "Speed distribution (Maxwell–Boltzmann)",
+    "galperin": "Galperin's billiard (digits of π)",
+    "haff": "Haff's law (granular cooling)",
+}
+
+
+def rows(summary):
+    return (summary.get("physics") or {}).get("rows", [])
+
+
+def _num(value, digits=4):
+    if value is None:
+        return "n/a"
+    if value == int(value) and abs(value) < 1e7:
+        return f"{int(value)}"
+    return f"{value:.{digits}g}"
+
+
+def _value(r):
+    if r["statistic"] == "exact":
+        return _num(r["value"])
+    if r["statistic"] == "p":
+        return f"χ² = {r['value']:.1f} on {int(r['reference'])} d.o.f."
+    return f"{_num(r['value'], 5)} ± {_num(r['standard_error'], 2)}"
+
+
+def _reference(r):
+    if r["statistic"] == "p":
+        return html.escape(r["reference_name"])
+    text = f"{_num(r['reference'], 5)} ({html.escape(r['reference_name'])})"
+    if r.get("second_reference") is not None:
+        text += f"; {html.escape(r['second_reference_name'])}: {_num(r['second_reference'], 5)}"
+    return text
+
+
+def _score(r):
+    if r["statistic"] == "exact":
+        return "equal" if r["score"] == 0 else f"off by {_num(r['score'])}"
+    if r["statistic"] == "p":
+        return f"p = {r['score']:.3g}"
+    return f"z = {r['score']:.2f}"
+
+
+def _verdict(r):
+    word = {"pass": "pass", "fail": "FAIL", "shown": "shown, not judged"}[r["verdict"]]
+    if r["row"] == "equation_of_state" and not r["resolved"]:
+        word += " (not resolved: the error bar cannot tell the two published values apart)"
+    return word
+
+
+def summary_lines(summary):
+    """One line per row kind: how many rows of the judged backends pass, and the worst score."""
+    out = []
+    for kind, title in ROW_TITLES.items():
+        judged = [r for r in rows(summary) if r["row"] == kind and r["verdict"] != "shown"]
+        if not judged:
+            continue
+        passed = sum(r["verdict"] == "pass" for r in judged)
+        backends = sorted({r["backend"] for r in judged})
+        out.append((title, passed, len(judged), ", ".join(backends), judged[0]["reference_name"]))
+    return out
+
+
+def table(summary):
+    head = ("<tr><th>row</th><th>backend</th><th>at</th><th>measured (estimator)</th><th>value ± SE</th>"
+            "<th>replicates</th><th>published</th><th>score</th><th>verdict</th></tr>")
+    body = []
+    for r in rows(summary):
+        at = f"{html.escape(r['parameter_name'])} {_num(r['parameter'])}" if r["parameter_name"] else ""
+        cls = {"pass": "pass", "fail": "fail"}.get(r["verdict"], "lo")
+        body.append(f"<tr><td>{html.escape(ROW_TITLES.get(r['row'], r['row']))}</td><td>{html.escape(r['backend'])}</td>"
+                    f"<td>{at}</td><td>{html.escape(r['measured'])} ({html.escape(r['estimator'])})</td>"
+                    f"<td>{_value(r)}</td><td>{r['replicates']}</td><td>{_reference(r)}</td>"
+                    f"<td>{_score(r)}</td><td class='{cls}' title='{html.escape(r['detail'])}'>{html.escape(_verdict(r))}</td></tr>")
+    return f"<table class='physics'>{head}{''.join(body)}</table>"
+
+
+def citations(summary):
+    seen = {}
+    for r in rows(summary):
+        seen.setdefault(r["reference_name"], r["citation"])
+    for c in (summary.get("physics") or {}).get("curves", []):
+        seen.setdefault(c["name"], c["citation"])
+    return "<ul class='where'>" + "".join(f"<li><b>{html.escape(n)}</b>: {html.escape(c)}</li>" for n, c in seen.items()) + "</ul>"
+
+
+def eos_figure(summary):
+    """Z against area fraction: the published curves and the measured points (top), and the
+    relative difference from Kolafa & Rottner (bottom), where Henderson's 2 % at 0.65 shows.
+    A point whose error bar cannot tell the two published values apart is drawn hollow."""
+    physics = summary.get("physics") or {}
+    points = [r for r in rows(summary) if r["row"] == "equation_of_state" and r["value"] is not None]
+    curves = physics.get("curves", [])
+    if not points or not curves:
+        return None
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(5.6, 5.2), sharex=True, gridspec_kw={"height_ratios": [3, 2]})
+    best = curves[0]
+    styles = ["-", "--"]
+    for c, style in zip(curves, styles):
+        top.plot(c["eta"], c["z"], style, color="grey", label=c["name"], linewidth=1.2)
+    base = dict(zip(best["eta"], best["z"]))
+    for c, style in zip(curves[1:], styles[1:]):
+        bottom.plot(c["eta"], [100 * (z / base[e] - 1) for e, z in zip(c["eta"], c["z"])], style, color="grey",
+                    label=c["name"], linewidth=1.2)
+    bottom.axhline(0, color="grey", linewidth=1.2)
+    markers = {"event": "o"}
+    for backend in sorted({p["backend"] for p in points}):
+        mine = [p for p in points if p["backend"] == backend]
+        for p in mine:
+            filled = p["resolved"]
+            kw = dict(marker=markers.get(backend, "s"), color="black" if backend == "event" else "tab:blue",
+                      markerfacecolor=None if filled else "white", linestyle="none", markersize=5)
+            top.errorbar([p["parameter"]], [p["value"]], yerr=[p["standard_error"]], **kw)
+            rel = 100 * (p["value"] / p["reference"] - 1)
+            bottom.errorbar([p["parameter"]], [rel], yerr=[100 * p["standard_error"] / p["reference"]], **kw)
+        top.plot([], [], marker=markers.get(backend, "s"), linestyle="none",
+                 color="black" if backend == "event" else "tab:blue",
+                 label=f"{backend} ({mine[0]['estimator'].split(' (')[0]})")
+    top.set_ylabel("Z = βP/ρ (dimensionless)")
+    top.legend(fontsize=7, loc="upper left")
+    bottom.set_ylabel(f"Z / Z[{best['name']}] − 1 (%)", fontsize=8)
+    bottom.set_xlabel("area fraction η = Nπr²/A (dimensionless)")
+    bottom.legend(fontsize=7, loc="upper left")
+    rel_points = [100 * (p["value"] / p["reference"] - 1) for p in points]
+    span = max([1.0] + [abs(v) + 100 * p["standard_error"] / p["reference"] for v, p in zip(rel_points, points)])
+    bottom.set_ylim(-1.5 * span, 3 * span)  # Henderson's rise near 0.7 would hide the points
+    fig.tight_layout()
+    buffer = io.BytesIO()
+    fig.savefig(buffer, format="png", dpi=80)
+    plt.close(fig)
+    return buffer.getvalue()
+
+
+def section(summary, image):
+    """The section's HTML ('' when the suite has no physics rows)."""
+    if not rows(summary):
+        return ""
+    lines = "".join(f"<tr><td>{html.escape(t)}</td><td class='{'pass' if p == n else 'fail'}'>{p} of {n} pass</td>"
+                    f"<td>{html.escape(b)}</td><td>{html.escape(ref)}</td></tr>"
+                    for t, p, n, b, ref in summary_lines(summary))
+    figure = image(eos_figure(summary),
+                   "<b>Equation of state of the hard-disk fluid.</b> Top: Z against area fraction, the curves of "
+                   "the published equations of state and the measured points (± 1 SE over replicates). Bottom: "
+                   "the relative difference from the first curve, in %. A hollow point's error bar cannot tell the "
+                   "two published curves apart (not resolved).", "equation of state figure", "physics-eos")
+    return (f"<h2 id='physics'>Reference against physics</h2>"
+            "<p class='where'>Why the reference itself is right: the exact solver against published physics, not "
+            "against itself. Judged rows use exact estimators (the collision virial for Z, counted collisions); "
+            "rows of other backends, or made with the contact-shell estimator, are shown for comparison and not "
+            "judged. A judged row passes within |z| ≤ 3 (its standard error combined with the reference's stated "
+            "uncertainty), p ≥ the reference's threshold, or exact equality.</p>"
+            f"<div class='physics-top'><div><table class='digest'><tr><th>row</th><th>judged</th><th>backends</th>"
+            f"<th>published reference</th></tr>{lines}</table>"
+            f"<details><summary>Every row</summary>{table(summary)}{citations(summary)}</details></div>"
+            f"{figure}</div>")
+
+
+def markdown(summary):
+    """The section's lines for summary.md."""
+    if not rows(summary):
+        return []
+    out = ["## Reference against physics", "", "| row | judged | backends | published reference |", "|---|---|---|---|"]
+    out += [f"| {t} | {p} of {n} pass | {b} | {ref} |" for t, p, n, b, ref in summary_lines(summary)]
+    failed = [r for r in rows(summary) if r["verdict"] == "fail"]
+    out += [f"- FAIL {r['row']} {r['backend']} {r['parameter_name']} {_num(r['parameter'])}: "
+            f"{_value(r)} vs {_num(r['reference'], 5)} ({_score(r)})" for r in failed]
+    return out + [""]
