@@ -153,7 +153,7 @@ void MpiDispatch::receive_result(Run& run, const MPI_Status& probed) {
     const int from = probed.MPI_SOURCE;
     const std::string text = receive_bytes(from, record_tag);
     const std::string incoming = run.work->isolation.result_dir + "/.incoming-from-rank-" + std::to_string(from);
-    write_bytes(incoming, text);
+    write_file_atomically(incoming, text);
     CaseResult r = read_case_result(incoming);
     std::filesystem::remove(incoming);
     if (gather_hdf5_ && !r.hdf5_file.empty()) {

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "commands.h"
+#include "core/output_file.h"
 #include "validation/case_result.h"
 
 namespace collide::cli {
@@ -29,10 +30,20 @@ void check_case_files(const std::string& dir) {
     }
 }
 
+// The files the renderer writes, checked before it starts (core/output_file.h; the renderer
+// checks them again with validation/report/safe_output.py, its Python twin).
+void check_report_outputs(const std::string& report_dir) {
+    check_output_directory(report_dir);
+    if (!std::filesystem::is_directory(report_dir)) return;  // created empty by the renderer
+    for (const char* name : {"index.html", "checks.html", "summary.md", "summary-full.md"})
+        check_output_path(report_dir + "/" + name);
+}
+
 void execute(const std::string& dir) {
     if (!std::filesystem::exists(dir + "/summary.json"))
         throw std::runtime_error(dir + "/summary.json: not found; expected the output directory of `collide validate`");
     check_case_files(dir);
+    check_report_outputs(dir + "/report");
     const std::string script = std::string(COLLIDE_REPORT_DIR) + "/make_report.py";
     // fork + exec (not system()): no shell, so directory names need no quoting.
     const pid_t pid = ::fork();
