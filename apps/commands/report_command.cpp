@@ -63,6 +63,10 @@ void execute(const std::string& dir) {
     // Exit status 2: an input file is malformed; the renderer has named it and what is wrong.
     if (WIFEXITED(status) && WEXITSTATUS(status) == 2)
         throw std::runtime_error("no report written: " + dir + " holds a malformed input (named above)");
+    // Exit status 3: an output path was refused (safe_output.py, the twin of the check above,
+    // for what changed after it).
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 3)
+        throw std::runtime_error("no report written: an output path was refused (named above)");
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
         throw std::runtime_error(std::string("the report renderer failed (") + COLLIDE_PYTHON + " " + script + ")");
 }
