@@ -30,6 +30,7 @@ std::string kind_of(mode_t mode) {
     if (S_ISFIFO(mode)) return "a FIFO";
     if (S_ISSOCK(mode)) return "a socket";
     if (S_ISDIR(mode)) return "a directory";
+    if (S_ISREG(mode)) return "a regular file";
     return "not a regular file";
 }
 

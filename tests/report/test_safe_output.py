@@ -113,7 +113,7 @@ def test_names_a_path_too_long_as_too_long_not_missing(tmp_path):
 
 def test_names_a_file_in_the_way_of_the_directory(tmp_path):
     (tmp_path / "file").write_text("x")
-    refused(str(tmp_path / "file" / "index.html"), "is not a directory")
+    refused(str(tmp_path / "file" / "index.html"), "is not a directory (it is a regular file)")
 
 
 def test_a_failed_rename_leaves_the_target_and_no_temporary(tmp_path, monkeypatch):
