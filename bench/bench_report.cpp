@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bench_suite.h"
+#include "core/output_file.h"
 #include "core/provenance.h"
 
 namespace collide::bench {
@@ -73,14 +74,13 @@ void BenchReport::write(const std::string& prefix) const {
         json["rows"].push_back(row);
     }
     const std::string json_text = json.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
-    for (const auto& [ext, text] : {std::pair{".csv", csv.str()}, std::pair{".json", json_text}}) {
-        const std::string path = prefix + ext, tmp = path + ".tmp";
-        std::ofstream f(tmp);
-        f << text;
-        f.close();
-        if (!f || std::rename(tmp.c_str(), path.c_str()) != 0)
-            throw std::runtime_error("cannot write benchmark results to " + path);
-    }
+    // The guard and rename of every output (core/output_file.h); both files are written before
+    // either is renamed into place, so a failed .json leaves the old .csv untouched too.
+    AtomicOutputFile csv_file(prefix + ".csv"), json_file(prefix + ".json");
+    csv_file.write(csv.str());
+    json_file.write(json_text);
+    csv_file.commit();
+    json_file.commit();
 }
 
 double time_seconds(const std::function<void()>& f) {

@@ -4,29 +4,21 @@
 //   - constants (root attributes, /particles, /stats) are written once, whole;
 //   - time series (/metrics/*, /frames/*) are extendible datasets that grow by one row per
 //     output time (append_row), so a long run never holds its history in memory;
-//   - the file itself lives under a temporary name until commit() renames it into place.
+//   - the file itself lives under a temporary name until commit() renames it into place
+//     (AtomicOutputFile, core/output_file.h: the guard and the rename every writer shares).
 #include "run_writer.h"
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <atomic>
-#include <cerrno>
 #include <cstdint>
-#include <cstdio>
-#include <cstring>
-#include <filesystem>
 #include <initializer_list>
 #include <stdexcept>
 #include <vector>
 
 #include "hdf5_handle.h"
+#include "output_file.h"
 
 namespace collide {
 namespace {
-
-namespace fs = std::filesystem;
 
 // ---------------------------------------------------------------------------------------
 // What goes into /metrics: one dataset per Metrics field, with its units (in the scene's own
@@ -195,101 +187,15 @@ std::vector<double> interleave(const std::vector<double>& x, const std::vector<d
     return xy;
 }
 
-// ---------------------------------------------------------------------------------------
-// The temporary file: ".NAME.tmp-PID-K" in the target's directory (same file system, so the
-// final rename is atomic). Removed on destruction unless it has been renamed into place.
-
-std::string temporary_path_for(const fs::path& target) {
-    static std::atomic<unsigned> counter{0};
-    std::string name = ".";  // built with append: GCC 12 warns falsely on "." + std::string
-    name.append(target.filename().string()).append(".tmp-").append(std::to_string(::getpid()));
-    name.append("-").append(std::to_string(counter++));
-    return (target.parent_path() / name).string();
-}
-
-std::string file_kind(fs::file_type type) {
-    switch (type) {
-        case fs::file_type::character: return "a character device";
-        case fs::file_type::block: return "a block device";
-        case fs::file_type::fifo: return "a FIFO";
-        case fs::file_type::socket: return "a socket";
-        default: return "not a regular file";
-    }
-}
-
-// Fails with a clear reason when `target` cannot be written, before the run starts.
-void check_target_is_writable_place(const std::string& path) {
-    if (path.empty()) throw Hdf5Error("cannot write the output: the file name is empty");
-    const fs::path target(path);
-    if (!target.has_filename())
-        throw Hdf5Error("cannot write '" + path + "': the path names a directory, not a file");
-    const fs::path directory = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-    std::error_code error;
-    const fs::file_status directory_status = fs::status(directory, error);
-    if (!fs::exists(directory_status))
-        throw Hdf5Error("cannot write '" + path + "': directory '" + directory.string() + "' does not exist");
-    if (!fs::is_directory(directory_status))
-        throw Hdf5Error("cannot write '" + path + "': '" + directory.string() + "' is not a directory");
-    const fs::file_status existing = fs::status(target, error);  // follows a symbolic link
-    if (fs::is_directory(existing))
-        throw Hdf5Error("cannot write '" + path + "': a directory of that name exists");
-    // The finished file is renamed over the target, which would turn a device (/dev/null), a
-    // FIFO or a socket into a regular file: only a regular file is ever replaced.
-    if (fs::exists(existing) && !fs::is_regular_file(existing))
-        throw Hdf5Error("cannot write '" + path + "': it exists and is not a regular file (" +
-                        file_kind(existing.type()) + "); collide writes only to a new or a regular file");
-    if (fs::is_symlink(fs::symlink_status(target, error)) && !fs::exists(existing))
-        throw Hdf5Error("cannot write '" + path + "': it is a symbolic link to nothing");
-}
-
-// A symbolic link is followed: the file it points to is replaced and the link stays a link
-// (renaming onto the link itself would replace the link with the new file).
-std::string resolved_target(const std::string& path) {
-    std::error_code error;
-    if (!fs::is_symlink(fs::symlink_status(path, error))) return path;
-    return fs::canonical(path).string();
-}
-
-struct TemporaryFile {
-    std::string path;
-    bool renamed = false;
-
-    explicit TemporaryFile(const std::string& target) : path(temporary_path_for(target)) {
-        // Creating the file ourselves first gives the operating system's own reason
-        // ("Permission denied", "Read-only file system") when the directory is not writable.
-        const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-        if (fd < 0)
-            throw Hdf5Error("cannot write '" + target + "': cannot create '" + path + "' (" +
-                            std::strerror(errno) + ")");
-        ::close(fd);
-    }
-    ~TemporaryFile() {
-        if (!renamed) std::remove(path.c_str());
-    }
-    TemporaryFile(const TemporaryFile&) = delete;
-    TemporaryFile& operator=(const TemporaryFile&) = delete;
-};
-
-// Forces the file's contents to the disk, so that after the rename the target is complete
-// even if the machine loses power.
-void sync_to_disk(const std::string& path, const std::string& context) {
-    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0 || ::fsync(fd) != 0) {
-        const std::string reason = std::strerror(errno);
-        if (fd >= 0) ::close(fd);
-        throw Hdf5Error(context + ": cannot sync '" + path + "' to disk (" + reason + ")");
-    }
-    ::close(fd);
-}
-
 }  // namespace
 
 // ---------------------------------------------------------------------------------------
 
 struct RunWriter::Impl {
     std::string target;
-    // Declared before the HDF5 handles: destroyed after them, so the file is closed first.
-    TemporaryFile temporary;
+    // Declared before the HDF5 handles: destroyed after them, so the file is closed before
+    // an uncommitted temporary file is removed.
+    AtomicOutputFile output;
     Hdf5Handle file;
     Hdf5Handle metrics_group;
     std::vector<Hdf5Handle> real_metric_datasets;   // in the order of real_metrics
@@ -303,9 +209,9 @@ struct RunWriter::Impl {
     bool committed = false;
 
     Impl(const std::string& path, bool frames)
-        : target(path), temporary(path), write_frames(frames) {
-        file = file_handle(checked(H5Fcreate(temporary.path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
-                                   target, "create the HDF5 file '" + temporary.path + "'"));
+        : target(path), output(path), write_frames(frames) {
+        file = file_handle(checked(H5Fcreate(output.temporary_path().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
+                                   target, "create the HDF5 file '" + output.temporary_path() + "'"));
         write_string_attribute(file.get(), "format", "collide-run", target);
         write_string_attribute(file.get(), "format_version", "1", target);
         create_metric_datasets();
@@ -381,14 +287,13 @@ struct RunWriter::Impl {
             for (Hdf5Handle& handle : *handles) handle.reset();
         for (Hdf5Handle* handle : {&frame_time, &frame_position, &frame_velocity, &frames_group, &metrics_group})
             handle->reset();
-        checked(file.reset(), target, "close the HDF5 file '" + temporary.path + "'");
+        checked(file.reset(), target, "close the HDF5 file '" + output.temporary_path() + "'");
     }
 };
 
 RunWriter::RunWriter(const std::string& path, bool write_frames) {
     silence_hdf5_error_printing();
-    check_target_is_writable_place(path);
-    impl_ = std::make_unique<Impl>(resolved_target(path), write_frames);
+    impl_ = std::make_unique<Impl>(path, write_frames);
 }
 
 // Without commit(): the Impl's members close the file and remove the temporary file.
@@ -438,16 +343,10 @@ void RunWriter::commit() {
     impl_->committed = true;  // whatever happens below, the writer takes no more data
     checked(H5Fflush(impl_->file.get(), H5F_SCOPE_GLOBAL), impl_->target, "flush the HDF5 file");
     impl_->close_file();
-    sync_to_disk(impl_->temporary.path, impl_->target);
-    // rename() replaces an existing target atomically (POSIX): a reader sees the old file or
-    // the new one, never a mixture.
-    if (std::rename(impl_->temporary.path.c_str(), impl_->target.c_str()) != 0)
-        throw Hdf5Error("cannot write '" + impl_->target + "': cannot rename '" + impl_->temporary.path +
-                        "' into place (" + std::strerror(errno) + ")");
-    impl_->temporary.renamed = true;
+    impl_->output.commit();
 }
 
 const std::string& RunWriter::path() const { return impl_->target; }
-const std::string& RunWriter::temporary_path() const { return impl_->temporary.path; }
+const std::string& RunWriter::temporary_path() const { return impl_->output.temporary_path(); }
 
 }  // namespace collide

@@ -12,15 +12,17 @@
 //   /frames/time (T), /frames/position (T x N x 2), /frames/velocity (T x N x 2)
 //                          only with frames enabled; chunked, gzip-compressed, extendible in T
 //
-// The file is written under a temporary name beside the target (".NAME.tmp-PID-K") and
-// renamed into place by commit(), so an existing file is never left half-written; if the
-// writer is destroyed without commit() the temporary file is removed and the target is
-// untouched. A target that cannot be written (missing directory, no permission, a directory
-// in the way, anything but a regular file: a device, a FIFO, a socket) fails in the
-// constructor, before any simulation time is spent. A symbolic link is followed: the regular
-// file it points to is replaced and the link is kept.
+// The file is written with AtomicOutputFile (core/output_file.h), the guard and atomic
+// rename every output of collide shares: under a temporary name beside the target
+// (".NAME.tmp-PID-K"), renamed into place by commit(), so an existing file is never left
+// half-written; if the writer is destroyed without commit() the temporary file is removed and
+// the target is untouched. A target that cannot be written (missing directory, no permission,
+// a directory in the way, anything but a regular file: a device, a FIFO, a socket, a link to
+// nothing) fails in the constructor, before any simulation time is spent. A symbolic link is
+// followed: the regular file it points to is replaced and the link is kept.
 //
-// Every failure throws Hdf5Error (a std::runtime_error) whose message names the file.
+// Every failure throws a std::runtime_error whose message names the file: OutputFileError
+// for the path and the rename, Hdf5Error for HDF5 itself.
 #pragma once
 
 #include <map>

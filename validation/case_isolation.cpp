@@ -55,8 +55,6 @@ void stop_cases_and_die(std::map<pid_t, Child>& running, const IsolationOptions&
     for (const auto& [pid, child] : running) {
         ::waitpid(pid, nullptr, 0);
         remove_temporaries(options.runs_dir, options.result_dir, pid);
-        std::error_code ignored;
-        std::filesystem::remove(result_path(options.result_dir, child.spec.id) + ".partial", ignored);
     }
     const int signal_number = stop_signal;
     ::signal(signal_number, SIG_DFL);
@@ -96,8 +94,6 @@ void stop_cases_and_die(std::map<pid_t, Child>& running, const IsolationOptions&
 CaseResult death_result(const Child& child, int wait_status, const IsolationOptions& options) {
     // A child that died without cleaning up (a signal, the time limit) leaves its temporaries.
     remove_temporaries(options.runs_dir, options.result_dir, child.pid);
-    std::error_code ignored;
-    std::filesystem::remove(result_path(options.result_dir, child.spec.id) + ".partial", ignored);
     const std::string path = result_path(options.result_dir, child.spec.id);
     const std::string log = options.result_dir + "/" + child.spec.id + ".log";
     if (!child.killed_for_time && WIFEXITED(wait_status) && WEXITSTATUS(wait_status) == 0 &&
@@ -141,12 +137,15 @@ void remove_temporaries(const std::string& runs_dir, const std::string& result_d
     namespace fs = std::filesystem;
     const std::string writer_mark = pid ? ".tmp-" + std::to_string(pid) + "-" : ".tmp-";
     std::error_code error;
-    if (!runs_dir.empty())
-        for (const auto& entry : fs::directory_iterator(runs_dir, error)) {
+    for (const std::string& dir : {runs_dir, result_dir}) {
+        if (dir.empty()) continue;
+        for (const auto& entry : fs::directory_iterator(dir, error)) {
             const std::string name = entry.path().filename().string();
             if (name.rfind('.', 0) == 0 && name.find(writer_mark) != std::string::npos) fs::remove(entry.path(), error);
         }
-    if (pid) return;  // a case's .partial record has no process id in its name: only --resume
+    }
+    if (pid) return;
+    // Records of older versions were written as NAME.partial: --resume removes those too.
     for (const auto& entry : fs::directory_iterator(result_dir, error))
         if (entry.path().extension() == ".partial") fs::remove(entry.path(), error);
 }

@@ -21,8 +21,9 @@ struct IsolationOptions {
 };
 
 // Removes the temporary files a writer leaves when its process dies without cleaning up
-// (SIGKILL, a crash, the time limit): ".NAME.tmp-PID-K" HDF5 files in `runs_dir` and
-// "NAME.partial" records in `result_dir`. With pid = 0 every one of them goes (for --resume,
+// (SIGKILL, a crash, the time limit): ".NAME.tmp-PID-K" HDF5 files in `runs_dir` and records
+// in `result_dir` (core/output_file.h names every temporary so). With pid = 0 every one of
+// them goes, and "NAME.partial" records older versions left (for --resume,
 // which holds the output directory's lock, so no other run is writing them).
 void remove_temporaries(const std::string& runs_dir, const std::string& result_dir, int pid = 0);
 

@@ -1,6 +1,5 @@
 #include "case_result.h"
 
-#include <fcntl.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -15,6 +14,7 @@
 #include <toml++/toml.h>
 
 #include "core/hdf5_handle.h"
+#include "core/output_file.h"
 
 namespace collide::validation {
 
@@ -117,43 +117,7 @@ void write_case_result(const CaseResult& r, const std::string& path) {
                      {"hdf5_file", r.hdf5_file}};
     std::ostringstream text;
     text << root << "\n";
-    write_text_file_atomically(path, text.str());
-}
-
-namespace {
-
-// write(2) until all is written; false with errno set on failure (a full disk: ENOSPC).
-bool write_all(int fd, const std::string& text) {
-    for (std::size_t done = 0; done < text.size();) {
-        const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-        if (n < 0 && errno == EINTR) continue;
-        if (n < 0) return false;
-        done += std::size_t(n);
-    }
-    return true;
-}
-
-}  // namespace
-
-void write_text_file_atomically(const std::string& path, const std::string& text) {
-    // Written beside the target and renamed, so a reader (or --resume) never sees half a file.
-    // Plain POSIX calls, so every failure (a full disk shows only at write, fsync or close) is
-    // seen with its reason; the temporary file is removed on failure.
-    const std::string temporary = path + ".partial";
-    const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (fd < 0) throw std::runtime_error(temporary + ": cannot create (" + std::strerror(errno) + ")");
-    const bool ok = write_all(fd, text) && ::fsync(fd) == 0;
-    const int saved = errno;
-    if (::close(fd) != 0 || !ok) {
-        const std::string reason = std::strerror(ok ? errno : saved);
-        ::unlink(temporary.c_str());
-        throw std::runtime_error(path + ": cannot write (" + reason + ")");
-    }
-    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-        const std::string reason = std::strerror(errno);
-        ::unlink(temporary.c_str());
-        throw std::runtime_error(path + ": cannot rename '" + temporary + "' into place (" + reason + ")");
-    }
+    write_file_atomically(path, text.str());  // the guard and rename of every output
 }
 
 CaseResult read_case_result(const std::string& path) {

@@ -59,12 +59,8 @@ struct CaseResult {
     bool finished() const { return status == RunStatus::completed; }
 };
 
-void write_case_result(const CaseResult& result, const std::string& path);  // atomic (rename)
+void write_case_result(const CaseResult& result, const std::string& path);  // atomic (core/output_file.h)
 CaseResult read_case_result(const std::string& path);                       // throws on bad files
-
-// Writes `text` to PATH.partial, syncs it and renames it to `path`; on any failure (with the
-// system's reason, e.g. "No space left on device") removes PATH.partial and throws.
-void write_text_file_atomically(const std::string& path, const std::string& text);
 
 // Why the files of a kept case cannot be trusted (its HDF5 file missing, unreadable, truncated,
 // or with fewer rows than the case record), or "" when they can. `output_dir` holds runs/.

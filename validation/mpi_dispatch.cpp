@@ -13,6 +13,8 @@
 #include <set>
 #include <thread>
 
+#include "core/output_file.h"
+
 namespace collide::validation {
 
 std::unique_ptr<CaseDispatch> start_case_dispatch(int jobs_per_rank, bool gather_hdf5) {
@@ -37,17 +39,6 @@ void wait_for_all_ranks() {
 std::string read_bytes(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), {}};
-}
-
-// Written beside the target and renamed, as the case files are: no reader sees half a file.
-void write_bytes(const std::string& path, const std::string& bytes) {
-    const std::string temporary = path + ".partial";
-    {
-        std::ofstream out(temporary, std::ios::binary);
-        out << bytes;
-        if (!out) throw std::runtime_error(temporary + ": cannot write");
-    }
-    std::filesystem::rename(temporary, path);
 }
 
 std::string receive_bytes(int source, int tag) {
@@ -162,14 +153,15 @@ void MpiDispatch::receive_result(Run& run, const MPI_Status& probed) {
     const int from = probed.MPI_SOURCE;
     const std::string text = receive_bytes(from, record_tag);
     const std::string incoming = run.work->isolation.result_dir + "/.incoming-from-rank-" + std::to_string(from);
-    write_bytes(incoming, text);
+    write_file_atomically(incoming, text);
     CaseResult r = read_case_result(incoming);
     std::filesystem::remove(incoming);
     if (gather_hdf5_ && !r.hdf5_file.empty()) {
         const std::string file = receive_bytes(from, hdf5_tag);
         if (!file.empty()) {
             std::filesystem::create_directories(std::filesystem::path(run.work->output_dir + "/" + r.hdf5_file).parent_path());
-            write_bytes(run.work->output_dir + "/" + r.hdf5_file, file);
+            // The guard and rename of every output: no reader sees half a file.
+            write_file_atomically(run.work->output_dir + "/" + r.hdf5_file, file);
             r.provenance["hdf5_host"] = hosts_[0];
         }
     }

@@ -17,6 +17,7 @@
 #include "backend_variant.h"
 #include "case_execution.h"
 #include "case_isolation.h"
+#include "core/output_file.h"
 #include "core/scene_loader.h"
 #include "progress.h"
 #include "scene_parameters.h"
@@ -166,6 +167,20 @@ void classify_all(SuiteOutcome& outcome, const CaseScenes& case_scenes, const st
     }
 }
 
+// Every place the suite writes is checked before the first case runs (core/output_file.h):
+// a FIFO, a device or a link to nothing named summary.json is refused now, not after an hour.
+void check_output_places(const std::string& dir, const std::vector<CaseSpec>& specs, bool hdf5) {
+    namespace fs = std::filesystem;
+    check_output_directory(dir);
+    for (const char* sub : {"/cases", "/runs"}) check_output_directory(dir + sub);
+    if (!fs::is_directory(dir)) return;  // created empty: nothing in it to refuse
+    for (const char* file : {"/summary.json", "/junit.xml"}) check_output_path(dir + file);
+    for (const CaseSpec& spec : specs) {
+        if (fs::is_directory(dir + "/cases")) check_output_path(result_path(dir + "/cases", spec.id));
+        if (hdf5 && fs::is_directory(dir + "/runs")) check_output_path(dir + "/runs/" + spec.id + ".h5");
+    }
+}
+
 }  // namespace
 
 SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& available, const RunnerOptions& options) {
@@ -179,6 +194,7 @@ SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& avail
     const std::vector<CaseSpec> specs = plan_cases(suite, scenes, backends);
     check_case_run_settings(suite, scenes, specs);
 
+    check_output_places(options.output_dir, specs, suite.output.hdf5);
     std::filesystem::create_directories(options.output_dir);
     // MPI hook: rank 0 alone decides what is finished (every record is in its directory), and
     // alone holds the directory's lock (other ranks may share the directory).

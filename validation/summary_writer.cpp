@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/output_file.h"
 #include "core/provenance.h"
 
 namespace collide::validation {
@@ -125,9 +126,6 @@ Json physics_json(const PhysicsComparison& p) {
     return o.json();
 }
 
-// A full disk used to leave an empty file or PATH.partial behind; now it throws naming why.
-void write_atomically(const std::string& path, const std::string& text) { write_text_file_atomically(path, text); }
-
 std::string xml_escape(const std::string& s) {
     std::string out;
     for (char c : s) {
@@ -188,7 +186,7 @@ void write_summary_json(const Suite& suite, const SuiteOutcome& outcome, const s
         .field("physics", physics_json(outcome.physics));
     // Bytes that are not UTF-8 (in a path or a diagnostic) are replaced, not fatal: the summary
     // of a suite that ran for hours must still be written.
-    write_atomically(path, root.json().dump(1, ' ', false, Json::error_handler_t::replace) + "\n");
+    write_file_atomically(path, root.json().dump(1, ' ', false, Json::error_handler_t::replace) + "\n");
 }
 
 void write_junit_xml(const Suite& suite, const SuiteOutcome& outcome, const std::string& path) {
@@ -210,7 +208,7 @@ void write_junit_xml(const Suite& suite, const SuiteOutcome& outcome, const std:
           << xml_escape(c.detail) << "\"/>\n    </testcase>\n";
     }
     x << "  </testsuite>\n</testsuites>\n";
-    write_atomically(path, x.str());
+    write_file_atomically(path, x.str());
 }
 
 }  // namespace collide::validation

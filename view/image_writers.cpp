@@ -14,33 +14,10 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "core/output_file.h"
+
 namespace collide::view {
 namespace {
-
-// Writes go to ".NAME.tmp-PID" beside the target (same file system, so rename is atomic).
-class TemporaryFile {
-public:
-    explicit TemporaryFile(const std::string& path) : target_(path) {
-        const std::filesystem::path p(path);
-        // Built by append: GCC 12 warns falsely (-Wrestrict) on "." + std::string.
-        std::string name(".");
-        name.append(p.filename().string()).append(".tmp-").append(std::to_string(::getpid()));
-        temp_ = (p.parent_path() / name).string();
-    }
-    ~TemporaryFile() {
-        std::error_code ignored;
-        if (!committed_) std::filesystem::remove(temp_, ignored);
-    }
-    const std::string& path() const { return temp_; }
-    void commit() {
-        std::filesystem::rename(temp_, target_);
-        committed_ = true;
-    }
-
-private:
-    std::string target_, temp_;
-    bool committed_ = false;
-};
 
 [[noreturn]] void cannot_write(const std::string& path, const std::string& why) {
     throw std::runtime_error("cannot write '" + path + "': " + why);
@@ -79,8 +56,8 @@ public:
         : path_(path), temp_(path), width_(width), height_(height),
           delay_(std::max(2, int(std::lround(100 / fps)))) {
         // Opened here, not by EGifOpenFileName, which would create the file readable by its
-        // owner only; with open() the permissions follow the umask like every other output.
-        const int fd = ::open(temp_.path().c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0666);
+        // owner only; AtomicOutputFile created it with the umask's permissions.
+        const int fd = ::open(temp_.temporary_path().c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
         if (fd < 0) cannot_write(path, std::strerror(errno));
         int error = 0;
         gif_ = EGifOpenFileHandle(fd, &error);
@@ -140,7 +117,7 @@ private:
     }
 
     std::string path_;
-    TemporaryFile temp_;
+    AtomicOutputFile temp_;
     int width_, height_, delay_;  // delay in hundredths of a second, GIF's unit
     GifFileType* gif_ = nullptr;
 };
@@ -153,7 +130,7 @@ public:
         const std::string command = "ffmpeg -loglevel error -y -f rawvideo -pix_fmt rgba -s " + std::to_string(width) +
                                     "x" + std::to_string(height) + " -r " + std::to_string(fps) +
                                     " -i - -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -pix_fmt yuv420p -f mp4 " +
-                                    shell_quoted(temp_.path());
+                                    shell_quoted(temp_.temporary_path());
         // A failed ffmpeg closes the pipe; without this the next write would kill us silently
         // (SIGPIPE) instead of failing with a message.
         std::signal(SIGPIPE, SIG_IGN);
@@ -176,16 +153,16 @@ public:
 
 private:
     std::string path_;
-    TemporaryFile temp_;
+    AtomicOutputFile temp_;  // ffmpeg writes the temporary file; finish() renames it
     std::FILE* pipe_ = nullptr;
 };
 
 }  // namespace
 
 void write_png(const std::string& path, const Image& image) {
-    TemporaryFile temp(path);
+    AtomicOutputFile temp(path);
     {
-        std::unique_ptr<std::FILE, FileCloser> file(std::fopen(temp.path().c_str(), "wb"));
+        std::unique_ptr<std::FILE, FileCloser> file(std::fopen(temp.temporary_path().c_str(), "wb"));
         if (!file) cannot_write(path, "cannot create the file");
         try {
             write_png_file(file.get(), image);

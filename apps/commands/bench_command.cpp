@@ -8,6 +8,7 @@
 
 #include "bench/bench_suite.h"
 #include "commands.h"
+#include "core/output_file.h"
 
 namespace collide::cli {
 
@@ -44,11 +45,18 @@ void add_bench_command(CLI::App& app) {
         }
         for (std::int64_t n : args->bench.sizes)
             if (n <= 0) throw std::runtime_error("--sizes " + std::to_string(n) + ": a particle count must be positive");
+        auto chosen = [&](const bench::BenchSuite& suite) {
+            return args->suites.empty() ||
+                   std::find(args->suites.begin(), args->suites.end(), suite.name) != args->suites.end();
+        };
+        // So are the output files (core/output_file.h): a FIFO or a device in the way of the
+        // last suite's results is refused before the first suite runs.
+        for (const auto& suite : bench::all_bench_suites())
+            if (chosen(suite))
+                for (const char* ext : {".csv", ".json"}) check_output_path(args->out + "-" + suite.name + ext);
         bool ran = false;
         for (const auto& suite : bench::all_bench_suites()) {
-            if (!args->suites.empty() &&
-                std::find(args->suites.begin(), args->suites.end(), suite.name) == args->suites.end())
-                continue;
+            if (!chosen(suite)) continue;
             bench::BenchReport report(suite.name);
             suite.run(args->bench, report);
             report.write(args->out + "-" + suite.name);

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "commands.h"
+#include "core/output_file.h"
 #include "validation/case_result.h"
 
 namespace collide::cli {
@@ -29,10 +30,20 @@ void check_case_files(const std::string& dir) {
     }
 }
 
+// The files the renderer writes, checked before it starts (core/output_file.h; the renderer
+// checks them again with validation/report/safe_output.py, its Python twin).
+void check_report_outputs(const std::string& report_dir) {
+    check_output_directory(report_dir);
+    if (!std::filesystem::is_directory(report_dir)) return;  // created empty by the renderer
+    for (const char* name : {"index.html", "checks.html", "summary.md", "summary-full.md"})
+        check_output_path(report_dir + "/" + name);
+}
+
 void execute(const std::string& dir) {
     if (!std::filesystem::exists(dir + "/summary.json"))
         throw std::runtime_error(dir + "/summary.json: not found; expected the output directory of `collide validate`");
     check_case_files(dir);
+    check_report_outputs(dir + "/report");
     const std::string script = std::string(COLLIDE_REPORT_DIR) + "/make_report.py";
     // fork + exec (not system()): no shell, so directory names need no quoting.
     const pid_t pid = ::fork();
@@ -52,6 +63,10 @@ void execute(const std::string& dir) {
     // Exit status 2: an input file is malformed; the renderer has named it and what is wrong.
     if (WIFEXITED(status) && WEXITSTATUS(status) == 2)
         throw std::runtime_error("no report written: " + dir + " holds a malformed input (named above)");
+    // Exit status 3: an output path was refused (safe_output.py, the twin of the check above,
+    // for what changed after it).
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 3)
+        throw std::runtime_error("no report written: an output path was refused (named above)");
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
         throw std::runtime_error(std::string("the report renderer failed (") + COLLIDE_PYTHON + " " + script + ")");
 }

@@ -10,6 +10,7 @@ Nothing is simulated here. The figures of speed depend on the machine they are m
 captions in the course say so.
 """
 import argparse
+import io
 import json
 import pathlib
 import re
@@ -26,6 +27,9 @@ import numpy as np  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 SCENES = ROOT / "data" / "scenes"
+# The guard and atomic write every output of collide goes through (docs/refusals.md).
+sys.path.insert(0, str(ROOT / "validation" / "report"))
+import safe_output  # noqa: E402
 
 
 class Lab:
@@ -70,7 +74,9 @@ def finish(fig, ax, out, name, xlabel, ylabel, title, legend=True, legend_loc=No
     if legend:
         ax.legend(loc=legend_loc)
     fig.tight_layout()
-    fig.savefig(out / f"{name}.png", dpi=110)
+    png = io.BytesIO()
+    fig.savefig(png, format="png", dpi=110)
+    safe_output.write_bytes(out / f"{name}.png", png.getvalue())
     plt.close(fig)
     print(f"wrote {out / name}.png")
 
@@ -319,11 +325,16 @@ def main():
     parser.add_argument("--only", nargs="*", choices=sorted(FIGURES), help="make only these figures")
     args = parser.parse_args()
     out = pathlib.Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
-    with tempfile.TemporaryDirectory(prefix="collide-figures-") as scratch:
-        lab = Lab(args.collide, scratch)
-        for name in args.only or FIGURES:
-            FIGURES[name](lab, out)
+    try:
+        # The folder is checked before the first run; each figure's file as it is written
+        # (its name, e.g. ch1_glancing.png, is chosen by the figure).
+        safe_output.make_output_directory(out)
+        with tempfile.TemporaryDirectory(prefix="collide-figures-") as scratch:
+            lab = Lab(args.collide, scratch)
+            for name in args.only or FIGURES:
+                FIGURES[name](lab, out)
+    except safe_output.OutputPathError as e:
+        raise SystemExit(f"make_figures: {e}")
     return 0
 
 

@@ -26,6 +26,7 @@ import animations  # noqa: E402
 import digest  # noqa: E402
 import figures  # noqa: E402
 import physics  # noqa: E402
+import safe_output  # noqa: E402
 import stability  # noqa: E402
 from collide_program import run_collide  # noqa: E402
 from digest import ReportInputError, anchor  # noqa: E402
@@ -578,8 +579,7 @@ window.addEventListener("hashchange", openTarget);
 openTarget();
 </script>
 </body></html>"""
-    with open(path, "w", encoding="utf-8") as f:
-        f.write(body)
+    safe_output.write_text(path, body)
 
 
 def write_checks_html(summary, path):
@@ -599,8 +599,7 @@ tolerance (tolerance ÷ measured for a lower bound), above 1 fails.</p>
                    f"<td>{fmt(digest.margin(c))}</td><td>{html.escape(predicted_text(c, pct))}</td>"
                    f"<td>{html.escape(c['detail'])}</td></tr>")
     out.append("</table></body></html>")
-    with open(path, "w", encoding="utf-8") as f:
-        f.write("\n".join(out))
+    safe_output.write_text(path, "\n".join(out))
 
 
 def md(text):
@@ -642,8 +641,7 @@ def write_markdown(summary, path, a=None, full_name="summary-full.md"):
     lines += ["", f"Every check: [{full_name}]({full_name}); figures: index.html."]
     if len(lines) > 80:  # keep the digest a screen long whatever the suite
         lines = lines[:78] + ["", f"(cut at 80 lines; everything: [{full_name}]({full_name}))"]
-    with open(path, "w", encoding="utf-8") as f:
-        f.write("\n".join(lines) + "\n")
+    safe_output.write_text(path, "\n".join(lines) + "\n")
 
 
 def write_markdown_full(summary, path, a=None):
@@ -669,15 +667,27 @@ def write_markdown_full(summary, path, a=None):
         lines.append(f"| {md(f['scene'])} | {md(f['backend'])} | {md(digest.describe_order(f))} | "
                      f"{md(digest.describe_floor(f['floor'])) if f['floor'] else ''} | "
                      f"{fmt(line.get('order')) if line.get('order') is not None else md(line.get('order_note', ''))} |")
-    with open(path, "w", encoding="utf-8") as f:
-        f.write("\n".join(lines) + "\n")
+    safe_output.write_text(path, "\n".join(lines) + "\n")
+
+
+REPORT_FILES = ("index.html", "checks.html", "summary.md", "summary-full.md")
+
+
+def check_outputs(out):
+    """Every file the report writes is checked before any figure is drawn (safe_output.py:
+    a FIFO, a device or a link to nothing in the way is refused, not written into)."""
+    safe_output.check_output_directory(out)
+    if os.path.isdir(out):
+        for name in REPORT_FILES:
+            safe_output.check_output_path(os.path.join(out, name))
 
 
 def render(directory):
+    out = os.path.join(directory, "report")
+    check_outputs(out)
     summary = digest.load_summary(directory)
     verify_cases(summary, directory)
-    out = os.path.join(directory, "report")
-    os.makedirs(out, exist_ok=True)
+    safe_output.make_output_directory(out)
     a = Analysis(summary)
     write_html(summary, directory, os.path.join(out, "index.html"), a)
     write_checks_html(summary, os.path.join(out, "checks.html"))
@@ -695,6 +705,9 @@ def main():
     except ReportInputError as e:
         print(f"report: {e}", file=sys.stderr)
         sys.exit(2)
+    except safe_output.OutputPathError as e:  # an output path, not an input: a status of its own
+        print(f"report: {e}", file=sys.stderr)
+        sys.exit(3)
     except OSError as e:
         print(f"report: {e.filename or directory}: {e.strerror or e}", file=sys.stderr)
         sys.exit(2)

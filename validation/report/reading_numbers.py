@@ -17,6 +17,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import digest  # noqa: E402
+import safe_output  # noqa: E402
 
 MARKER = re.compile(r"<!--n:([a-z0-9_.\[\]]+)-->(.*?)<!--/n-->", re.S)
 
@@ -103,8 +104,7 @@ def main():
             print(f"{doc}: {k}: the page says {old!r}, the run says {new!r}", file=sys.stderr)
         sys.exit(1 if stale else 0)
     text = MARKER.sub(lambda m: f"<!--n:{m.group(1)}-->{n[m.group(1)]}<!--/n-->", text)
-    with open(doc, "w", encoding="utf-8") as f:
-        f.write(text)
+    safe_output.write_text(doc, text)  # atomic, and never into a device or a FIFO
     print(f"{doc}: {len(keys)} numbers from {directory} ({len(stale)} changed)")
 
 

@@ -1,0 +1,152 @@
+// core/output_file.h: the guard's messages name the real cause (a name too long is not "does
+// not exist", a loop of links is not "a link to nothing"), the atomic write keeps the umask's
+// permissions, follows a link, leaves no temporary file, and never renames over a FIFO that
+// appeared while the file was being written. (tests/apps/test_output_paths.cpp runs every
+// writer of the program against the same places.)
+#include <gtest/gtest.h>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+
+#include "core/output_file.h"
+#include "tests/support/scratch_directory.h"
+
+namespace collide {
+namespace {
+
+namespace fs = std::filesystem;
+using test::ScratchDirectory;
+
+// The message of the OutputFileError that check_output_path(path) throws ("" if none).
+std::string refusal(const std::string& path) {
+    try {
+        check_output_path(path);
+    } catch (const OutputFileError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+TEST(OutputFile, WritesANewFileWithTheUmasksPermissions) {
+    ScratchDirectory dir;
+    for (const auto& [umask, mode] : {std::pair<mode_t, mode_t>{022, 0644}, {077, 0600}}) {
+        const mode_t old = ::umask(umask);
+        const std::string path = dir.file("out-" + std::to_string(umask));
+        write_file_atomically(path, "bytes");
+        ::umask(old);
+        struct stat st {};
+        ASSERT_EQ(::stat(path.c_str(), &st), 0);
+        EXPECT_EQ(st.st_mode & 0777, mode) << path;
+        EXPECT_EQ(test::read_text_file(path), "bytes");
+    }
+    EXPECT_EQ(dir.entry_count(), 2u) << "no temporary file left";
+}
+
+TEST(OutputFile, FollowsALinkToARegularFileAndKeepsTheLink) {
+    ScratchDirectory dir;
+    const std::string real = dir.file("real"), link = dir.file("link");
+    test::write_text_file(real, "old");
+    fs::create_symlink("real", link);
+    write_file_atomically(link, "new");
+    EXPECT_TRUE(fs::is_symlink(link));
+    EXPECT_EQ(test::read_text_file(real), "new");
+    EXPECT_EQ(dir.entry_count(), 2u);
+}
+
+TEST(OutputFile, WithoutCommitTheTargetIsUntouchedAndTheTemporaryRemoved) {
+    ScratchDirectory dir;
+    const std::string path = dir.file("out");
+    test::write_text_file(path, "old");
+    {
+        AtomicOutputFile file(path);
+        file.write("half of it");
+        EXPECT_TRUE(fs::exists(file.temporary_path()));
+        EXPECT_EQ(fs::path(file.temporary_path()).parent_path(), dir.path()) << "same file system";
+    }
+    EXPECT_EQ(test::read_text_file(path), "old");
+    EXPECT_EQ(dir.entry_count(), 1u);
+}
+
+TEST(OutputFile, CommitRefusesAFifoPutInPlaceDuringTheWrite) {
+    ScratchDirectory dir;
+    const std::string path = dir.file("out");
+    {
+        AtomicOutputFile file(path);
+        file.write("bytes");
+        ASSERT_EQ(::mkfifo(path.c_str(), 0644), 0);
+        EXPECT_THROW(file.commit(), OutputFileError);
+    }
+    EXPECT_TRUE(fs::is_fifo(path));
+    EXPECT_EQ(dir.entry_count(), 1u);
+}
+
+TEST(OutputFile, ANameOrAPathTooLongIsCalledTooLongNotMissing) {
+    ScratchDirectory dir;
+    const std::string long_name = dir.file(std::string(300, 'n'));
+    std::string deep = dir.path().string();
+    for (int k = 0; k < 24; ++k) deep += "/" + std::string(200, 'd');  // longer than PATH_MAX
+    for (const std::string& path : {long_name, deep + "/out.h5"}) {
+        const std::string message = refusal(path);
+        EXPECT_TRUE(contains(message, "the path is too long (File name too long")) << message;
+        EXPECT_FALSE(contains(message, "does not exist")) << message;
+    }
+}
+
+TEST(OutputFile, ALoopOfLinksIsCalledALoopNotALinkToNothing) {
+    ScratchDirectory dir;
+    const std::string a = dir.file("a"), b = dir.file("b");
+    fs::create_symlink("b", a);
+    fs::create_symlink("a", b);
+    const std::string message = refusal(a);
+    EXPECT_TRUE(contains(message, "'" + a + "': it is a loop of symbolic links")) << message;
+    EXPECT_FALSE(contains(message, "to nothing")) << message;
+    // A loop in the directory part is named too.
+    EXPECT_TRUE(contains(refusal(a + "/out.h5"), "directory '" + a + "' is a loop of symbolic links"));
+}
+
+TEST(OutputFile, EachCauseIsNamed) {
+    ScratchDirectory dir;
+    test::write_text_file(dir.file("file"), "x");
+    fs::create_directory(dir.file("dir"));
+    fs::create_symlink("nowhere", dir.file("dangling"));
+    ASSERT_EQ(::mkfifo(dir.file("fifo").c_str(), 0644), 0);
+    EXPECT_TRUE(contains(refusal(dir.file("no/out")), "directory '" + dir.file("no") + "' does not exist"));
+    EXPECT_TRUE(contains(refusal(dir.file("file/out")), "'" + dir.file("file") + "' is not a directory (it is a regular file)"));
+    EXPECT_TRUE(contains(refusal(dir.file("dir")), "a directory of that name exists"));
+    EXPECT_TRUE(contains(refusal(dir.file("dir") + "/"), "the path names a directory, not a file"));
+    EXPECT_TRUE(contains(refusal(dir.file("dangling")), "a symbolic link to nothing ('nowhere' does not exist)"));
+    EXPECT_TRUE(contains(refusal(dir.file("fifo")), "not a regular file (a FIFO)"));
+    EXPECT_TRUE(contains(refusal(""), "the file name is empty"));
+    EXPECT_EQ(refusal(dir.file("file")), "") << "a regular file is replaced";
+    EXPECT_EQ(refusal(dir.file("new")), "") << "a new file is written";
+}
+
+TEST(OutputFile, AnOutputDirectoryMayBeMissingButNothingElse) {
+    ScratchDirectory dir;
+    ASSERT_EQ(::mkfifo(dir.file("fifo").c_str(), 0644), 0);
+    fs::create_symlink("nowhere", dir.file("dangling"));
+    fs::create_symlink("loop", dir.file("loop"));
+    EXPECT_NO_THROW(check_output_directory(dir.file("new/and/deeper")));
+    EXPECT_NO_THROW(check_output_directory(dir.path().string()));
+    EXPECT_THROW(check_output_directory(dir.file("fifo")), OutputFileError);
+    EXPECT_THROW(check_output_directory(dir.file("dangling")), OutputFileError);
+    EXPECT_THROW(check_output_directory(dir.file("loop")), OutputFileError);
+}
+
+TEST(OutputFile, ADirectoryWithoutWritePermissionGivesTheSystemsReason) {
+    if (::geteuid() == 0) GTEST_SKIP() << "root may write into read-only directories";
+    ScratchDirectory dir;
+    const fs::path locked = dir.path() / "locked";
+    fs::create_directory(locked);
+    ::chmod(locked.c_str(), 0555);
+    EXPECT_TRUE(contains(refusal((locked / "out").string()), "Permission denied"));
+    ::chmod(locked.c_str(), 0755);
+}
+
+}  // namespace
+}  // namespace collide
