@@ -10,8 +10,8 @@
 namespace collide {
 namespace {
 
-// The datasets RunWriter writes under /metrics (its tables in run_writer.cpp); a round-trip
-// test (tests/core/test_run_reader.cpp) keeps the two lists together.
+// The datasets RunWriter writes under /metrics (its tables in run_writer.cpp). A name here
+// that the writer no longer writes fails RunReader.ReadsBackWhatTheWriterWrote.
 const char* const real_metric_names[] = {"time",        "momentum_x",  "momentum_y",   "kinetic_energy",
                                          "potential_energy", "max_overlap", "mean_overlap",
                                          "max_wall_penetration"};
