@@ -143,8 +143,10 @@ void write_double_array(hid_t group, const std::string& name, const std::vector<
     const hsize_t chunk = std::clamp<hsize_t>(size, 1, constants_chunk_values);
     Hdf5Handle space = dataspace_handle(checked(H5Screate_simple(1, &size, nullptr), where, "create a dataspace"));
     Hdf5Handle properties = property_list_handle(checked(H5Pcreate(H5P_DATASET_CREATE), where, "create properties"));
-    checked(H5Pset_chunk(properties.get(), 1, &chunk), where, "set the chunk shape");
-    add_checksum_filter(properties.get(), where);
+    if (size > 0) {  // HDF5 allows no chunk larger than a fixed, empty extent
+        checked(H5Pset_chunk(properties.get(), 1, &chunk), where, "set the chunk shape");
+        add_checksum_filter(properties.get(), where);
+    }
     Hdf5Handle dataset = dataset_handle(checked(
         H5Dcreate2(group, name.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, properties.get(), H5P_DEFAULT),
         where, "create"));
