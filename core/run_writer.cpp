@@ -14,6 +14,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "crc32.h"
 #include "hdf5_handle.h"
 #include "output_file.h"
 
@@ -60,6 +61,7 @@ const CountMetric count_metrics[] = {
 
 constexpr hsize_t metrics_chunk_rows = 256;
 constexpr std::size_t frame_chunk_target_bytes = 256 * 1024;
+constexpr hsize_t constants_chunk_values = 64 * 1024;  // 512 KiB of doubles per chunk
 constexpr unsigned gzip_level = 4;  // little slower than 1, clearly smaller; 9 is rarely worth it
 
 // ---------------------------------------------------------------------------------------
@@ -117,14 +119,28 @@ Hdf5Handle open_or_create_group(hid_t parent, const std::string& name, const std
     return create_group(parent, name, context);
 }
 
-// A fixed-size 1-D dataset of doubles, written whole.
+// Every dataset carries HDF5's Fletcher32 checksum filter: HDF5 stores a checksum with each
+// chunk and verifies it on every read, so a damaged file (a flipped bit on a disk, a copy
+// gone wrong) fails to read instead of handing back wrong numbers. The filter needs chunked
+// storage. Added last, so the checksum covers the bytes as stored (after compression).
+void add_checksum_filter(hid_t properties, const std::string& where) {
+    checked(H5Pset_fletcher32(properties), where, "enable the Fletcher32 checksum filter");
+}
+
+// A fixed-size 1-D dataset of doubles, written whole (chunked, for its checksums).
 void write_double_array(hid_t group, const std::string& name, const std::vector<double>& values,
                         const std::string& context) {
     const std::string where = context + ": dataset '" + name + "'";
     const hsize_t size = values.size();
+    const hsize_t chunk = std::clamp<hsize_t>(size, 1, constants_chunk_values);
     Hdf5Handle space = dataspace_handle(checked(H5Screate_simple(1, &size, nullptr), where, "create a dataspace"));
+    Hdf5Handle properties = property_list_handle(checked(H5Pcreate(H5P_DATASET_CREATE), where, "create properties"));
+    if (size > 0) {  // HDF5 allows no chunk larger than a fixed, empty extent
+        checked(H5Pset_chunk(properties.get(), 1, &chunk), where, "set the chunk shape");
+        add_checksum_filter(properties.get(), where);
+    }
     Hdf5Handle dataset = dataset_handle(checked(
-        H5Dcreate2(group, name.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+        H5Dcreate2(group, name.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, properties.get(), H5P_DEFAULT),
         where, "create"));
     checked(H5Dwrite(dataset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), where, "write");
 }
@@ -152,6 +168,7 @@ Hdf5Handle create_growing_dataset(hid_t group, const std::string& name, hid_t fi
         checked(H5Pset_shuffle(properties.get()), where, "enable the shuffle filter");
         checked(H5Pset_deflate(properties.get(), gzip_level), where, "enable gzip compression");
     }
+    add_checksum_filter(properties.get(), where);
     return dataset_handle(checked(H5Dcreate2(group, name.c_str(), file_type, space.get(), H5P_DEFAULT,
                                              properties.get(), H5P_DEFAULT),
                                   where, "create"));
@@ -187,6 +204,16 @@ std::vector<double> interleave(const std::vector<double>& x, const std::vector<d
     return xy;
 }
 
+// File access with the object-header format of HDF5 1.8 (readable by every HDF5 >= 1.8):
+// its headers, which hold the attributes (provenance, /stats), carry checksums that HDF5
+// verifies when it reads them; the older default format has none.
+Hdf5Handle checksummed_metadata_access(const std::string& context) {
+    Hdf5Handle access = property_list_handle(checked(H5Pcreate(H5P_FILE_ACCESS), context, "create file properties"));
+    checked(H5Pset_libver_bounds(access.get(), H5F_LIBVER_V18, H5F_LIBVER_V18), context,
+            "choose the HDF5 1.8 file format");
+    return access;
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------------------------------
@@ -207,13 +234,20 @@ struct RunWriter::Impl {
     std::size_t frame_disks = 0;
 
     bool committed = false;
+    std::map<std::string, std::string> root_text;  // every root attribute, for their checksum
+
+    void write_root_text(const std::string& name, const std::string& value) {
+        write_string_attribute(file.get(), name, value, target);
+        root_text[name] = value;
+    }
 
     Impl(const std::string& path, bool frames)
         : target(path), output(path), write_frames(frames) {
-        file = file_handle(checked(H5Fcreate(output.temporary_path().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
+        file = file_handle(checked(H5Fcreate(output.temporary_path().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT,
+                                             checksummed_metadata_access(target).get()),
                                    target, "create the HDF5 file '" + output.temporary_path() + "'"));
-        write_string_attribute(file.get(), "format", "collide-run", target);
-        write_string_attribute(file.get(), "format_version", "1", target);
+        write_root_text("format", "collide-run");
+        write_root_text("format_version", run_format_version);
         create_metric_datasets();
         if (write_frames) frames_group = create_group(file.get(), "frames", target);
     }
@@ -303,7 +337,8 @@ void RunWriter::write_attributes(const std::map<std::string, std::string>& attri
     impl_->require_open("write_attributes");
     for (const auto& [name, value] : attributes) {
         if (name.empty()) throw Hdf5Error(impl_->target + ": provenance attribute with an empty name");
-        write_string_attribute(impl_->file.get(), name, value, impl_->target);
+        if (name == attributes_checksum_name) throw Hdf5Error(impl_->target + ": '" + name + "' is the writer's own");
+        impl_->write_root_text(name, value);
     }
 }
 
@@ -341,9 +376,18 @@ void RunWriter::write_stats(const SolverStats& stats) {
 void RunWriter::commit() {
     impl_->require_open("commit");
     impl_->committed = true;  // whatever happens below, the writer takes no more data
+    write_string_attribute(impl_->file.get(), attributes_checksum_name, root_attributes_checksum(impl_->root_text),
+                           impl_->target);
     checked(H5Fflush(impl_->file.get(), H5F_SCOPE_GLOBAL), impl_->target, "flush the HDF5 file");
     impl_->close_file();
     impl_->output.commit();
+}
+
+std::string root_attributes_checksum(const std::map<std::string, std::string>& attributes) {
+    std::string bytes;
+    for (const auto& [name, value] : attributes)
+        if (name != attributes_checksum_name) bytes.append(name).append(1, '\0').append(value).append(1, '\0');
+    return crc32_text(bytes);
 }
 
 const std::string& RunWriter::path() const { return impl_->target; }

@@ -12,6 +12,10 @@
 //   /frames/time (T), /frames/position (T x N x 2), /frames/velocity (T x N x 2)
 //                          only with frames enabled; chunked, gzip-compressed, extendible in T
 //
+// Every dataset is chunked and carries HDF5's Fletcher32 checksum filter, and the file uses
+// the HDF5 1.8 object-header format, whose headers (holding the attributes) are checksummed
+// too: HDF5 verifies both on read, so damage is found by the reader (core/run_reader.h).
+//
 // The file is written with AtomicOutputFile (core/output_file.h), the guard and atomic
 // rename every output of collide shares: under a temporary name beside the target
 // (".NAME.tmp-PID-K"), renamed into place by commit(), so an existing file is never left
@@ -34,6 +38,17 @@
 #include "solver.h"
 
 namespace collide {
+
+// The root attribute `format_version`. 2: checksums on every dataset (Fletcher32) and on the
+// object headers. 1 (before them) is refused by the reader: such a file is run again.
+inline constexpr const char* run_format_version = "2";
+
+// The text attributes at the root (provenance, scene text) are stored outside the checksummed
+// headers (HDF5 keeps variable-length strings in a heap without checksums), so the writer adds
+// the root attribute `attributes_checksum`: crc32_text (core/crc32.h) of every other root
+// attribute, in name order, each as name NUL value NUL.
+inline constexpr const char* attributes_checksum_name = "attributes_checksum";
+std::string root_attributes_checksum(const std::map<std::string, std::string>& attributes);
 
 class RunWriter {
 public:

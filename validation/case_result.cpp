@@ -5,7 +5,9 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <iterator>
 #include <sstream>
+#include <string_view>
 
 #include <cmath>
 #include <filesystem>
@@ -13,8 +15,10 @@
 #include <stdexcept>
 #include <toml++/toml.h>
 
+#include "core/crc32.h"
 #include "core/hdf5_handle.h"
 #include "core/output_file.h"
+#include "core/run_reader.h"
 
 namespace collide::validation {
 
@@ -33,7 +37,7 @@ RunStatus run_status_from_string(const std::string& s) {
     for (auto st : {RunStatus::completed, RunStatus::left_out, RunStatus::error, RunStatus::crashed,
                     RunStatus::timed_out})
         if (s == to_string(st)) return st;
-    throw std::runtime_error("unknown run status '" + s + "'");
+    throw std::invalid_argument("unknown run status '" + s + "'");
 }
 
 namespace {
@@ -45,21 +49,9 @@ toml::array to_array(const std::vector<double>& v) {
     return a;
 }
 
-std::vector<double> from_array(const toml::table& t, const std::string& key) {
-    std::vector<double> out;
-    if (const toml::array* a = t[key].as_array())
-        for (const auto& e : *a) out.push_back(e.value<double>().value_or(std::nan("")));
-    return out;
-}
-
 toml::table to_table(const Snapshot& s) {
     return toml::table{{"x", to_array(s.x)}, {"y", to_array(s.y)}, {"vx", to_array(s.vx)},
                        {"vy", to_array(s.vy)}, {"radius", to_array(s.radius)}};
-}
-
-Snapshot snapshot_from(const toml::table& t) {
-    return {from_array(t, "x"), from_array(t, "y"), from_array(t, "vx"), from_array(t, "vy"),
-            from_array(t, "radius")};
 }
 
 template <typename T>
@@ -68,6 +60,13 @@ toml::table to_table(const std::map<std::string, T>& m) {
     for (const auto& [k, v] : m) t.insert(k, v);
     return t;
 }
+
+// The record's first line holds the CRC-32 (core/crc32.h, Python's zlib.crc32) of every
+// byte after it, so a record changed after it was written (a damaged disk, a hand edit, a
+// copy cut short) is recognised as damaged instead of being judged.
+constexpr std::string_view checksum_prefix = "checksum = \"crc32:";
+
+std::string checksum_line(std::string_view body) { return "checksum = \"" + crc32_text(body) + "\"\n"; }
 
 }  // namespace
 
@@ -117,71 +116,181 @@ void write_case_result(const CaseResult& r, const std::string& path) {
                      {"hdf5_file", r.hdf5_file}};
     std::ostringstream text;
     text << root << "\n";
-    write_file_atomically(path, text.str());  // the guard and rename of every output
+    write_file_atomically(path, checksum_line(text.str()) + text.str());  // the guard and rename of every output
 }
 
+namespace {
+
+// The record's text after its checksum line, once the checksum matches it.
+std::string verified_record_text(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw std::runtime_error(path + ": cannot read the case record (" + std::strerror(errno) + ")");
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::size_t newline = text.find('\n');
+    if (text.rfind(checksum_prefix, 0) != 0 || newline == std::string::npos)
+        throw std::runtime_error(path + ": damaged case record: no checksum line (cut short, edited, or written "
+                                        "by an older collide)");
+    const std::string body = text.substr(newline + 1);
+    if (text.compare(0, newline + 1, checksum_line(body)) != 0)
+        throw std::runtime_error(path + ": damaged case record: its checksum does not match its contents");
+    return body;
+}
+
+// Every field the writer writes is required, with its type. A record that lacks one, or holds
+// one of another type, is damaged: no default stands in for a lost value (a record without
+// its status once read as an error with an empty message, `steps = "many"` as 0 steps).
+class RecordReader {
+public:
+    explicit RecordReader(const std::string& path) : path_(path) {}
+
+    [[noreturn]] void damaged(const std::string& what) const {
+        throw std::runtime_error(path_ + ": damaged case record: " + what);
+    }
+    const toml::node& node(const toml::table& t, const std::string& key, const std::string& where) const {
+        const toml::node* n = t.get(key);
+        if (!n) damaged("no field '" + where + key + "'");
+        return *n;
+    }
+    std::string text(const toml::table& t, const std::string& key, const std::string& where = "") const {
+        const auto* v = node(t, key, where).as_string();
+        if (!v) wrong_type(key, where, "text");
+        return v->get();
+    }
+    std::int64_t integer(const toml::table& t, const std::string& key, const std::string& where = "") const {
+        const auto* v = node(t, key, where).as_integer();
+        if (!v) wrong_type(key, where, "an integer");
+        return v->get();
+    }
+    double number(const toml::table& t, const std::string& key, const std::string& where = "") const {
+        const toml::node& n = node(t, key, where);
+        if (!n.is_number()) wrong_type(key, where, "a number");
+        return *n.value<double>();
+    }
+    bool boolean(const toml::table& t, const std::string& key, const std::string& where = "") const {
+        const auto* v = node(t, key, where).as_boolean();
+        if (!v) wrong_type(key, where, "true or false");
+        return v->get();
+    }
+    const toml::table& table(const toml::table& t, const std::string& key, const std::string& where = "") const {
+        const auto* v = node(t, key, where).as_table();
+        if (!v) wrong_type(key, where, "a table");
+        return *v;
+    }
+    const toml::array& array(const toml::table& t, const std::string& key, const std::string& where = "") const {
+        const auto* v = node(t, key, where).as_array();
+        if (!v) wrong_type(key, where, "an array");
+        return *v;
+    }
+    std::vector<double> numbers(const toml::table& t, const std::string& key, const std::string& where = "") const {
+        std::vector<double> out;
+        for (const toml::node& e : array(t, key, where)) {
+            if (!e.is_number()) damaged("'" + where + key + "' holds a value that is not a number");
+            out.push_back(*e.value<double>());
+        }
+        return out;
+    }
+    Snapshot snapshot(const toml::table& t, const std::string& where) const {
+        return {numbers(t, "x", where), numbers(t, "y", where), numbers(t, "vx", where), numbers(t, "vy", where),
+                numbers(t, "radius", where)};
+    }
+    std::map<std::string, double> number_map(const toml::table& t, const std::string& key) const {
+        std::map<std::string, double> out;
+        for (const auto& [k, v] : table(t, key)) out[std::string(k.str())] = number(table(t, key), std::string(k.str()), key + ".");
+        return out;
+    }
+    std::map<std::string, std::string> text_map(const toml::table& t, const std::string& key) const {
+        std::map<std::string, std::string> out;
+        for (const auto& [k, v] : table(t, key)) out[std::string(k.str())] = text(table(t, key), std::string(k.str()), key + ".");
+        return out;
+    }
+
+private:
+    [[noreturn]] void wrong_type(const std::string& key, const std::string& where, const std::string& expected) const {
+        damaged("field '" + where + key + "' is not " + expected);
+    }
+    std::string path_;
+};
+
+CaseSpec read_spec(const RecordReader& in, const toml::table& root) {
+    const toml::table& t = in.table(root, "spec");
+    const std::string w = "spec.";
+    CaseSpec spec;
+    spec.id = in.text(t, "id", w);
+    spec.scene = in.text(t, "scene", w);
+    spec.backend = in.text(t, "backend", w);
+    spec.reference = in.boolean(t, "reference", w);
+    spec.seed = std::uint64_t(in.integer(t, "seed", w));
+    spec.scene_index = std::size_t(in.integer(t, "scene_index", w));
+    // Written only when the case sets them; typed when present.
+    if (t.contains("dt")) spec.dt = in.number(t, "dt", w);
+    if (t.contains("substeps")) spec.substeps = int(in.integer(t, "substeps", w));
+    if (t.contains("iterations")) spec.iterations = int(in.integer(t, "iterations", w));
+    if (t.contains("parameters"))
+        for (const toml::node& e : in.array(t, "parameters", w)) {
+            const toml::table* p = e.as_table();
+            if (!p) in.damaged("an entry of 'spec.parameters' is not a table");
+            spec.parameters.emplace_back(in.text(*p, "path", w + "parameters."), in.number(*p, "value", w + "parameters."));
+        }
+    return spec;
+}
+
+MetricSeries read_series(const RecordReader& in, const toml::table& root) {
+    const toml::table& s = in.table(root, "series");
+    const std::string w = "series.";
+    MetricSeries m{in.numbers(s, "time", w),         in.numbers(s, "kinetic_energy", w),
+                   in.numbers(s, "total_energy", w), in.numbers(s, "momentum_x", w),
+                   in.numbers(s, "momentum_y", w),   in.numbers(s, "max_overlap", w),
+                   in.numbers(s, "mean_overlap", w), in.numbers(s, "overlapping_pairs", w),
+                   in.numbers(s, "wall_penetration", w), in.numbers(s, "nonfinite", w)};
+    for (const auto* column : {&m.kinetic_energy, &m.total_energy, &m.momentum_x, &m.momentum_y, &m.max_overlap,
+                               &m.mean_overlap, &m.overlapping_pairs, &m.wall_penetration, &m.nonfinite})
+        if (column->size() != m.time.size()) in.damaged("the columns of [series] differ in length");
+    return m;
+}
+
+}  // namespace
+
 CaseResult read_case_result(const std::string& path) {
+    const std::string body = verified_record_text(path);
     toml::table root;
     try {
-        root = toml::parse_file(path);
+        root = toml::parse(body, path);
     } catch (const toml::parse_error& e) {
         throw std::runtime_error(path + ": unreadable case result: " + std::string(e.description()));
     }
+    const RecordReader in(path);
     CaseResult r;
-    const toml::table* spec = root["spec"].as_table();
-    if (!spec) throw std::runtime_error(path + ": case result without [spec]");
-    r.spec.id = (*spec)["id"].value_or(std::string());
-    r.spec.scene = (*spec)["scene"].value_or(std::string());
-    r.spec.backend = (*spec)["backend"].value_or(std::string());
-    r.spec.reference = (*spec)["reference"].value_or(false);
-    r.spec.seed = std::uint64_t((*spec)["seed"].value_or(std::int64_t(1)));
-    r.spec.scene_index = std::size_t((*spec)["scene_index"].value_or(std::int64_t(0)));
-    if (auto v = (*spec)["dt"].value<double>()) r.spec.dt = *v;
-    if (auto v = (*spec)["substeps"].value<int>()) r.spec.substeps = *v;
-    if (auto v = (*spec)["iterations"].value<int>()) r.spec.iterations = *v;
-    if (const toml::array* a = (*spec)["parameters"].as_array())
-        for (const auto& e : *a)
-            if (const toml::table* p = e.as_table())
-                r.spec.parameters.emplace_back((*p)["path"].value_or(std::string()), (*p)["value"].value_or(0.0));
-    r.status = run_status_from_string(root["status"].value_or(std::string("error")));
-    r.diagnostic = root["diagnostic"].value_or(std::string());
-    r.disks = std::size_t(root["disks"].value_or(std::int64_t(0)));
-    r.total_mass = root["total_mass"].value_or(0.0);
-    r.duration = root["duration"].value_or(0.0);
-    r.dt = root["dt"].value_or(0.0);
-    r.substeps = root["substeps"].value_or(1);
-    r.wall_seconds = root["wall_seconds"].value_or(0.0);
-    r.warmup_seconds = root["warmup_seconds"].value_or(0.0);
-    r.steps = root["steps"].value_or(std::int64_t(0));
-    r.contacts = root["contacts"].value_or(std::int64_t(0));
-    if (const toml::table* t = root["phase_seconds"].as_table())
-        for (const auto& [k, v] : *t) r.phase_seconds[std::string(k.str())] = v.value_or(0.0);
-    if (const toml::table* t = root["counters"].as_table())
-        for (const auto& [k, v] : *t) r.counters[std::string(k.str())] = v.value_or(0.0);
-    if (const toml::table* t = root["provenance"].as_table())
-        for (const auto& [k, v] : *t) r.provenance[std::string(k.str())] = v.value_or(std::string());
-    if (const toml::table* s = root["series"].as_table()) {
-        MetricSeries& m = r.series;
-        m.time = from_array(*s, "time");
-        m.kinetic_energy = from_array(*s, "kinetic_energy");
-        m.total_energy = from_array(*s, "total_energy");
-        m.momentum_x = from_array(*s, "momentum_x");
-        m.momentum_y = from_array(*s, "momentum_y");
-        m.max_overlap = from_array(*s, "max_overlap");
-        m.mean_overlap = from_array(*s, "mean_overlap");
-        m.overlapping_pairs = from_array(*s, "overlapping_pairs");
-        m.wall_penetration = from_array(*s, "wall_penetration");
-        m.nonfinite = from_array(*s, "nonfinite");
+    r.spec = read_spec(in, root);
+    try {
+        r.status = run_status_from_string(in.text(root, "status"));
+    } catch (const std::invalid_argument& e) {
+        in.damaged(e.what());
     }
-    if (const toml::table* t = root["initial"].as_table()) r.initial = snapshot_from(*t);
-    if (const toml::table* t = root["final"].as_table()) r.final_state = snapshot_from(*t);
-    r.trajectory_time = from_array(root, "trajectory_time");
-    if (const toml::array* a = root["trajectory"].as_array())
-        for (const auto& e : *a)
-            if (const toml::table* t = e.as_table()) r.trajectory.push_back(snapshot_from(*t));
-    r.overlap_depths = from_array(root, "overlap_depths");
-    r.compressibility = from_array(root, "compressibility");
-    r.hdf5_file = root["hdf5_file"].value_or(std::string());
+    r.diagnostic = in.text(root, "diagnostic");
+    r.disks = std::size_t(in.integer(root, "disks"));
+    r.total_mass = in.number(root, "total_mass");
+    r.duration = in.number(root, "duration");
+    r.dt = in.number(root, "dt");
+    r.substeps = int(in.integer(root, "substeps"));
+    r.wall_seconds = in.number(root, "wall_seconds");
+    r.warmup_seconds = in.number(root, "warmup_seconds");
+    r.steps = in.integer(root, "steps");
+    r.contacts = in.integer(root, "contacts");
+    r.phase_seconds = in.number_map(root, "phase_seconds");
+    r.counters = in.number_map(root, "counters");
+    r.provenance = in.text_map(root, "provenance");
+    r.series = read_series(in, root);
+    r.initial = in.snapshot(in.table(root, "initial"), "initial.");
+    r.final_state = in.snapshot(in.table(root, "final"), "final.");
+    r.trajectory_time = in.numbers(root, "trajectory_time");
+    for (const toml::node& e : in.array(root, "trajectory")) {
+        const toml::table* t = e.as_table();
+        if (!t) in.damaged("an entry of 'trajectory' is not a table");
+        r.trajectory.push_back(in.snapshot(*t, "trajectory[]."));
+    }
+    r.overlap_depths = in.numbers(root, "overlap_depths");
+    r.compressibility = in.numbers(root, "compressibility");
+    r.hdf5_file = in.text(root, "hdf5_file");
     return r;
 }
 
@@ -207,22 +316,18 @@ std::string case_files_problem(const CaseResult& result, const std::string& outp
     if (host != result.provenance.end() && host->second != this_host()) return "";
     const std::string path = output_dir + "/" + result.hdf5_file;
     if (!std::filesystem::is_regular_file(path)) return path + ": missing";
-    silence_hdf5_error_printing();
     try {
-        // HDF5 refuses a truncated file at open ("truncated file: eof = ..."); a file cut
-        // at a chunk boundary still has to hold one /metrics/time row per output in the record.
-        Hdf5Handle file = file_handle(checked(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), path, "open"));
-        Hdf5Handle time = dataset_handle(checked(H5Dopen2(file.get(), "/metrics/time", H5P_DEFAULT), path,
-                                                 "open /metrics/time"));
-        Hdf5Handle space = dataspace_handle(checked(H5Dget_space(time.get()), path, "read /metrics/time"));
-        hsize_t rows = 0;
-        checked(H5Sget_simple_extent_dims(space.get(), &rows, nullptr), path, "read /metrics/time");
-        if (rows != result.series.size())
-            return path + ": " + std::to_string(rows) + " outputs where the case record has " +
+        // Every check of the run file (core/run_reader.h), then its agreement with the record.
+        const RunFile run(path);
+        if (run.output_count() != result.series.size())
+            return path + ": " + std::to_string(run.output_count()) + " outputs where the case record has " +
                    std::to_string(result.series.size());
-        std::vector<double> values(rows);
-        if (rows) checked(H5Dread(time.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
-                          path, "read /metrics/time");
+        if (result.disks && run.disk_count() != result.disks)
+            return path + ": " + std::to_string(run.disk_count()) + " disks where the case record has " +
+                   std::to_string(result.disks);
+        if (run.has_frames()) run.verify_frames();
+    } catch (const RunFileError& e) {
+        return e.what();
     } catch (const Hdf5Error& e) {
         return e.what();
     }

@@ -59,11 +59,15 @@ struct CaseResult {
     bool finished() const { return status == RunStatus::completed; }
 };
 
+// The record's first line is `checksum = "crc32:XXXXXXXX"` over the rest of the file.
 void write_case_result(const CaseResult& result, const std::string& path);  // atomic (core/output_file.h)
-CaseResult read_case_result(const std::string& path);                       // throws on bad files
+// Throws std::runtime_error naming the file when the record is damaged: no checksum line or one
+// that does not match, a field the writer always writes missing or of another type.
+CaseResult read_case_result(const std::string& path);
 
-// Why the files of a kept case cannot be trusted (its HDF5 file missing, unreadable, truncated,
-// or with fewer rows than the case record), or "" when they can. `output_dir` holds runs/.
+// Why the files of a kept case cannot be trusted (its HDF5 file missing, or failing a check of
+// core/run_reader.h in any dataset or frame, or with other counts of outputs or disks than
+// the case record), or "" when they can. `output_dir` holds runs/.
 std::string case_files_problem(const CaseResult& result, const std::string& output_dir);
 
 }  // namespace collide::validation

@@ -44,6 +44,16 @@ void check_compatible(const RunFrames& run, const RunFrames& ref) {
                                  " (compare runs of the same scene)");
 }
 
+// Reads every frame that will be drawn before anything is written, so a damaged file leaves
+// no half-written animation behind.
+void check_frames(const RunFrames& run, const RunFrames* ref, const std::vector<std::size_t>& frames) {
+    ParticleState<double> state;
+    for (std::size_t k : frames) {
+        run.read(k, state);
+        if (ref) ref->read(nearest_frame(*ref, run.time(k)), state);
+    }
+}
+
 // Copies `panel` into `strip` at column offset x0.
 void paste(Image& strip, const Image& panel, int x0) {
     for (int y = 0; y < panel.height; ++y)
@@ -101,6 +111,7 @@ void render_run(const RenderOptions& o) {
         check_compatible(run, *ref);
     }
     const std::vector<std::size_t> frames = chosen_frames(run, o.frames, format);
+    check_frames(run, ref.get(), frames);
     FramePainter painter(run, ref.get(), o.width, o.height);
     if (format == "png") {
         Image strip{o.width * int(frames.size()), o.height, {}};

@@ -4,11 +4,17 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <memory>
+#include <set>
 #include <stdexcept>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "commands.h"
 #include "core/output_file.h"
@@ -17,14 +23,60 @@
 namespace collide::cli {
 namespace {
 
-// Every case file the renderer will read must be complete: a truncated HDF5 file (a full
-// disk, a copy cut short) is named here rather than drawn from, or failing deep in Python.
-void check_case_files(const std::string& dir) {
+// The ids of the cases summary.json lists (their records are cases/<id>.toml). Only the
+// fields read here are checked; the renderer checks the whole file (digest.load_summary).
+std::set<std::string> listed_case_ids(const std::string& dir) {
+    const std::string path = dir + "/summary.json";
+    std::ifstream in(path);
+    nlohmann::json summary;
+    try {
+        summary = nlohmann::json::parse(in);
+    } catch (const nlohmann::json::exception& e) {
+        throw std::runtime_error(path + ": not valid JSON (" + e.what() + ")");
+    }
+    if (!summary.is_object() || !summary.contains("cases") || !summary["cases"].is_array())
+        throw std::runtime_error(path + ": no list 'cases'; expected the summary of `collide validate`");
+    std::set<std::string> ids;
+    for (const auto& c : summary["cases"])
+        if (c.is_object() && c.contains("id") && c["id"].is_string()) ids.insert(c["id"].get<std::string>());
+    return ids;
+}
+
+// Files in cases/ that belong to no listed case (a case of an earlier suite, an editor's
+// backup): not read, and named, so that nobody takes them for part of this report.
+void warn_about_stray_files(const std::string& dir, const std::set<std::string>& ids) {
+    std::vector<std::string> stray;
     std::error_code error;
     for (const auto& entry : std::filesystem::directory_iterator(dir + "/cases", error)) {
-        if (entry.path().extension() != ".toml") continue;
-        const std::string problem =
-            validation::case_files_problem(validation::read_case_result(entry.path().string()), dir);
+        const std::string name = entry.path().filename().string();
+        const auto dot = name.rfind('.');
+        const std::string stem = name.substr(0, dot), extension = dot == std::string::npos ? "" : name.substr(dot);
+        if (!((extension == ".toml" || extension == ".log") && ids.count(stem))) stray.push_back(name);
+    }
+    if (stray.empty()) return;
+    std::sort(stray.begin(), stray.end());
+    std::string names;
+    for (std::size_t i = 0; i < stray.size() && i < 10; ++i) names += (i ? ", " : "") + stray[i];
+    if (stray.size() > 10) names += ", and " + std::to_string(stray.size() - 10) + " more";
+    std::fprintf(stderr, "report: warning: %s/cases holds %zu file(s) that summary.json does not list, not used: %s\n",
+                 dir.c_str(), stray.size(), names.c_str());
+}
+
+// Every listed case's record and HDF5 file must be intact (core/run_reader.h): a damaged or
+// truncated one (a full disk, a copy cut short, a flipped bit) is named here rather than
+// drawn from, or failing deep in Python.
+void check_case_files(const std::string& dir) {
+    const std::set<std::string> ids = listed_case_ids(dir);
+    warn_about_stray_files(dir, ids);
+    for (const std::string& id : ids) {
+        const std::string record = dir + "/cases/" + id + ".toml";
+        if (!std::filesystem::exists(record)) continue;  // the renderer names it if it needs it
+        std::string problem;
+        try {
+            problem = validation::case_files_problem(validation::read_case_result(record), dir);
+        } catch (const std::runtime_error& e) {
+            problem = e.what();
+        }
         if (!problem.empty())
             throw std::runtime_error(problem + "; run `collide validate ... --resume` to run that case again");
     }

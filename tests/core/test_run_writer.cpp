@@ -148,7 +148,7 @@ TEST(RunWriter, ProvenanceAttributesIncludingALongSceneText) {
     }
     EXPECT_EQ(file.string_attribute("/", "seed"), "43");
     EXPECT_EQ(file.string_attribute("/", "format"), "collide-run");
-    EXPECT_EQ(file.string_attribute("/", "format_version"), "1");
+    EXPECT_EQ(file.string_attribute("/", "format_version"), "2");
 }
 
 TEST(RunWriter, SolverStats) {

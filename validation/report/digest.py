@@ -11,6 +11,7 @@ import math
 import os
 import re
 import tomllib
+import zlib
 from collections import OrderedDict
 
 
@@ -71,6 +72,24 @@ def load_summary(directory):
     return summary
 
 
+CHECKSUM_LINE = re.compile(rb'checksum = "crc32:([0-9a-f]{8})"\n')
+
+
+def verified_record_text(path, data):
+    """The text of a case record after its first line, which holds the CRC-32 of the rest
+    (validation/case_result.cpp writes it); a record without it, or whose contents no longer
+    match it, is damaged and is not drawn."""
+    line = CHECKSUM_LINE.match(data)
+    if not line:
+        raise ReportInputError(f"{path}: damaged case record: no checksum line (cut short, edited, or written "
+                               "by an older collide); run `collide validate ... --resume` to run it again")
+    body = data[line.end():]
+    if int(line.group(1), 16) != zlib.crc32(body):
+        raise ReportInputError(f"{path}: damaged case record: its checksum does not match its contents; "
+                               "run `collide validate ... --resume` to run it again")
+    return body.decode("utf-8")
+
+
 def load_case(directory, case):
     """A case's result table (cases/<id>.toml), or a ReportInputError naming the file."""
     if not case.get("result_file"):
@@ -78,7 +97,7 @@ def load_case(directory, case):
     path = os.path.join(directory, case["result_file"])
     try:
         with open(path, "rb") as f:
-            result = tomllib.load(f)
+            result = tomllib.loads(verified_record_text(path, f.read()))
     except OSError as e:
         raise ReportInputError(f"{path}: cannot read: {e.strerror or e}") from None
     except (tomllib.TOMLDecodeError, UnicodeDecodeError) as e:

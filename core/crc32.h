@@ -1,0 +1,29 @@
+// CRC-32 (IEEE 802.3, as zlib's crc32 and Python's zlib.crc32 compute it): the checksum of
+// collide's own text records (case records, the run file's root attributes), so a reader can
+// tell a damaged or edited record from an intact one. It detects damage, not tampering.
+#pragma once
+
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <string_view>
+
+namespace collide {
+
+inline std::uint32_t crc32(std::string_view bytes) {
+    std::uint32_t crc = 0xFFFFFFFFu;
+    for (unsigned char byte : bytes) {
+        crc ^= byte;
+        for (int bit = 0; bit < 8; ++bit) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
+    }
+    return ~crc;
+}
+
+// "crc32:" and eight lower-case hex digits.
+inline std::string crc32_text(std::string_view bytes) {
+    char hex[9];
+    std::snprintf(hex, sizeof hex, "%08x", unsigned(crc32(bytes)));
+    return std::string("crc32:") + hex;
+}
+
+}  // namespace collide

@@ -1,0 +1,106 @@
+// Case records (validation/case_result.h): a record reads back as written; a record whose
+// checksum line is missing or does not match, or that lacks a field or holds one of another
+// type, is refused as damaged (so --resume runs its case again) instead of read as defaults.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <iterator>
+#include <regex>
+#include <stdexcept>
+#include <string>
+
+#include "core/crc32.h"
+#include "tests/support/scratch_directory.h"
+#include "validation/case_result.h"
+
+namespace collide::validation {
+namespace {
+
+CaseResult sample() {
+    CaseResult r;
+    r.spec.id = "gas__step__seed1";
+    r.spec.scene = "gas";
+    r.spec.backend = "step";
+    r.spec.dt = 1e-3;
+    r.status = RunStatus::error;
+    r.diagnostic = "NaN at t = 0.5";
+    r.disks = 2;
+    r.steps = 750;
+    r.series.time = {0, 0.5};
+    r.series.kinetic_energy = r.series.total_energy = r.series.momentum_x = r.series.momentum_y = {1, 1};
+    r.series.max_overlap = r.series.mean_overlap = r.series.overlapping_pairs = {0, 0};
+    r.series.wall_penetration = r.series.nonfinite = {0, 0};
+    r.initial.x = {1, 2};
+    r.provenance["rank"] = "0";
+    return r;
+}
+
+std::string read_text(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Applies `edit` to the record's body; with `fresh_checksum` the checksum line is recomputed
+// (as a careful hand edit would leave it), so only the field checks can find the fault.
+void edit_record(const std::string& path, const std::regex& what, const std::string& by, bool fresh_checksum) {
+    const std::string text = read_text(path);
+    const auto newline = text.find('\n');
+    const std::string body = std::regex_replace(text.substr(newline + 1), what, by);
+    const std::string line = fresh_checksum ? "checksum = \"" + crc32_text(body) + "\"\n" : text.substr(0, newline + 1);
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << line << body;
+}
+
+std::string refusal(const std::string& path) {
+    try {
+        read_case_result(path);
+    } catch (const std::runtime_error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(CaseRecord, ReadsBackAsWritten) {
+    test::ScratchDirectory dir;
+    const std::string path = dir.file("r.toml");
+    write_case_result(sample(), path);
+    EXPECT_EQ(read_text(path).rfind("checksum = \"crc32:", 0), 0u);
+    const CaseResult r = read_case_result(path);
+    EXPECT_EQ(r.spec.id, "gas__step__seed1");
+    EXPECT_EQ(r.spec.dt, 1e-3);
+    EXPECT_EQ(r.status, RunStatus::error);
+    EXPECT_EQ(r.diagnostic, "NaN at t = 0.5");
+    EXPECT_EQ(r.steps, 750);
+    EXPECT_EQ(r.series.time, (std::vector<double>{0, 0.5}));
+    EXPECT_EQ(r.provenance.at("rank"), "0");
+}
+
+TEST(CaseRecord, MissingStatusIsDamageNotAnError) {
+    test::ScratchDirectory dir;
+    const std::string path = dir.file("r.toml");
+    write_case_result(sample(), path);
+    edit_record(path, std::regex("\nstatus = [^\n]*\n"), "\n", true);
+    EXPECT_NE(refusal(path).find(path + ": damaged case record: no field 'status'"), std::string::npos) << refusal(path);
+}
+
+TEST(CaseRecord, WronglyTypedFieldIsDamageNotZero) {
+    test::ScratchDirectory dir;
+    const std::string path = dir.file("r.toml");
+    write_case_result(sample(), path);
+    edit_record(path, std::regex("\nsteps = [^\n]*\n"), "\nsteps = \"many\"\n", true);
+    EXPECT_NE(refusal(path).find("field 'steps' is not an integer"), std::string::npos) << refusal(path);
+}
+
+TEST(CaseRecord, ChangedOrUnsignedRecordsAreDamaged) {
+    test::ScratchDirectory dir;
+    const std::string path = dir.file("r.toml");
+    write_case_result(sample(), path);
+    edit_record(path, std::regex("steps = 750"), "steps = 751", false);
+    EXPECT_NE(refusal(path).find("checksum does not match"), std::string::npos) << refusal(path);
+    write_case_result(sample(), path);
+    const std::string text = read_text(path);
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << text.substr(text.find('\n') + 1);
+    EXPECT_NE(refusal(path).find("no checksum line"), std::string::npos) << refusal(path);
+}
+
+}  // namespace
+}  // namespace collide::validation
