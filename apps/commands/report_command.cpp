@@ -94,8 +94,8 @@ void check_report_outputs(const std::string& report_dir) {
 void execute(const std::string& dir) {
     if (!std::filesystem::exists(dir + "/summary.json"))
         throw std::runtime_error(dir + "/summary.json: not found; expected the output directory of `collide validate`");
+    check_report_outputs(dir + "/report");  // first: refused at once, before reading every run file
     check_case_files(dir);
-    check_report_outputs(dir + "/report");
     const std::string script = std::string(COLLIDE_REPORT_DIR) + "/make_report.py";
     // fork + exec (not system()): no shell, so directory names need no quoting.
     const pid_t pid = ::fork();
