@@ -29,11 +29,13 @@ namespace {
 // RunWriter is destroyed uncommitted, so no half-written file is left) back to Python.
 struct Interrupted {};
 
-py::dict run(const Scene& scene, const std::string& backend_name, const std::string& out, bool frames,
+py::dict run(const Scene& given, const std::string& backend_name, const std::string& out, bool frames,
              bool progress, const py::kwargs& options) {
+    Scene scene = given;  // with the keyword options in its [backend.NAME] table
+    const BackendOptions backend_settings = backend_options(options, backend_name, scene);
     const BackendInfo& backend = backend_for(scene, backend_name);
     const ParticleState<double> initial = generate_initial_state(scene);
-    auto solver = backend.create(backend_options(options));
+    auto solver = backend.create(backend_settings);
     std::unique_ptr<RunWriter> writer;
     if (!out.empty()) writer = std::make_unique<RunWriter>(out, frames);
 
@@ -210,8 +212,10 @@ PYBIND11_MODULE(_collide, m) {
         .def("__repr__", [](const Scene& s) { return "<collide.Scene '" + s.name + "'>"; });
 
     py::class_<Simulation>(m, "Simulation", "One scene on one backend; state read back as NumPy arrays (copies)")
-        .def(py::init([](const Scene& scene, const std::string& backend, const py::kwargs& options) {
-                 return std::make_unique<Simulation>(scene, backend, backend_options(options));
+        .def(py::init([](const Scene& given, const std::string& backend, const py::kwargs& options) {
+                 Scene scene = given;  // with the keyword options in its [backend.NAME] table
+                 const BackendOptions settings = backend_options(options, backend, scene);
+                 return std::make_unique<Simulation>(scene, backend, settings);
              }),
              py::arg("scene"), py::arg("backend") = "event")
         .def("advance_to", &Simulation::advance_to, py::arg("t"),
