@@ -9,7 +9,7 @@
 #include "scene_from_dict.h"
 
 #include <algorithm>
-#include <cstring>
+#include <cstdio>
 #include <sstream>
 #include <vector>
 
@@ -40,17 +40,47 @@ std::string safe_str(PyObject* o) {
 // A Python call made for the value at `where` failed (its error is set): raises it again as
 // TypeError (for a TypeError) or ValueError naming the key, chained to the original. Errors
 // that are no Exception (KeyboardInterrupt, SystemExit) pass through unchanged.
+// A key as a path names it: bare where TOML writes it bare, else quoted with escapes, so that
+// a path holds no control character (a NUL would cut the message short) and the key "a.b"
+// differs from the path a.b.
+std::string key_text(const std::string& key) {
+    const auto bare = [](unsigned char c) {
+        return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
+    };
+    if (!key.empty() && std::all_of(key.begin(), key.end(), bare)) return shortened(key);
+    std::string out = "\"";
+    for (const unsigned char c : key) {
+        if (c == '"' || c == '\\') {
+            out += std::string("\\") + char(c);
+        } else if (c < 0x20 || c == 0x7f) {
+            char escape[8];
+            std::snprintf(escape, sizeof escape, "\\u%04x", c);
+            out += escape;
+        } else {
+            out += char(c);
+        }
+    }
+    return shortened(out + "\"");
+}
+
+// Message text without NULs (from str() of a value): Python reads messages as C strings.
+std::string without_nul(std::string text) {
+    for (std::size_t at = text.find('\0'); at != std::string::npos; at = text.find('\0', at))
+        text.replace(at, 1, "\\x00");
+    return text;
+}
+
 [[noreturn]] void fail_from_python(const std::string& where, const std::string& doing) {
     py::error_already_set error;
     if (!error.matches(PyExc_Exception)) throw error;
-    const std::string message = where + ": " + doing + " raised " + type_name(error.value().ptr()) + ": " +
-                                safe_str(error.value().ptr());
+    const std::string message = without_nul(where + ": " + doing + " raised " + type_name(error.value().ptr()) +
+                                            ": " + safe_str(error.value().ptr()));
     py::raise_from(error, error.matches(PyExc_TypeError) ? PyExc_TypeError : PyExc_ValueError, message.c_str());
     throw py::error_already_set();
 }
 
 [[noreturn]] void fail(PyObject* type, const std::string& where, const std::string& what) {
-    PyErr_SetString(type, (where + ": " + what).c_str());
+    PyErr_SetString(type, without_nul(where + ": " + what).c_str());
     throw py::error_already_set();
 }
 
@@ -130,6 +160,8 @@ std::unique_ptr<toml::node> Converter::via_python(PyObject* value, const std::st
         if (v == -1.0 && PyErr_Occurred()) fail_from_python(where, "__float__ of a " + type);
         return std::make_unique<toml::value<double>>(v);
     }
+    if (value == Py_None)  // a key's None leaves the key out; in an array there is nothing to leave out
+        fail(PyExc_TypeError, where, "None has no TOML form in an array: expected bool, int, float, str, list, tuple or dict");
     fail(PyExc_TypeError, where, "a " + type + " has no TOML form: expected bool, int, float, str, list, tuple or dict");
 }
 
@@ -167,7 +199,7 @@ toml::table Converter::table(PyObject* dict, const std::string& where, int depth
         const char* utf8 = PyUnicode_AsUTF8AndSize(key, &size);
         if (!utf8) fail_from_python(parent, "encoding a key as UTF-8");
         const std::string name(utf8, std::size_t(size));
-        const std::string path = where.empty() ? shortened(name) : where + "." + shortened(name);
+        const std::string path = where.empty() ? key_text(name) : where + "." + key_text(name);
         if (value == Py_None) continue;
         auto node = this->node(value, path, depth + 1);
         std::move(*node).visit([&out, &name](auto&& v) { out.insert_or_assign(name, std::move(v)); });
