@@ -21,13 +21,10 @@ namespace py = pybind11;
 
 namespace {
 
-// A keyword's value as TOML (the rules of Scene.from_dict), e.g. for "threads = 2**70: ...".
-std::unique_ptr<toml::node> option_value(const std::string& key, const py::handle& value) {
-    return toml_value_from_python(value, key);
-}
-
+// Keyword values are read as TOML values, under Scene.from_dict's rules (so that, e.g.,
+// threads=2**70 is refused naming "threads"), and then checked as the CLI or a file's key.
 int threads_option(const py::handle& value) {
-    const auto node = option_value("threads", value);
+    const auto node = toml_value_from_python(value, "threads");
     const auto* n = node->as_integer();
     if (!n) throw py::type_error("threads = " + toml_value_text(*node) + ": expected an integer (0: all cores)");
     if (n->get() < INT_MIN || n->get() > INT_MAX)
@@ -36,7 +33,7 @@ int threads_option(const py::handle& value) {
 }
 
 std::string text_option(const std::string& key, const py::handle& value) {
-    const auto node = option_value(key, value);
+    const auto node = toml_value_from_python(value, key);
     if (const auto* s = node->as_string()) return s->get();
     if (key == "device" && node->is_integer()) return toml_value_text(*node);  // --cl-device 0
     throw py::type_error(key + " = " + toml_value_text(*node) + ": expected a string");
@@ -44,7 +41,7 @@ std::string text_option(const std::string& key, const py::handle& value) {
 
 // A key of the scene's [backend.NAME] table, checked as the scene reader checks a file's.
 void set_table_option(Scene& scene, const std::string& backend, const std::string& key, const py::handle& value) {
-    const auto node = option_value(key, value);
+    const auto node = toml_value_from_python(value, key);
     const std::string name = "[backend." + backend + "]." + key + " = " + toml_value_text(*node);
     if (const std::string problem = backend_key_problem(backend, key); !problem.empty())
         throw py::value_error(name + ": expected " + problem);
