@@ -194,7 +194,8 @@ PYBIND11_MODULE(_collide, m) {
             "from_dict",
             [](const py::dict& d, const std::string& name) { return parse_scene(toml_text_from_dict(d), name); },
             py::arg("d"), py::arg("name") = "scene",
-            "Reads a dict with the keys of a scene file (tables as dicts, [[particles]] as a list of dicts)")
+            "Reads a dict with the keys of a scene file (tables as dicts, [[particles]] as a list of dicts); a "
+            "value with no TOML form raises TypeError or ValueError naming its key (docs/refusals.md)")
         .def_readonly("name", &Scene::name)
         .def_readonly("description", &Scene::description)
         .def_readonly("seed", &Scene::seed)
@@ -219,7 +220,9 @@ PYBIND11_MODULE(_collide, m) {
              }),
              py::arg("scene"), py::arg("backend") = "event")
         .def("advance_to", &Simulation::advance_to, py::arg("t"),
-             "Advances to absolute time t (stepped backends: to the nearest whole step)")
+             "Advances to absolute time t (stepped backends: to the nearest whole step). Refuses a t that is "
+             "not finite, in the past or beyond 1e12 steps of dt (ValueError), and a state that became NaN/Inf "
+             "(RuntimeError, with the CLI's words)")
         .def_property_readonly("time", &Simulation::time)
         .def_property_readonly("backend", &Simulation::backend)
         .def_property_readonly("scene", &Simulation::scene)
