@@ -25,7 +25,7 @@ namespace {
 // disk was finite at t = 0.4: the state broke in between (a smaller [run] output_interval
 // narrows it down)"
 std::string describe_nonfinite(const std::string& solver_name, const ParticleState<double>& state,
-                               std::int64_t count, double t, double last_finite_t) {
+                               std::int64_t count, double t, double last_finite_t, const std::string& narrower) {
     std::ostringstream msg;
     msg << solver_name << ": " << count << " disk(s) with NaN/Inf state at t = " << t;
     for (std::size_t i = 0; i < state.size(); ++i) {
@@ -41,7 +41,7 @@ std::string describe_nonfinite(const std::string& solver_name, const ParticleSta
                "number type, e.g. float's 3.4e38?)";
     else
         msg << "; every disk was finite at t = " << last_finite_t
-            << ": the state broke in between (a smaller [run] output_interval narrows it down)";
+            << ": the state broke in between (" << narrower << " narrows it down)";
     return msg.str();
 }
 
@@ -69,6 +69,13 @@ std::string describe_nonfinite_metric(const std::string& solver_name, const Metr
 
 }  // namespace
 
+std::string nonfinite_problem(const std::string& solver_name, const ParticleState<double>& state, const Metrics& m,
+                              double last_finite_t, const std::string& narrower) {
+    if (m.nonfinite > 0) return describe_nonfinite(solver_name, state, m.nonfinite, m.time, last_finite_t, narrower);
+    if (const char* name = nonfinite_metric(m)) return describe_nonfinite_metric(solver_name, m, name);
+    return "";
+}
+
 RunResult run_scene(const Scene& scene, Solver& solver, const ParticleState<double>& initial,
                     const RunOptions& options) {
     RunResult result;
@@ -86,11 +93,11 @@ RunResult run_scene(const Scene& scene, Solver& solver, const ParticleState<doub
         if (options.writer) options.writer->append(m, state);
         if (options.on_state) options.on_state(state, m);
         if (options.on_output) options.on_output(t, scene.run.duration);
-        if (options.stop_on_nonfinite && m.nonfinite > 0)
-            throw std::runtime_error(describe_nonfinite(solver.name(), state, m.nonfinite, t, last_finite_t));
-        if (options.stop_on_nonfinite && m.nonfinite == 0)
-            if (const char* name = nonfinite_metric(m))
-                throw std::runtime_error(describe_nonfinite_metric(solver.name(), m, name));
+        if (options.stop_on_nonfinite)
+            if (std::string problem = nonfinite_problem(solver.name(), state, m, last_finite_t,
+                                                        "a smaller [run] output_interval");
+                !problem.empty())
+                throw std::runtime_error(problem);
         if (m.nonfinite == 0) last_finite_t = t;
     }
     result.final_state = std::move(state);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "metrics.h"
@@ -34,6 +35,15 @@ struct RunOptions {
 // Loads `initial` into `solver` and runs it to scene.run.duration.
 RunResult run_scene(const Scene& scene, Solver& solver, const ParticleState<double>& initial,
                     const RunOptions& options = {});
+
+// Why a run must stop at the state and metrics `m` (taken at m.time), in the words of a
+// stopped `collide run`, or "" when every disk and metric is finite. E.g.
+//   "step: 3 disk(s) with NaN/Inf state at t = 0.5 (first: disk 17, x = (...), v = (...));
+//   every disk was finite at t = 0.4: the state broke in between (NARROWER narrows it down)"
+// m.time <= last_finite_t says the state held it from the start. run_scene and the Python
+// module's Simulation use it, so both stop at the same states with the same words.
+std::string nonfinite_problem(const std::string& solver_name, const ParticleState<double>& state, const Metrics& m,
+                              double last_finite_t, const std::string& narrower);
 
 // The output times of a scene: 0, interval, ..., duration (the last one exactly `duration`).
 std::vector<double> output_times(const Scene& scene);

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "backend_table.h"
 #include "disk_placement.h"
 #include "toml_fields.h"
 
@@ -47,10 +48,8 @@ Physics read_physics(const TomlFields& physics) {
 // Why `t` is not a whole number (>= 1, at most max_steps) of steps dt, or "" when it is; whole
 // to a relative tolerance of 1e-9: decimal values such as 0.1 / 1e-3 are not exact in binary.
 std::string steps_problem(double t, double dt) {
+    if (std::string cap = steps_cap_problem(t, dt); !cap.empty()) return cap;  // advance_to's words too
     const double n = std::round(t / dt);
-    if (n > max_steps)
-        return "at most " + toml_value_text(toml::value(max_steps)) + " steps of dt = " +
-               toml_value_text(toml::value(dt)) + " (this is " + toml_value_text(toml::value(n)) + " steps)";
     if (n < 1 || std::fabs(t / dt - n) > 1e-9 * n)
         return "a whole multiple of dt = " + toml_value_text(toml::value(dt));
     return "";
@@ -222,22 +221,22 @@ ParticleGenerator read_particles(const TomlFields& block, const World& world) {
 }
 
 // [backend.NAME] tables: plain values kept as text; each backend validates its own keys. A
-// table for no backend (a typo) is refused here, as is any key under [backend.step]: the
-// stepping rules take all their settings from [run] and [physics].
+// table for no backend (a typo) is refused here, as is what backend_key_problem refuses (any
+// key under [backend.step]).
 void read_backend_options(const TomlFields& root, Scene& scene) {
     const TomlFields backends = root.table("backend");
     backends.allow_only({"event", "step", "cpu", "opencl", "box2d"});
     for (const auto& [name, node] : backends.raw()) {
         const TomlFields options = backends.table(name.str());
-        for (const auto& [key, value] : options.raw())
-            if (name.str() == "step")
-                options.fail(key.str(), "no key here: the step backend has no options (its settings are "
-                                        "[run] dt, substeps, order and the [physics] table)");
+        for (const auto& [key, value] : options.raw()) {
+            const std::string problem = backend_key_problem(name.str(), key.str());
+            if (!problem.empty()) options.fail(key.str(), problem);
+        }
         auto& out = scene.backend_options[std::string(name.str())];
         for (const auto& [key, value] : options.raw()) {
-            if (value.is_string()) out[std::string(key.str())] = value.as_string()->get();
-            else if (value.is_number() || value.is_boolean()) out[std::string(key.str())] = toml_value_text(value);
-            else options.fail(key.str(), "a string, number or boolean");
+            const auto text = backend_value_text(value);
+            if (!text) options.fail(key.str(), backend_value_expected);
+            out[std::string(key.str())] = *text;
         }
     }
 }

@@ -6,6 +6,7 @@
 
 #include "particle_state.h"
 #include "scene.h"
+#include "target_time.h"  // max_steps: the cap on duration / dt
 
 namespace collide {
 
@@ -16,10 +17,6 @@ class SceneError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };
-
-// The most steps of dt a run may take (duration / dt): more would not finish in any
-// reasonable time (10^12 steps of one disk take hours) and usually means a unit mistake.
-constexpr double max_steps = 1e12;
 
 Scene load_scene(const std::string& path);
 

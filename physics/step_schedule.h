@@ -5,10 +5,9 @@
 #pragma once
 
 #include <cstdint>
-#include <stdexcept>
-#include <string>
 
 #include "core/scene.h"
+#include "core/target_time.h"
 
 namespace collide {
 
@@ -23,13 +22,12 @@ void step_by_rule(const RunSettings& run, CollideFirstStep&& collide_first_step,
     for (int k = 0; k < run.substeps; ++k) integrate_first_substep(h);
 }
 
-// The number of the time step that ends at absolute time t (a whole number of steps, by scene
-// validation). Throws if it lies before `current`: a solver never steps backwards.
+// The number of the time step nearest to absolute time t. Throws std::invalid_argument (the
+// one target-time check, core/target_time.h) if t is not finite, needs more than max_steps
+// steps, or rounds to a step before `current`: a solver never steps backwards.
 inline std::int64_t target_step(const Scene& scene, double t, std::int64_t current, const char* backend) {
-    const std::int64_t target = scene.steps_for(t);
-    if (target < current)
-        throw std::invalid_argument(std::string(backend) + ": advance_to(" + std::to_string(t) + ") is in the past");
-    return target;
+    check_target_time(backend, t, double(current) * scene.run.dt, scene.run.dt, true);
+    return scene.steps_for(t);
 }
 
 }  // namespace collide

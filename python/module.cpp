@@ -29,11 +29,13 @@ namespace {
 // RunWriter is destroyed uncommitted, so no half-written file is left) back to Python.
 struct Interrupted {};
 
-py::dict run(const Scene& scene, const std::string& backend_name, const std::string& out, bool frames,
+py::dict run(const Scene& given, const std::string& backend_name, const std::string& out, bool frames,
              bool progress, const py::kwargs& options) {
+    Scene scene = given;  // with the keyword options in its [backend.NAME] table
+    const BackendOptions backend_settings = backend_options(options, backend_name, scene);
     const BackendInfo& backend = backend_for(scene, backend_name);
     const ParticleState<double> initial = generate_initial_state(scene);
-    auto solver = backend.create(backend_options(options));
+    auto solver = backend.create(backend_settings);
     std::unique_ptr<RunWriter> writer;
     if (!out.empty()) writer = std::make_unique<RunWriter>(out, frames);
 
@@ -192,7 +194,8 @@ PYBIND11_MODULE(_collide, m) {
             "from_dict",
             [](const py::dict& d, const std::string& name) { return parse_scene(toml_text_from_dict(d), name); },
             py::arg("d"), py::arg("name") = "scene",
-            "Reads a dict with the keys of a scene file (tables as dicts, [[particles]] as a list of dicts)")
+            "Reads a dict with the keys of a scene file (tables as dicts, [[particles]] as a list of dicts); a "
+            "value with no TOML form raises TypeError or ValueError naming its key (docs/refusals.md)")
         .def_readonly("name", &Scene::name)
         .def_readonly("description", &Scene::description)
         .def_readonly("seed", &Scene::seed)
@@ -210,12 +213,16 @@ PYBIND11_MODULE(_collide, m) {
         .def("__repr__", [](const Scene& s) { return "<collide.Scene '" + s.name + "'>"; });
 
     py::class_<Simulation>(m, "Simulation", "One scene on one backend; state read back as NumPy arrays (copies)")
-        .def(py::init([](const Scene& scene, const std::string& backend, const py::kwargs& options) {
-                 return std::make_unique<Simulation>(scene, backend, backend_options(options));
+        .def(py::init([](const Scene& given, const std::string& backend, const py::kwargs& options) {
+                 Scene scene = given;  // with the keyword options in its [backend.NAME] table
+                 const BackendOptions settings = backend_options(options, backend, scene);
+                 return std::make_unique<Simulation>(scene, backend, settings);
              }),
              py::arg("scene"), py::arg("backend") = "event")
         .def("advance_to", &Simulation::advance_to, py::arg("t"),
-             "Advances to absolute time t (stepped backends: to the nearest whole step)")
+             "Advances to absolute time t (stepped backends: to the nearest whole step). Refuses a t that is "
+             "not finite, in the past or beyond 1e12 steps of dt (ValueError), and a state that became NaN/Inf "
+             "(RuntimeError, with the CLI's words)")
         .def_property_readonly("time", &Simulation::time)
         .def_property_readonly("backend", &Simulation::backend)
         .def_property_readonly("scene", &Simulation::scene)

@@ -1,26 +1,67 @@
 #include "simulation.h"
 
 #include <chrono>
+#include <climits>
 #include <cmath>
 #include <stdexcept>
 
 #include <pybind11/stl.h>
 
+#include "core/backend_table.h"
+#include "core/run_driver.h"
 #include "core/scene_loader.h"
 #include "core/state_hash.h"
+#include "core/target_time.h"
+#include "core/toml_fields.h"
+#include "scene_from_dict.h"
 
 namespace collide::python {
 
 namespace py = pybind11;
 
-BackendOptions backend_options(const py::kwargs& options) {
+namespace {
+
+// Keyword values are read as TOML values, under Scene.from_dict's rules (so that, e.g.,
+// threads=2**70 is refused naming "threads"), and then checked as the CLI or a file's key.
+int threads_option(const py::handle& value) {
+    const auto node = toml_value_from_python(value, "threads");
+    const auto* n = node->as_integer();
+    if (!n) throw py::type_error("threads = " + toml_value_text(*node) + ": expected an integer (0: all cores)");
+    if (n->get() < INT_MIN || n->get() > INT_MAX)
+        throw py::value_error("threads = " + toml_value_text(*node) + ": expected a thread count that fits in an int");
+    return int(n->get());  // a negative count is refused by the backends that use it, as on the CLI
+}
+
+std::string text_option(const std::string& key, const py::handle& value) {
+    const auto node = toml_value_from_python(value, key);
+    if (const auto* s = node->as_string()) return s->get();
+    if (key == "device" && node->is_integer()) return toml_value_text(*node);  // --cl-device 0
+    throw py::type_error(key + " = " + toml_value_text(*node) + ": expected a string");
+}
+
+// A key of the scene's [backend.NAME] table, checked as the scene reader checks a file's.
+void set_table_option(Scene& scene, const std::string& backend, const std::string& key, const py::handle& value) {
+    const auto node = toml_value_from_python(value, key);
+    const std::string name = "[backend." + backend + "]." + key + " = " + toml_value_text(*node);
+    if (const std::string problem = backend_key_problem(backend, key); !problem.empty())
+        throw py::value_error(name + ": expected " + problem);
+    const auto text = backend_value_text(*node);
+    if (!text) throw py::value_error(name + ": expected " + std::string(backend_value_expected));
+    scene.backend_options[backend][key] = *text;
+}
+
+}  // namespace
+
+BackendOptions backend_options(const py::kwargs& options, const std::string& backend, Scene& scene) {
+    const std::string name = find_backend(backend).name;  // an unknown backend is named first
     BackendOptions o;
     for (const auto& [k, v] : options) {
         const std::string key = k.cast<std::string>();
-        if (key == "threads") o.threads = v.cast<int>();
-        else if (key == "real") o.real = v.cast<std::string>();
-        else if (key == "device") o.device = py::str(v).cast<std::string>();
-        else o.extra[key] = py::str(v).cast<std::string>();
+        if (v.is_none()) continue;
+        if (key == "threads") o.threads = threads_option(v);
+        else if (key == "real") o.real = text_option(key, v);
+        else if (key == "device") o.device = text_option(key, v);
+        else set_table_option(scene, name, key, v);
     }
     if (!o.real.empty() && o.real != "float" && o.real != "double")
         throw py::value_error("real = '" + o.real + "': expected 'float' or 'double'");
@@ -90,8 +131,11 @@ Simulation::Simulation(const Scene& scene, const std::string& backend, const Bac
     const ParticleState<double> initial = generate_initial_state(scene_);
     initial_size_ = initial.size();
     solver_ = info.create(options);
-    py::gil_scoped_release release;  // loading a big scene (OpenCL build, event queue) takes a while
-    solver_->load(scene_, initial);
+    {
+        py::gil_scoped_release release;  // loading a big scene (OpenCL build, event queue) takes a while
+        solver_->load(scene_, initial);
+    }
+    check_finite();  // the CLI's check at t = 0: a backend's own number type may not hold the scene
 }
 
 void Simulation::check_idle() const {
@@ -111,13 +155,24 @@ double Simulation::time() const {
     return solver_->time();
 }
 
+void Simulation::advance_to(double t) {
+    check_usable();
+    if (!nonfinite_.empty())
+        throw std::runtime_error(nonfinite_ + "; this simulation cannot go on (its state is still readable)");
+    // The one target-time check (core/target_time.h), before any work: a NaN, an infinity or a
+    // time beyond the cap would otherwise start an endless loop below. Rounded to whole steps
+    // here for every backend; the event solver checks its exact time again itself.
+    check_target_time(backend_, t, solver_->time(), scene_.run.dt, true);
+    state_current_ = metrics_current_ = false;
+    advance_in_chunks(t);
+    check_finite();
+}
+
 // Chunks end on whole time steps k dt: the stepped backends then take exactly the steps one
 // call would (they step to round(t / dt)), and the event solver processes the same events in
 // the same order whatever the times it is asked to stop at, so the pieces do not change the
 // result. A chunk doubles while it takes under 50 ms, so Ctrl-C answers within about 0.1 s.
-void Simulation::advance_to(double t) {
-    check_usable();
-    state_current_ = false;
+void Simulation::advance_in_chunks(double t) {
     const double dt = scene_.run.dt;
     std::int64_t step = std::llround(solver_->time() / dt), chunk = 1;
     busy_ = true;
@@ -126,7 +181,7 @@ void Simulation::advance_to(double t) {
         ~Done() { busy = false; }  // runs with the GIL held again (the release scopes ended)
     } done{busy_};
     try {
-        while (std::isfinite(t) && t >= solver_->time() && double(step + chunk) * dt < t) {
+        while (t >= solver_->time() && double(step + chunk) * dt < t) {
             step += chunk;
             const auto start = std::chrono::steady_clock::now();
             {
@@ -149,6 +204,18 @@ void Simulation::advance_to(double t) {
     }
 }
 
+// As `collide run` stops at an output time whose state or metrics hold NaN/Inf, with its words
+// (core/run_driver.h): a state that has lost its numbers cannot recover, and metrics() would
+// report sums over the finite disks only (a kinetic energy of 0 beside nonfinite = 2). The
+// metrics computed for the check are kept for metrics().
+void Simulation::check_finite() {
+    metrics_ = compute_metrics(scene_, state(), solver_->time());
+    metrics_current_ = true;
+    nonfinite_ = nonfinite_problem(backend_, state_, metrics_, last_finite_time_, "advancing in smaller pieces");
+    if (!nonfinite_.empty()) throw std::runtime_error(nonfinite_);
+    last_finite_time_ = metrics_.time;
+}
+
 const ParticleState<double>& Simulation::state() {
     check_usable();
     if (!state_current_) {
@@ -158,7 +225,11 @@ const ParticleState<double>& Simulation::state() {
     return state_;
 }
 
-py::dict Simulation::metrics() { return metrics_dict(compute_metrics(scene_, state(), time())); }
+py::dict Simulation::metrics() {
+    if (!metrics_current_) metrics_ = compute_metrics(scene_, state(), time());  // after a Ctrl-C
+    metrics_current_ = true;
+    return metrics_dict(metrics_);
+}
 
 py::dict Simulation::stats() const {
     check_idle();

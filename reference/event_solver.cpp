@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/target_time.h"
 #include "physics/collision_time.h"
 #include "physics/stepping_laws.h"
 
@@ -319,8 +320,7 @@ void EventSolver::reject_overlaps() const {
 // ---------------------------------------------------------------------------------------
 
 void EventSolver::advance_to(double t) {
-    if (t < now_)
-        throw std::invalid_argument("event: advance_to(" + describe(t) + ") is before the current time " + describe(now_));
+    check_target_time("event", t, now_, scene_.run.dt, false);  // NaN would become every disk's time
     while (!queue_.empty() && queue_.top_time() <= t) {
         process_event();
         if (++events_since_renumber_ >= renumber_interval_) renumber();

@@ -57,7 +57,7 @@ def test_errors_keep_their_text_and_leave_other_simulations_alone(small_gas):
     a = collide.Simulation(small_gas, backend="event")
     b = collide.Simulation(small_gas, backend="event")
     a.advance_to(0.05)
-    with pytest.raises(ValueError, match=r"event: advance_to\(0.01\) is before the current time 0.05"):
+    with pytest.raises(ValueError, match=r"event: target time t = 0.01 is in the past: the simulation is at t = 0.05"):
         a.advance_to(0.01)
     b.advance_to(0.1)
     a.advance_to(0.1)  # refused calls change nothing
