@@ -223,9 +223,10 @@ void PlainEventSolver::process(const Event& e) {
     // Every older event of these disks is now stale; predict them afresh.
     ++disks_[e.i].count;
     predict(e.i);
-    if (e.kind != Kind::pair) return;
+    // A stone's course never changes: its count stays, so its other collisions stay valid.
+    if (e.kind != Kind::pair || disks_[e.j].inv_mass == 0) return;
     ++disks_[e.j].count;
-    if (disks_[e.j].inv_mass != 0) predict(e.j);  // a stone does not move: nothing to predict
+    predict(e.j);
 }
 
 // An elastic collision of smooth disks (physics/collision_rule.h): an impulse along the line
