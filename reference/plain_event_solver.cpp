@@ -1,19 +1,17 @@
-// The plain event-driven solver for hard disks (backend `event-plain`).
-//
-// The method (Alder & Wainwright, J. Chem. Phys. 27 (1957) 1208 and 31 (1959) 459; Allen &
-// Tildesley, "Computer Simulation of Liquids", 2nd ed., §3.7; Rapaport, "The Art of
-// Molecular Dynamics Simulation", 2nd ed., ch. 14): between collisions every disk flies freely,
-// on a straight line (on a parabola under uniform gravity). So the moment of every possible
-// next event can be computed in advance: two disks touching, a disk touching a wall, a disk
-// crossing into the next cell of the cell list. The predicted events wait in a priority queue
-// (a binary heap, earliest on top). The solver takes the earliest, moves the disks involved
-// to that moment, applies the event and predicts the new events of those disks. Nothing is
-// approximated: the only errors are rounding errors.
+// The plain event-driven solver for hard disks (backend `event-plain`). The method (Alder &
+// Wainwright, J. Chem. Phys. 27 (1957) 1208 and 31 (1959) 459; Allen & Tildesley, "Computer
+// Simulation of Liquids", 2nd ed., §3.7; Rapaport, "The Art of Molecular Dynamics Simulation",
+// 2nd ed., ch. 14): between collisions every disk flies freely, on a straight line (a parabola
+// under uniform gravity). So the moment of every possible next event can be computed in
+// advance: two disks touching, a disk touching a wall, a disk crossing into the next cell of
+// the cell list. The predicted events wait in a priority queue (a binary heap, earliest on
+// top). The solver takes the earliest, moves the disks involved to that moment, applies the
+// event and predicts the new events of those disks. Nothing is approximated: the only errors
+// are rounding errors.
 //
 // Four plain choices, each the textbook one:
-// - Local clocks: disk i keeps its position and velocity at its own time t_i, and only the
-//   disks of an event are moved to the present (Rapaport ch. 14). An event costs the same
-//   whatever the number of disks.
+// - Local clocks: disk i keeps its position and velocity at its own time t_i; only the disks of
+//   an event are moved to the present (Rapaport ch. 14), so an event costs the same for any N.
 // - Lazy invalidation: an event is never removed from the heap. Each disk counts its events;
 //   a prediction records the counts of its disks, and an event whose disks have had an event
 //   since is stale and dropped when it comes to the top (Sedgewick & Wayne, "Algorithms", 4th
@@ -67,11 +65,9 @@ void PlainEventSolver::load(const Scene& scene, const ParticleState<double>& ini
             s.x[i] = WallLaw<double>::wrap(s.x[i], w.xmin, w.width());
             s.y[i] = WallLaw<double>::wrap(s.y[i], w.ymin, w.height());
         }
-        if (s.is_stone(i)) {
-            if (scene.has_gravity()) throw std::runtime_error("event-plain: particle " + std::to_string(i) +
-                                                              " is a stone and the scene has gravity (not supported)");
-            s.vx[i] = s.vy[i] = 0;  // a kinematic stone never moves, as in the stepping rules
-        }
+        if (s.is_stone(i) && scene.has_gravity())
+            throw std::runtime_error("event-plain: particle " + std::to_string(i) + " is a stone, and the scene has gravity");
+        if (s.is_stone(i)) s.vx[i] = s.vy[i] = 0;  // a kinematic stone never moves, as in the stepping rules
         kinetic.add(0.5 * s.mass[i] * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i]));
     }
     reject_overlapping_disks("event-plain", scene, s);  // (shared with `event`)
@@ -79,12 +75,10 @@ void PlainEventSolver::load(const Scene& scene, const ParticleState<double>& ini
     for (std::size_t i = 0; i < s.size(); ++i)
         disks_.push_back(Disk{s.x[i], s.y[i], s.vx[i], s.vy[i], 0.0, s.radius[i], s.mass[i], s.inv_mass[i]});
     make_cells();
-    queue_ = {};
-    now_ = progress_mark_ = 0;
+    queue_ = {}, now_ = progress_mark_ = 0;
     events_since_mark_ = pair_events_ = wall_events_ = cell_events_ = stale_events_ = 0;
     kinetic_ = kinetic.value();
-    virial_ = {};
-    for (auto& sum : wall_impulse_) sum = {};
+    virial_ = {}, wall_impulse_[0] = wall_impulse_[1] = wall_impulse_[2] = wall_impulse_[3] = {};
     for (std::uint32_t i = 0; i < disks_.size(); ++i)
         if (disks_[i].inv_mass != 0) predict(i);  // stones have no events of their own
 }
@@ -292,8 +286,7 @@ void PlainEventSolver::cross_cell(std::uint32_t i, std::uint8_t side) {
 // cradle of N touching disks legitimately has N events at one instant.
 void PlainEventSolver::check_progress(const Event& e) {
     if (now_ > progress_mark_) {
-        progress_mark_ = now_;
-        events_since_mark_ = 0;
+        progress_mark_ = now_, events_since_mark_ = 0;
         return;
     }
     if (++events_since_mark_ > 10 * std::int64_t(disks_.size()) + 100000)
@@ -307,14 +300,12 @@ void PlainEventSolver::read_state(ParticleState<double>& out) const {
     const World& w = scene_.world;
     for (std::uint32_t i = 0; i < disks_.size(); ++i) {
         const Disk& d = disks_[i];
-        position_now(i, out.x[i], out.y[i], out.vx[i], out.vy[i]);
+        position_now(i, out.x[i], out.y[i], out.vx[i], out.vy[i]);  // wrapped into the box below
         if (scene_.periodic()) {
             out.x[i] = WallLaw<double>::wrap(out.x[i], w.xmin, w.width());
             out.y[i] = WallLaw<double>::wrap(out.y[i], w.ymin, w.height());
         }
-        out.radius[i] = d.radius;
-        out.inv_mass[i] = d.inv_mass;
-        out.mass[i] = d.mass;
+        out.radius[i] = d.radius, out.mass[i] = d.mass, out.inv_mass[i] = d.inv_mass;
     }
 }
 
@@ -335,15 +326,13 @@ SolverStats PlainEventSolver::stats() const {
         c["collisions_per_time"] = double(pair_events_) / t;
     }
     c["virial_sum"] = virial_.value();
-    if (scene_.periodic()) {
-        // Virial theorem for impulsive forces in 2D (Alder & Wainwright, J. Chem. Phys. 33 (1960)
-        // 1439; Allen & Tildesley §2.4): P A = <K> + (1 / (2 t)) sum over collisions of d.(J n).
-        if (!scene_.has_gravity()) {
-            c["kinetic_integral"] = kinetic_ * t;  // K is constant: elastic, no gravity
-            if (t > 0) c["pressure"] = (kinetic_ + virial_.value() / (2 * t)) / area;
-        }
-        return s;
+    // Virial theorem for impulsive forces in 2D (Alder & Wainwright, J. Chem. Phys. 33 (1960)
+    // 1439; Allen & Tildesley §2.4): P A = <K> + (1 / (2 t)) sum over collisions of d.(J n).
+    if (scene_.periodic() && !scene_.has_gravity()) {
+        c["kinetic_integral"] = kinetic_ * t;  // K is constant: elastic, no gravity
+        if (t > 0) c["pressure"] = (kinetic_ + virial_.value() / (2 * t)) / area;
     }
+    if (scene_.periodic()) return s;
     // Mechanical pressure: momentum given to the walls per unit time and unit wall length.
     static const char* names[4] = {"wall_impulse_xmin", "wall_impulse_xmax", "wall_impulse_ymin", "wall_impulse_ymax"};
     double total = 0;
