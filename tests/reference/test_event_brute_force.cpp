@@ -234,7 +234,7 @@ void expect_bitwise_equal(const ParticleState<double>& state, const ParticleStat
 // would grow, through the chaos of the gas, into a visible difference long before the end.
 // (Equal event times do not occur in this random gas, so what this catches is a record,
 // prediction or calendar entry left behind or renamed wrongly; the order of simultaneous
-// events is tested by the Newton's cradle in test_event_solver.cpp. Leaving the partners of
+// events is tested by the Newton's cradle in tests/conformance. Leaving the partners of
 // the predictions unrenamed, for one, fails this test and both comparisons above.)
 TEST(EventBruteForce, RenumberingChangesNoBit) {
     const std::vector<Species> two = {{0.4, 1.0}, {0.5, 2.0}};
