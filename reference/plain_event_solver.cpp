@@ -191,7 +191,7 @@ bool PlainEventSolver::stale(const Event& e) const {
 }
 
 void PlainEventSolver::advance_to(double t) {
-    if (t < now_) throw std::invalid_argument("event-plain: advance_to(" + std::to_string(t) + ") is before now");
+    if (t < now_) throw std::invalid_argument("event-plain: advance_to(" + std::to_string(t) + ") is before the current time");
     while (!queue_.empty() && queue_.top().time <= t) {
         const Event e = queue_.top();
         queue_.pop();

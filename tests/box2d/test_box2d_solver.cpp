@@ -2,8 +2,9 @@
 // docs/box2d-baseline.md): an isolated contact is one constraint, which the first
 // sequential-impulse iteration solves exactly, so a binary collision is exact up to float
 // rounding (a few ulps of 6e-8 on velocities of order 1: kFloat = 1e-5).
-// The cases every backend shares (head-on, walls on all four sides, wall restitution) are
-// conformance bodies (tests/conformance/test_conformance.cpp); here are Box2D's own.
+// The cases every backend shares (head-on, walls on all four sides, wall restitution, a stone
+// under gravity) are conformance bodies (tests/conformance/test_conformance.cpp); here are
+// Box2D's own.
 #include <gtest/gtest.h>
 
 #include <box2d/b2_common.h>
@@ -43,19 +44,6 @@ TEST(Box2dSolver, SuiteIterationsOptionReplacesTheScenesVelocityIterations) {
     EXPECT_EQ(solver.provenance().at("box2d_velocity_iterations"), "17");
     options.extra["iterations"] = "many";
     EXPECT_THROW(Box2dSolver{options}, std::invalid_argument);
-}
-
-TEST(Box2dSolver, StoneNeverMovesUnderGravityAndImpacts) {
-    Scene scene = test::box_scene(10, 10);
-    scene.physics.gravity_y = -9.81;
-    scene.run.dt = 1e-3;
-    const auto s = run_to(scene, test::make_state({{5, 3, 0, 0, 1.0, 1, true}, {5, 8, 0, -3, 0.5, 1}}), 1.5);
-    EXPECT_EQ(s.x[0], 5.0);
-    EXPECT_EQ(s.y[0], 3.0);
-    EXPECT_EQ(s.vx[0], 0.0);
-    EXPECT_EQ(s.vy[0], 0.0);
-    // The falling disk (speed ~ 9 at impact, t ~ 0.64) has bounced: it is above the stone.
-    EXPECT_GT(s.y[1], 3.0 + 1.5 - 0.05);
 }
 
 TEST(Box2dSolver, FreeFlightIsSemiImplicitEulerInSceneUnits) {

@@ -94,6 +94,18 @@ TEST_P(Conformance, StoneNeverMoves) {
     EXPECT_NEAR(r.final_state.y[2], 6.5 + 2.5, 1e-12);
 }
 
+TEST_P(Conformance, StoneNeverMovesUnderGravityAndImpacts) {
+    const ConformanceCase& c = conformance_case("stone_under_gravity");
+    if (skip_unless_supported(c.scene)) GTEST_SKIP();
+    const auto& s = run(c).final_state;
+    EXPECT_EQ(s.x[0], 5.0);
+    EXPECT_EQ(s.y[0], 3.0);
+    EXPECT_EQ(s.vx[0], 0.0);
+    EXPECT_EQ(s.vy[0], 0.0);
+    // The falling disk has bounced: at t = 1.5 it is above the stone.
+    EXPECT_GT(s.y[1], 3.0 + 1.5 - 0.05);
+}
+
 TEST_P(Conformance, WallsReflectOnAllFourSides) {
     const ConformanceCase& c = conformance_case("four_walls");
     if (skip_unless_supported(c.scene)) GTEST_SKIP();
