@@ -101,6 +101,15 @@ std::vector<ConformanceCase> make_cases() {
     drop.scene.run.duration = std::sqrt(2 * 9.5 / 9.81) + 0.3;
     drop.scene.run.output_interval = drop.scene.run.duration / 4;
     cases.push_back(drop);
+    // Four disks thrown about a box under gravity: parabolas, pair collisions while falling (the
+    // relative motion stays straight), walls and cell crossings. No closed form: the exact
+    // solvers must agree with each other and keep the total energy.
+    ConformanceCase thrown = make_case("gravity_four", box_scene(8, 8),
+                                       {{1.5, 2, 3, 4, 0.5, 1}, {4, 5, -2, 1, 0.6, 2}, {6, 1.5, -1, 5, 0.4, 1},
+                                        {2, 6, 2, -1, 0.5, 3}},
+                                       3.0);
+    thrown.scene.physics.gravity_y = -9.81;
+    cases.push_back(thrown);
     // A striker hits a row of four touching disks (Newton's cradle): simultaneous collisions.
     cases.push_back(make_case("newtons_cradle", box_scene(20, 4),
                               {{1, 2, 1, 0, 0.5, 1}, {3, 2, 0, 0, 0.5, 1}, {4, 2, 0, 0, 0.5, 1}, {5, 2, 0, 0, 0.5, 1},

@@ -170,6 +170,17 @@ TEST_P(Conformance, DroppedDiskBouncesOnFloorUnderGravity) {
     EXPECT_NEAR(r.stats.counters.at("wall_impulse_ymin"), 2 * 2 * v1, 1e-12);
 }
 
+TEST_P(Conformance, TotalEnergyIsKeptUnderGravity) {
+    const ConformanceCase& c = conformance_case("gravity_four");
+    if (skip_unless_exact(c.scene)) GTEST_SKIP();
+    const RunResult r = run(c);
+    // Kinetic plus potential energy, - sum m g.x: elastic collisions and walls keep it.
+    const double e0 = r.series.front().total_energy();
+    EXPECT_GT(r.stats.contacts, 0);
+    EXPECT_GT(r.stats.counters.at("events_wall"), 0);
+    EXPECT_NEAR(r.series.back().total_energy(), e0, 1e-12 * std::fabs(e0));
+}
+
 TEST_P(Conformance, NewtonsCradleSimultaneousCollisionsPassMomentumThrough) {
     const ConformanceCase& c = conformance_case("newtons_cradle");
     if (skip_unless_exact(c.scene)) GTEST_SKIP();
