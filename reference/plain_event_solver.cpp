@@ -19,8 +19,8 @@
 // - Cell list: the box is cut into cells at least one contact distance (2 r_max) wide, so a
 //   disk can only touch disks in its own cell and the 8 around it (Allen & Tildesley §5.3).
 //   Entering a new cell is an event like the others; after it the disk is predicted afresh.
-// - Every event ends the same way: the counters of its disks go up (all their older events
-//   are now stale) and the disks are predicted from scratch.
+// - Every event ends the same way: the counters of its disks go up (their older events are now
+//   stale) and the disks are predicted from scratch; a stone, which never moves, keeps its count.
 //
 // The formulas of a collision are written once, in physics/ (collision_time.h: when,
 // collision_rule.h: what happens), and shared with the tuned `event` backend.
