@@ -18,7 +18,8 @@ const std::vector<BackendInfo>& all_backends() {
          [](const BackendOptions&) -> std::unique_ptr<Solver> { return std::make_unique<EventSolver>(); }, false},
         {"event-plain", "double", "the same exact event-driven method written plainly (binary heap, cell list), serial",
          &PlainEventSolver::supports,
-         [](const BackendOptions&) -> std::unique_ptr<Solver> { return std::make_unique<PlainEventSolver>(); }, false},
+         [](const BackendOptions&) -> std::unique_ptr<Solver> { return std::make_unique<PlainEventSolver>(); }, false,
+         false},  // not in a suite's "all" (BackendInfo::in_all)
         {"step", "double", "time-stepped rules of the OpenCL engine and ParticleBox, serial reference",
          [](const Scene&) -> std::optional<std::string> { return std::nullopt; },
          [](const BackendOptions&) -> std::unique_ptr<Solver> { return std::make_unique<StepSolver>(); }, false},
