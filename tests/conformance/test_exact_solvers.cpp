@@ -20,6 +20,8 @@
 #include <cstdio>
 #include <map>
 #include <memory>
+#include <stdexcept>
+#include <string>
 
 #include "conformance.h"
 #include "core/metrics.h"
@@ -110,6 +112,31 @@ TEST(ExactSolvers, PlainSolverConservesEnergyInTheThousandDiskBox) {
     EXPECT_NEAR(b.kinetic_energy, a.kinetic_energy, 1e-12 * a.kinetic_energy);
     EXPECT_EQ(b.overlapping_pairs, 0);
     EXPECT_LE(b.max_wall_penetration, 1e-12);
+}
+
+// Both refuse the same bad starts with the same message (reference/hard_disk_input.h).
+TEST(ExactSolvers, BothRefuseTheSameBadStarts) {
+    const Scene box = box_scene(10, 10);
+    struct Bad {
+        ParticleState<double> state;
+        std::string message;
+    };
+    const Bad bad[] = {
+        {make_state({{2, 2, 0, 0, 0.5, 1}, {5, 5, 0, 0, 0.5, 1}, {5.6, 5, 0, 0, 0.5, 1}}), "particles 1 and 2 overlap by 0.4"},
+        {make_state({{0.2, 5, 0, 0, 0.5, 1}}), "reaches outside the walls"},
+        {make_state({{5, 5, 0, 0, 0.0, 1}}), "hard disks need a radius > 0"},
+    };
+    for (const char* backend : {"event", "event-plain"})
+        for (const Bad& b : bad) {
+            try {
+                make(backend)->load(box, b.state);
+                ADD_FAILURE() << backend << " accepted a start it should refuse (" << b.message << ")";
+            } catch (const std::runtime_error& e) {
+                const std::string what = e.what();
+                EXPECT_EQ(what.rfind(std::string(backend) + ": ", 0), 0u) << what;
+                EXPECT_NE(what.find(b.message), std::string::npos) << what;
+            }
+        }
 }
 
 // Per time window: collision rate (collisions per disk per unit time) and pressure, from the
