@@ -5,6 +5,7 @@
 #include "cpu/cpu_solver.h"
 #include "opencl/opencl_solver.h"
 #include "reference/event_solver.h"
+#include "reference/plain_event_solver.h"
 #include "reference/step_solver.h"
 
 #include <stdexcept>
@@ -15,6 +16,10 @@ const std::vector<BackendInfo>& all_backends() {
     static const std::vector<BackendInfo> backends = {
         {"event", "double", "exact event-driven hard disks (EDMD), serial: the reference", &EventSolver::supports,
          [](const BackendOptions&) -> std::unique_ptr<Solver> { return std::make_unique<EventSolver>(); }, false},
+        {"event-plain", "double", "the same exact event-driven method written plainly (binary heap, cell list), serial",
+         &PlainEventSolver::supports,
+         [](const BackendOptions&) -> std::unique_ptr<Solver> { return std::make_unique<PlainEventSolver>(); }, false,
+         false},  // not in a suite's "all" (BackendInfo::in_all)
         {"step", "double", "time-stepped rules of the OpenCL engine and ParticleBox, serial reference",
          [](const Scene&) -> std::optional<std::string> { return std::nullopt; },
          [](const BackendOptions&) -> std::unique_ptr<Solver> { return std::make_unique<StepSolver>(); }, false},

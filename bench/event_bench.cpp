@@ -1,7 +1,9 @@
-// Benchmark suite `event`: throughput of the event-driven solver, one thread, in collisions
-// per second and nanoseconds per collision, for N = 1e3 ... 1e6 disks at area fractions 0.1,
-// 0.5 and 0.7 in a periodic box. Flat cost per collision in N is the point of the cell list
-// and the per-particle event queue; the table shows it directly.
+// Benchmark suite `event`: throughput of the two event-driven solvers, `event` (tuned) and
+// `event-plain` (the plain one a student reads), one thread, in collisions per second and
+// nanoseconds per collision, for N = 1e3 ... 1e6 disks at area fractions 0.1, 0.5 and 0.7 in a
+// periodic box. Flat cost per collision in N is the point of the cell list and the event
+// queue; the table shows it directly, and cost_vs_event says how many times slower the plain
+// solver is than the tuned one on the same gas.
 //
 // Placement: random sequential addition cannot reach area fraction 0.7 (it jams near 0.55),
 // so every case starts from a square lattice (which holds up to pi/4 = 0.785) with random
@@ -18,7 +20,7 @@
 #include "bench_suite.h"
 #include "core/gas_scene.h"
 #include "core/median.h"
-#include "reference/event_solver.h"
+#include "core/backend_registry.h"
 
 namespace collide::bench {
 namespace {
@@ -51,7 +53,7 @@ struct Timing {
 // Advances the solver until at least `target` more collisions have happened, in steps of
 // simulated time sized from the collision rate seen so far. Returns the steps' wall-clock and
 // processor time.
-Timing run_collisions(EventSolver& solver, std::int64_t target) {
+Timing run_collisions(Solver& solver, std::int64_t target) {
     const std::int64_t start = solver.stats().contacts;
     double step = 0.01;
     Timing timing;
@@ -74,10 +76,14 @@ Timing run_collisions(EventSolver& solver, std::int64_t target) {
 // machine (other programs, a shared cache) is visible next to the figure.
 constexpr int timing_windows = 5;
 
-// One size at one area fraction: a melted solver and what its timing windows measured.
+// The solvers compared, one row each per size and area fraction.
+const char* const solver_names[] = {"event", "event-plain"};
+
+// One solver at one size and area fraction: melted, and what its timing windows measured.
 struct SizeCase {
+    std::string backend;
     std::int64_t n = 0;
-    std::unique_ptr<EventSolver> solver;
+    std::unique_ptr<Solver> solver;
     std::int64_t per_window = 0;  // collisions per timing window
     double melt_seconds = 0;
     SolverStats before;           // the solver's counters when timing began
@@ -85,16 +91,17 @@ struct SizeCase {
     std::vector<double> window_ns;  // ns per collision in each window
 };
 
-SizeCase melted_case(std::int64_t n, double phi, bool quick) {
+SizeCase melted_case(const std::string& backend, std::int64_t n, double phi, bool quick) {
     SizeCase c;
+    c.backend = backend;
     c.n = n;
     const std::int64_t melt = quick ? n : 5 * n;
     const std::int64_t measured = std::max<std::int64_t>(quick ? 100000 : 1000000, 5 * n);
     c.per_window = measured / timing_windows;
-    std::fprintf(stderr, "[event] N = %lld, area fraction %.1f: melting (%lld collisions)...\n",
+    std::fprintf(stderr, "[%s] N = %lld, area fraction %.1f: melting (%lld collisions)...\n", backend.c_str(),
                  static_cast<long long>(n), phi, static_cast<long long>(melt));
     GasCase gas = lattice_gas(n, phi, 42);
-    c.solver = std::make_unique<EventSolver>();
+    c.solver = find_backend(backend).create(BackendOptions{});
     c.solver->load(gas.scene, gas.initial);
     // Melt the lattice: a few collisions per disk forget the initial order.
     c.melt_seconds = run_collisions(*c.solver, melt).seconds;
@@ -102,14 +109,15 @@ SizeCase melted_case(std::int64_t n, double phi, bool quick) {
     return c;
 }
 
-// Times the windows of all sizes in turn (window 1 of every size, then window 2, ...), so
-// that a machine whose speed drifts over minutes (other programs, frequency changes) affects
-// every size alike, and the ratio of two sizes can be taken window by window.
+// Times the windows of all sizes and solvers in turn (window 1 of every case, then window 2,
+// ...), so that a machine whose speed drifts over minutes (other programs, frequency changes)
+// affects every case alike, and the ratio of two cases can be taken window by window.
 void time_interleaved(std::vector<SizeCase>& cases, double phi) {
     for (int w = 0; w < timing_windows; ++w)
         for (SizeCase& c : cases) {
-            std::fprintf(stderr, "[event] area fraction %.1f, timing window %d of %d: N = %lld (%lld collisions)\n", phi,
-                         w + 1, timing_windows, static_cast<long long>(c.n), static_cast<long long>(c.per_window));
+            std::fprintf(stderr, "[%s] area fraction %.1f, timing window %d of %d: N = %lld (%lld collisions)\n",
+                         c.backend.c_str(), phi, w + 1, timing_windows, static_cast<long long>(c.n),
+                         static_cast<long long>(c.per_window));
             const std::int64_t start = c.solver->stats().contacts;
             const Timing t = run_collisions(*c.solver, c.per_window);
             c.timing.seconds += t.seconds;
@@ -118,15 +126,25 @@ void time_interleaved(std::vector<SizeCase>& cases, double phi) {
         }
 }
 
-void report_case(const SizeCase& c, const SizeCase& smallest, double phi, BenchReport& report) {
+// Median over the windows of a's ns per collision over b's in the same round, and the range.
+struct Ratio {
+    double median, min, max;
+};
+Ratio window_ratio(const SizeCase& a, const SizeCase& b) {
+    std::vector<double> ratios;
+    for (std::size_t w = 0; w < a.window_ns.size(); ++w) ratios.push_back(a.window_ns[w] / b.window_ns[w]);
+    return {median(ratios), *std::min_element(ratios.begin(), ratios.end()), *std::max_element(ratios.begin(), ratios.end())};
+}
+
+// smallest: the same solver at the smallest N; event: the tuned solver at the same N.
+void report_case(const SizeCase& c, const SizeCase& smallest, const SizeCase& event, double phi, BenchReport& report) {
     const SolverStats after = c.solver->stats();
     const double collisions = double(after.contacts - c.before.contacts);
     const double events = double(after.steps - c.before.steps);
     const double stale = after.counters.at("events_stale") - c.before.counters.at("events_stale");
     const double ns = median(c.window_ns);
-    std::vector<double> ratios;  // paired: this size's window over the smallest size's same window
-    for (std::size_t w = 0; w < c.window_ns.size(); ++w) ratios.push_back(c.window_ns[w] / smallest.window_ns[w]);
-    Row row = {{"backend", std::string("event")},
+    const Ratio vs_smallest = window_ratio(c, smallest), vs_event = window_ratio(c, event);
+    Row row = {{"backend", c.backend},
                {"threads", std::int64_t(1)},
                {"n", c.n},
                {"area_fraction", phi},
@@ -137,9 +155,12 @@ void report_case(const SizeCase& c, const SizeCase& smallest, double phi, BenchR
                {"ns_per_collision", ns},
                {"ns_per_collision_min", *std::min_element(c.window_ns.begin(), c.window_ns.end())},
                {"ns_per_collision_max", *std::max_element(c.window_ns.begin(), c.window_ns.end())},
-               {"cost_vs_smallest_n", median(ratios)},
-               {"cost_vs_smallest_n_min", *std::min_element(ratios.begin(), ratios.end())},
-               {"cost_vs_smallest_n_max", *std::max_element(ratios.begin(), ratios.end())},
+               {"cost_vs_smallest_n", vs_smallest.median},
+               {"cost_vs_smallest_n_min", vs_smallest.min},
+               {"cost_vs_smallest_n_max", vs_smallest.max},
+               {"cost_vs_event", vs_event.median},
+               {"cost_vs_event_min", vs_event.min},
+               {"cost_vs_event_max", vs_event.max},
                {"cpu_seconds", c.timing.cpu_seconds},
                {"cpu_ns_per_collision", 1e9 * c.timing.cpu_seconds / collisions},
                {"events_per_collision", events / collisions},
@@ -161,10 +182,13 @@ void run_event_suite(const BenchArgs& args, BenchReport& report) {
                                           : std::vector<std::int64_t>{1000, 10000, 100000, 1000000};
     std::sort(sizes.begin(), sizes.end());  // the ratio column is relative to the smallest N
     for (double phi : {0.1, 0.5, 0.7}) {
-        std::vector<SizeCase> cases;
-        for (std::int64_t n : sizes) cases.push_back(melted_case(n, phi, args.quick));
+        std::vector<SizeCase> cases;  // size by size, each size's solvers in solver_names order
+        for (std::int64_t n : sizes)
+            for (const char* backend : solver_names) cases.push_back(melted_case(backend, n, phi, args.quick));
         time_interleaved(cases, phi);
-        for (const SizeCase& c : cases) report_case(c, cases.front(), phi, report);
+        const std::size_t solvers = std::size(solver_names);
+        for (std::size_t k = 0; k < cases.size(); ++k)
+            report_case(cases[k], cases[k % solvers], cases[k - k % solvers], phi, report);
     }
     report.note("ns_per_collision is the median over " + std::to_string(timing_windows) +
                 " equal windows of the timed collisions (wall clock), with the windows' range in "
@@ -173,14 +197,16 @@ void run_event_suite(const BenchArgs& args, BenchReport& report) {
                 "The windows of all sizes of one area fraction are timed in turn (window 1 of each size, then "
                 "window 2, ...); cost_vs_smallest_n is the median over the windows of this size's ns per collision "
                 "over the smallest size's in the same round, with its range in cost_vs_smallest_n_min/max "
-                "(target: within 2x up to N = 1e6); target throughput: >= 1e6 collisions/s at N = 1e5, "
+                "(target: within 2x up to N = 1e6), per solver; cost_vs_event is the same for this solver over `event` "
+                "at the same N (how many times slower the plain solver is); target throughput of `event`: >= 1e6 collisions/s at N = 1e5, "
                 "area fraction 0.5");
 }
 
 }  // namespace
 
 BenchSuite event_bench_suite() {
-    return {"event", "event-driven solver: collisions/s and ns/collision, 1 thread, N = 1e3..1e6, area fraction 0.1/0.5/0.7",
+    return {"event", "event-driven solvers (event, event-plain): collisions/s and ns/collision, 1 thread, N = 1e3..1e6, "
+                     "area fraction 0.1/0.5/0.7",
             run_event_suite};
 }
 

@@ -66,7 +66,7 @@ void run_throughput_suite(const BenchArgs& args, BenchReport& report) {
     if (sizes.empty()) sizes = args.quick ? std::vector<std::int64_t>{1000, 10000}
                                           : std::vector<std::int64_t>{1000, 10000, 100000, 1000000};
     for (const auto& backend : all_backends()) {
-        if (backend.name == "event") continue;
+        if (backend.name == "event" || backend.name == "event-plain") continue;  // (suite `event`)
         for (const Configuration& config : configurations(backend.name)) {
             // --backend box2d runs both presets; --backend "box2d[shipped]" only that one.
             if (!wanted(args, backend.name) && !wanted(args, config.label)) continue;

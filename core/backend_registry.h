@@ -24,6 +24,10 @@ struct BackendInfo {
     // sweep (option "iterations"). The others run once per sweep instead of repeating
     // identical cases under different names.
     bool sweeps_iterations = false;
+    // Whether a suite's `backends = "all"` includes it. `event-plain` is left out: the suites
+    // measure every backend against the exact dynamics once (`event`), and the conformance
+    // tests hold the plain exact solver against the tuned one. A suite that names it runs it.
+    bool in_all = true;
 };
 
 // Every backend compiled into this build, in a fixed order (event first: the reference).

@@ -7,17 +7,15 @@
 #include <stdexcept>
 
 #include "core/target_time.h"
+#include "physics/collision_rule.h"
 #include "physics/collision_time.h"
+#include "hard_disk_input.h"
 #include "physics/stepping_laws.h"
 
 namespace collide {
 namespace {
 
 using event_time::never;
-
-// Initial states may touch or reach a wall to within this fraction of the contact distance
-// (e.g. a lattice with spacing exactly 2r, rounded); anything deeper is an input error.
-constexpr double overlap_tolerance = 1e-10;
 
 // The coming events are prefetched (prefetch_upcoming) from this many disks on: 2^16 disks
 // have 8 MiB of records and calendar slots, four times what a core's L2 cache holds. Below,
@@ -47,15 +45,6 @@ auto parse_whole(const std::string& text, Parse parse) -> std::optional<decltype
     } catch (const std::exception&) {
     }
     return std::nullopt;
-}
-
-bool scene_has_stones(const Scene& scene) {
-    for (const auto& g : scene.generators) {
-        if (g.stone) return true;
-        for (const auto& d : g.disks)
-            if (d.stone) return true;
-    }
-    return false;
 }
 
 }  // namespace
@@ -244,76 +233,10 @@ void EventSolver::read_options(std::size_t n) {
     }
 }
 
-namespace {
+// The checks are shared with the plain solver (hard_disk_input.h): both refuse the same starts.
+void EventSolver::validate_input(const ParticleState<double>& s) const { check_hard_disk_input("event", scene_, s); }
 
-// An event-driven run jumps from collision to collision, so its cost grows with the number of
-// events, not with the duration: disks at 1e30 length/time cross the box ~1e30 times and the
-// run would never end. The wall (or periodic image) crossings sum_i |v_i| duration / box size
-// are a lower bound on the events; beyond this limit the run is refused rather than started.
-constexpr double max_event_estimate = 1e12;
-
-void reject_endless_run(const Scene& scene, const ParticleState<double>& s) {
-    const double box = std::min(scene.world.width(), scene.world.height());
-    double crossings = 0;
-    for (std::size_t i = 0; i < s.size(); ++i) crossings += std::hypot(s.vx[i], s.vy[i]) * scene.run.duration / box;
-    if (crossings > max_event_estimate)
-        throw std::runtime_error("event: scene '" + scene.name + "': the disks would cross the box about " +
-                                 describe(crossings) + " times in duration " + describe(scene.run.duration) +
-                                 ", each crossing at least one event; more than " + describe(max_event_estimate) +
-                                 " events cannot finish (speeds too large for the box, or the duration too long)");
-}
-
-}  // namespace
-
-void EventSolver::validate_input(const ParticleState<double>& s) const {
-    const Physics& p = scene_.physics;
-    if (!(p.restitution >= 0 && p.restitution <= 1))
-        throw std::runtime_error("event: scene '" + scene_.name + "': restitution e = " + describe(p.restitution) +
-                                 " must lie in [0, 1] (e > 1 would create energy at every collision)");
-    if (!(p.wall_restitution >= 0 && p.wall_restitution <= 1))
-        throw std::runtime_error("event: scene '" + scene_.name + "': wall restitution " +
-                                 describe(p.wall_restitution) + " must lie in [0, 1]");
-    const World& w = scene_.world;
-    for (std::size_t i = 0; i < s.size(); ++i) {
-        const std::string who = "event: particle " + std::to_string(i) + " ";
-        if (!(s.radius[i] > 0) || !std::isfinite(s.radius[i]))
-            throw std::runtime_error(who + "has radius " + describe(s.radius[i]) + "; hard disks need a radius > 0");
-        if (!(s.mass[i] > 0) || !std::isfinite(s.mass[i]))
-            throw std::runtime_error(who + "has mass " + describe(s.mass[i]) + "; expected a mass > 0");
-        for (double v : {s.x[i], s.y[i], s.vx[i], s.vy[i]})
-            if (!std::isfinite(v)) throw std::runtime_error(who + "has a non-finite position or velocity");
-        if (scene_.periodic()) continue;
-        const double r = s.radius[i], slack = overlap_tolerance * 2 * r;
-        if (s.x[i] - r < w.xmin - slack || s.x[i] + r > w.xmax + slack || s.y[i] - r < w.ymin - slack ||
-            s.y[i] + r > w.ymax + slack)
-            throw std::runtime_error(who + "at (" + describe(s.x[i]) + ", " + describe(s.y[i]) + ") with radius " +
-                                     describe(r) + " reaches outside the walls [" + describe(w.xmin) + ", " +
-                                     describe(w.xmax) + "] x [" + describe(w.ymin) + ", " + describe(w.ymax) + "]");
-    }
-    reject_endless_run(scene_, s);
-}
-
-void EventSolver::reject_overlaps() const {
-    const bool periodic = scene_.periodic();
-    const World& w = scene_.world;
-    for (std::uint32_t i = 0; i < state_.size(); ++i) {
-        cells_.for_each_neighbour(disks_, i, [&](std::uint32_t j) {
-            if (j <= i) return;
-            double dx = disks_[i].x - disks_[j].x, dy = disks_[i].y - disks_[j].y;
-            if (periodic) {
-                dx = WallLaw<double>::minimum_image(dx, w.width());
-                dy = WallLaw<double>::minimum_image(dy, w.height());
-            }
-            const double sigma = disks_[i].radius + disks_[j].radius;
-            const double distance = std::hypot(dx, dy);
-            if (sigma - distance > overlap_tolerance * sigma)
-                throw std::runtime_error("event: initial state overlaps: particles " + std::to_string(i) + " and " +
-                                         std::to_string(j) + " overlap by " + describe(sigma - distance) +
-                                         " (centre distance " + describe(distance) + ", contact distance " +
-                                         describe(sigma) + ")");
-        });
-    }
-}
+void EventSolver::reject_overlaps() const { reject_overlapping_disks("event", scene_, state_); }
 
 // ---------------------------------------------------------------------------------------
 // The event loop
@@ -665,7 +588,7 @@ void EventSolver::collide_pair(std::uint32_t i, std::uint32_t j) {
     // overlap correction and friction): J = -(1 + e) (u.n) / (w_i + w_j), n = d / |d|.
     // Written as J n = g d with g = -(1 + e) (d.u) / (|d|^2 (w_i + w_j)):
     //   v_i' = v_i + w_i g d,   v_j' = v_j - w_j g d.
-    const double g = -(1 + e) * b / (d2 * (wi + wj));
+    const double g = event_rule::impulse_factor(b, d2, wi + wj, e);  // (physics/collision_rule.h)
     velocity_of(disks_[i]) += wi * g * d;
     velocity_of(disks_[j]) -= wj * g * d;
     // Collision virial d.(J n) = g |d|^2 (the pressure, see stats()).

@@ -123,7 +123,8 @@ void refuse_unknown_scene_backends(const Suite& suite, const std::vector<Backend
 std::vector<BackendInfo> select_backends(const Suite& suite, const std::vector<BackendInfo>& available) {
     std::vector<BackendInfo> out;
     if (suite.backends.size() == 1 && suite.backends[0] == "all") {
-        out = available;
+        for (const auto& b : available)
+            if (b.in_all) out.push_back(b);  // (not event-plain: see BackendInfo::in_all)
         // A variant of a backend this build lacks is left out like the backend itself.
         for (const auto& v : suite.variants)
             if (const BackendInfo* base = find_available(v.base, available)) out.push_back(variant_backend(*base, v));

@@ -98,8 +98,9 @@ void require_same_path(Solver& solver, const validation::ReplayedCase& c, const 
 
 void execute(const ExplainArgs& args) {
     const validation::ReplayedCase c = validation::replay_case(suite_of(args), args.case_id, all_backends());
-    if (c.backend.name == "event")  // the exact solver jumps from collision to collision
-        throw std::runtime_error("case " + c.spec.id + " ran on 'event', which has no time steps to look inside");
+    if (c.backend.name == "event" || c.backend.name == "event-plain")  // exact: from collision to collision
+        throw std::runtime_error("case " + c.spec.id + " ran on '" + c.backend.name +
+                                 "', which has no time steps to look inside");
     const validation::CaseResult record = validation::read_case_result(args.dir + "/cases/" + c.spec.id + ".toml");
     validation::require_same_start(c, record);
     const double dt = c.scene.run.dt, end = args.to < 0 ? c.scene.run.duration : args.to;

@@ -61,17 +61,27 @@ TEST(BenchCommand, EventSuiteWritesAConsistentTablePerAreaFractionAndSize) {
     ASSERT_EQ(result.exit_code, 0) << result.err;
     EXPECT_TRUE(contains(result.err, "melting")) << "progress is reported: " << result.err;
     const std::vector<CsvRow> rows = read_csv(dir.file("b-event.csv"));
-    ASSERT_EQ(rows.size(), 6u) << "3 area fractions x 2 sizes";
+    ASSERT_EQ(rows.size(), 12u) << "3 area fractions x 2 sizes x 2 solvers (event, event-plain)";
+    int plain_rows = 0;
     for (const CsvRow& row : rows) {
         const double n = number(row, "n"), ns = number(row, "ns_per_collision");
-        SCOPED_TRACE("n = " + row.at("n") + ", area fraction " + row.at("area_fraction"));
+        SCOPED_TRACE(row.at("backend") + ", n = " + row.at("n") + ", area fraction " + row.at("area_fraction"));
+        ASSERT_TRUE(row.at("backend") == "event" || row.at("backend") == "event-plain") << row.at("backend");
+        // cost_vs_event: this solver's ns per collision over event's at the same N (1 for event).
+        if (row.at("backend") == "event") {
+            EXPECT_DOUBLE_EQ(number(row, "cost_vs_event"), 1.0);
+        } else {
+            ++plain_rows;
+            EXPECT_GT(number(row, "cost_vs_event"), 0.0);
+        }
         EXPECT_GE(number(row, "collisions"), 100000) << "--quick times at least 1e5 collisions";
         EXPECT_GT(ns, 0);
         EXPECT_LE(number(row, "ns_per_collision_min"), ns);
         EXPECT_GE(number(row, "ns_per_collision_max"), ns);
         EXPECT_NEAR(number(row, "collisions_per_second") * ns, 1e9, 1e9 * 1e-5);
         EXPECT_GE(number(row, "events_per_collision"), 1.0) << "every collision is an event";
-        // Sizes are sorted: the ratio column is relative to the smallest N of the same area fraction.
+        // Sizes are sorted: the ratio column is relative to the smallest N of the same solver and
+        // area fraction.
         if (n == 300) {
             EXPECT_DOUBLE_EQ(number(row, "cost_vs_smallest_n"), 1.0);
         }
@@ -79,6 +89,7 @@ TEST(BenchCommand, EventSuiteWritesAConsistentTablePerAreaFractionAndSize) {
         EXPECT_LE(number(row, "cost_vs_smallest_n_min"), number(row, "cost_vs_smallest_n"));
         EXPECT_GE(number(row, "cost_vs_smallest_n_max"), number(row, "cost_vs_smallest_n"));
     }
+    EXPECT_EQ(plain_rows, 6);
     // The windows of the two sizes are timed in turn, so that a drifting machine speed
     // affects both alike: window 1 of N = 300, window 1 of N = 600, then window 2 of N = 300.
     const std::size_t first_small = result.err.find("timing window 1 of 5: N = 300 ");

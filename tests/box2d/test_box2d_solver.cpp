@@ -2,6 +2,9 @@
 // docs/box2d-baseline.md): an isolated contact is one constraint, which the first
 // sequential-impulse iteration solves exactly, so a binary collision is exact up to float
 // rounding (a few ulps of 6e-8 on velocities of order 1: kFloat = 1e-5).
+// The cases every backend shares (head-on, walls on all four sides, wall restitution, a stone
+// under gravity) are conformance bodies (tests/conformance/test_conformance.cpp); here are
+// Box2D's own.
 #include <gtest/gtest.h>
 
 #include <box2d/b2_common.h>
@@ -30,23 +33,6 @@ ParticleState<double> run_to(const Scene& scene, const ParticleState<double>& in
     return s;
 }
 
-TEST(Box2dSolver, HeadOnEqualMassesExchangeVelocities) {
-    Scene scene = test::box_scene(10, 4);
-    scene.run.dt = 1e-3;
-    Box2dSolver solver;
-    const auto s = run_to(scene, test::make_state({{3, 2, 1, 0, 0.5, 1}, {7, 2, -1, 0, 0.5, 1}}), 2.0, &solver);
-    EXPECT_NEAR(s.vx[0], -1.0, kFloat);
-    EXPECT_NEAR(s.vx[1], 1.0, kFloat);
-    EXPECT_NEAR(s.vy[0], 0.0, kFloat);
-    // Contact at t = 1.5; afterwards each disk moves back with speed 1 for 0.5. Box2D finds the
-    // contact only once the disks overlap (no speculative contact for circles), so the bounce
-    // comes up to one step late: the positions are exact to |v| dt.
-    EXPECT_NEAR(s.x[0], 4.5 - 0.5, 2 * scene.run.dt);
-    EXPECT_NEAR(s.x[1], 5.5 + 0.5, 2 * scene.run.dt);
-    EXPECT_GE(solver.stats().contacts, 1);
-    EXPECT_EQ(solver.stats().steps, 2000);
-}
-
 TEST(Box2dSolver, SuiteIterationsOptionReplacesTheScenesVelocityIterations) {
     BackendOptions options;
     options.extra["iterations"] = "17";
@@ -58,46 +44,6 @@ TEST(Box2dSolver, SuiteIterationsOptionReplacesTheScenesVelocityIterations) {
     EXPECT_EQ(solver.provenance().at("box2d_velocity_iterations"), "17");
     options.extra["iterations"] = "many";
     EXPECT_THROW(Box2dSolver{options}, std::invalid_argument);
-}
-
-TEST(Box2dSolver, WallsReflectOnAllFourSides) {
-    // The chain loop is one-sided: a wrong winding would let the disks fly through the walls.
-    Scene scene = test::box_scene(20, 20);
-    scene.run.dt = 1e-3;
-    const auto s = run_to(scene,
-                          test::make_state({{10, 3, 2, 0, 0.5, 1}, {10, 17, -2, 0, 0.5, 1},
-                                            {3, 10, 0, -2, 0.5, 1}, {17, 10, 0, 2, 0.5, 1}}),
-                          5.0);
-    // Each disk reaches its wall at t = 4.75 and comes back with its speed reversed:
-    // disk 0 turns at x = 19.5 and is back at x = 19 at t = 5, disk 2 likewise at y = 1.
-    EXPECT_NEAR(s.vx[0], -2.0, kFloat);
-    EXPECT_NEAR(s.vx[1], 2.0, kFloat);
-    EXPECT_NEAR(s.vy[2], 2.0, kFloat);
-    EXPECT_NEAR(s.vy[3], -2.0, kFloat);
-    // The skin of the chain sits on the wall: the disks turn around 0.5 from it.
-    EXPECT_NEAR(s.x[0], 19.0, 3 * 2 * scene.run.dt);
-    EXPECT_NEAR(s.y[2], 1.0, 3 * 2 * scene.run.dt);
-}
-
-TEST(Box2dSolver, WallRestitutionOverridesBox2dsMaxMixing) {
-    Scene scene = test::box_scene(10, 10);
-    scene.physics.wall_restitution = 0.5;  // pair restitution stays 1
-    scene.run.dt = 1e-3;
-    const auto s = run_to(scene, test::make_state({{2, 5, -2, 0, 0.5, 1}}), 1.0);
-    EXPECT_NEAR(s.vx[0], 1.0, kFloat);
-}
-
-TEST(Box2dSolver, StoneNeverMovesUnderGravityAndImpacts) {
-    Scene scene = test::box_scene(10, 10);
-    scene.physics.gravity_y = -9.81;
-    scene.run.dt = 1e-3;
-    const auto s = run_to(scene, test::make_state({{5, 3, 0, 0, 1.0, 1, true}, {5, 8, 0, -3, 0.5, 1}}), 1.5);
-    EXPECT_EQ(s.x[0], 5.0);
-    EXPECT_EQ(s.y[0], 3.0);
-    EXPECT_EQ(s.vx[0], 0.0);
-    EXPECT_EQ(s.vy[0], 0.0);
-    // The falling disk (speed ~ 9 at impact, t ~ 0.64) has bounced: it is above the stone.
-    EXPECT_GT(s.y[1], 3.0 + 1.5 - 0.05);
 }
 
 TEST(Box2dSolver, FreeFlightIsSemiImplicitEulerInSceneUnits) {

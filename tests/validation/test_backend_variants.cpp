@@ -194,5 +194,21 @@ TEST(BackendVariants, DefaultSuiteRunsBothBox2dConfigurationsWithTheirOwnLimits)
     EXPECT_EQ(shipped.statistics_z, tuned.statistics_z);
 }
 
+// The plain event solver is a second exact solver, held against `event` by the conformance
+// tests; a suite's "all" leaves it out (the suites' budget), and a suite that names it runs it.
+TEST(BackendVariants, AllLeavesOutThePlainEventSolverWhichASuiteCanName) {
+    Suite suite = load_suite(COLLIDE_SOURCE_DIR "/validation/suites/default.toml");
+    auto names = [&] {
+        std::vector<std::string> out;
+        for (const BackendInfo& b : select_backends(suite, all_backends())) out.push_back(b.name);
+        return out;
+    };
+    std::vector<std::string> all = names();
+    EXPECT_NE(std::find(all.begin(), all.end(), "event"), all.end());
+    EXPECT_EQ(std::find(all.begin(), all.end(), "event-plain"), all.end());
+    suite.backends = {"event", "event-plain"};
+    EXPECT_EQ(names(), (std::vector<std::string>{"event", "event-plain"}));
+}
+
 }  // namespace
 }  // namespace collide::validation

@@ -1,0 +1,105 @@
+#include "hard_disk_input.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "core/uniform_grid.h"
+#include "physics/stepping_laws.h"
+
+namespace collide {
+namespace {
+
+std::string describe(double v) {
+    std::ostringstream s;
+    s.precision(17);
+    s << v;
+    return s.str();
+}
+
+// An event-driven run jumps from collision to collision, so its cost grows with the number of
+// events, not with the duration: disks at 1e30 length/time cross the box ~1e30 times and the
+// run would never end. The wall (or periodic image) crossings sum_i |v_i| duration / box size
+// are a lower bound on the events; beyond this limit the run is refused rather than started.
+constexpr double max_event_estimate = 1e12;
+
+void reject_endless_run(const std::string& who, const Scene& scene, const ParticleState<double>& s) {
+    const double box = std::min(scene.world.width(), scene.world.height());
+    double crossings = 0;
+    for (std::size_t i = 0; i < s.size(); ++i) crossings += std::hypot(s.vx[i], s.vy[i]) * scene.run.duration / box;
+    if (crossings > max_event_estimate)
+        throw std::runtime_error(who + ": scene '" + scene.name + "': the disks would cross the box about " +
+                                 describe(crossings) + " times in duration " + describe(scene.run.duration) +
+                                 ", each crossing at least one event; more than " + describe(max_event_estimate) +
+                                 " events cannot finish (speeds too large for the box, or the duration too long)");
+}
+
+}  // namespace
+
+bool scene_has_stones(const Scene& scene) {
+    for (const auto& g : scene.generators) {
+        if (g.stone) return true;
+        for (const auto& d : g.disks)
+            if (d.stone) return true;
+    }
+    return false;
+}
+
+void check_hard_disk_input(const std::string& who, const Scene& scene, const ParticleState<double>& s) {
+    const Physics& p = scene.physics;
+    if (!(p.restitution >= 0 && p.restitution <= 1))
+        throw std::runtime_error(who + ": scene '" + scene.name + "': restitution e = " + describe(p.restitution) +
+                                 " must lie in [0, 1] (e > 1 would create energy at every collision)");
+    if (!(p.wall_restitution >= 0 && p.wall_restitution <= 1))
+        throw std::runtime_error(who + ": scene '" + scene.name + "': wall restitution " +
+                                 describe(p.wall_restitution) + " must lie in [0, 1]");
+    const World& w = scene.world;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        const std::string particle = who + ": particle " + std::to_string(i) + " ";
+        if (!(s.radius[i] > 0) || !std::isfinite(s.radius[i]))
+            throw std::runtime_error(particle + "has radius " + describe(s.radius[i]) + "; hard disks need a radius > 0");
+        if (!(s.mass[i] > 0) || !std::isfinite(s.mass[i]))
+            throw std::runtime_error(particle + "has mass " + describe(s.mass[i]) + "; expected a mass > 0");
+        for (double v : {s.x[i], s.y[i], s.vx[i], s.vy[i]})
+            if (!std::isfinite(v)) throw std::runtime_error(particle + "has a non-finite position or velocity");
+        if (scene.periodic()) continue;
+        const double r = s.radius[i], slack = hard_disk_overlap_tolerance * 2 * r;
+        if (s.x[i] - r < w.xmin - slack || s.x[i] + r > w.xmax + slack || s.y[i] - r < w.ymin - slack ||
+            s.y[i] + r > w.ymax + slack)
+            throw std::runtime_error(particle + "at (" + describe(s.x[i]) + ", " + describe(s.y[i]) + ") with radius " +
+                                     describe(r) + " reaches outside the walls [" + describe(w.xmin) + ", " +
+                                     describe(w.xmax) + "] x [" + describe(w.ymin) + ", " + describe(w.ymax) + "]");
+    }
+    reject_endless_run(who, scene, s);
+}
+
+void reject_overlapping_disks(const std::string& who, const Scene& scene, const ParticleState<double>& s) {
+    const std::size_t n = s.size();
+    if (n < 2) return;
+    double r_max = 0;
+    for (double r : s.radius) r_max = std::max(r_max, r);
+    UniformGrid<double> grid;  // cells of 2 r_max: every possible contact lies in the 3x3 around a disk
+    grid.configure(scene.world, 2 * r_max);
+    grid.build(s.x.data(), s.y.data(), n);
+    const World& w = scene.world;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        grid.for_each_candidate(s.x[i], s.y[i], [&](std::uint32_t j) {
+            if (j <= i) return;
+            double dx = s.x[i] - s.x[j], dy = s.y[i] - s.y[j];
+            if (scene.periodic()) {
+                dx = WallLaw<double>::minimum_image(dx, w.width());
+                dy = WallLaw<double>::minimum_image(dy, w.height());
+            }
+            const double sigma = s.radius[i] + s.radius[j];
+            const double distance = std::hypot(dx, dy);
+            if (sigma - distance > hard_disk_overlap_tolerance * sigma)
+                throw std::runtime_error(who + ": initial state overlaps: particles " + std::to_string(i) + " and " +
+                                         std::to_string(j) + " overlap by " + describe(sigma - distance) +
+                                         " (centre distance " + describe(distance) + ", contact distance " +
+                                         describe(sigma) + ")");
+        });
+    }
+}
+
+}  // namespace collide

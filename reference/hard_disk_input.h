@@ -1,0 +1,29 @@
+// Input checks shared by the two event-driven solvers (`event` and `event-plain`): both
+// refuse the same initial states with the same messages, so they cannot disagree on what a
+// valid hard-disk start is.
+#pragma once
+
+#include <string>
+
+#include "core/particle_state.h"
+#include "core/scene.h"
+
+namespace collide {
+
+// Initial states may touch or reach a wall to within this fraction of the contact distance
+// (e.g. a lattice with spacing exactly 2r, rounded); anything deeper is an input error.
+inline constexpr double hard_disk_overlap_tolerance = 1e-10;
+
+// Whether the scene declares kinematic stones (inverse mass 0), in a generator or a listed disk.
+bool scene_has_stones(const Scene& scene);
+
+// Restitutions in [0, 1], radii and masses > 0, finite positions and velocities, disks inside
+// the walls (reflecting box), and a run that can finish (see the .cpp). `who` starts every
+// message ("event", "event-plain"). Throws std::runtime_error.
+void check_hard_disk_input(const std::string& who, const Scene& scene, const ParticleState<double>& state);
+
+// Throws if two disks overlap by more than the tolerance, naming the pair. In a periodic box
+// the positions must already lie inside it (the pair search bins them into cells).
+void reject_overlapping_disks(const std::string& who, const Scene& scene, const ParticleState<double>& state);
+
+}  // namespace collide
