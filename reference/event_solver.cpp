@@ -6,6 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/disk_overlap.h"
+#include "core/representability.h"
 #include "physics/collision_time.h"
 #include "physics/stepping_laws.h"
 
@@ -57,6 +59,23 @@ bool scene_has_stones(const Scene& scene) {
     return false;
 }
 
+// An event-driven run jumps from collision to collision, so its cost grows with the number of
+// events, not with the duration: disks at 1e30 length/time cross the box ~1e30 times and the
+// run would never end. The wall (or periodic image) crossings sum_i |v_i| duration / box size
+// are a lower bound on the events; beyond this limit the run is refused rather than started.
+constexpr double max_event_estimate = 1e12;
+
+void reject_endless_run(const Scene& scene, const ParticleState<double>& s) {
+    const double box = std::min(scene.world.width(), scene.world.height());
+    double crossings = 0;
+    for (std::size_t i = 0; i < s.size(); ++i) crossings += std::hypot(s.vx[i], s.vy[i]) * scene.run.duration / box;
+    if (crossings > max_event_estimate)
+        throw std::runtime_error("event: scene '" + scene.name + "': the disks would cross the box about " +
+                                 describe(crossings) + " times in duration " + describe(scene.run.duration) +
+                                 ", each crossing at least one event; more than " + describe(max_event_estimate) +
+                                 " events cannot finish (speeds too large for the box, or the duration too long)");
+}
+
 }  // namespace
 
 std::optional<std::string> EventSolver::supports(const Scene& scene) {
@@ -78,6 +97,8 @@ void EventSolver::load(const Scene& scene, const ParticleState<double>& initial)
     if (auto reason = supports(scene)) throw std::runtime_error("event: scene '" + scene.name + "': " + *reason);
     scene_ = scene;
     validate_input(initial);
+    require_representable(scene, initial, Precision::double_, Method::event_driven, "event");
+    reject_endless_run(scene, initial);
     const std::size_t n = initial.size();
     state_ = initial;
     gx_ = scene.physics.gravity_x;
@@ -243,27 +264,6 @@ void EventSolver::read_options(std::size_t n) {
     }
 }
 
-namespace {
-
-// An event-driven run jumps from collision to collision, so its cost grows with the number of
-// events, not with the duration: disks at 1e30 length/time cross the box ~1e30 times and the
-// run would never end. The wall (or periodic image) crossings sum_i |v_i| duration / box size
-// are a lower bound on the events; beyond this limit the run is refused rather than started.
-constexpr double max_event_estimate = 1e12;
-
-void reject_endless_run(const Scene& scene, const ParticleState<double>& s) {
-    const double box = std::min(scene.world.width(), scene.world.height());
-    double crossings = 0;
-    for (std::size_t i = 0; i < s.size(); ++i) crossings += std::hypot(s.vx[i], s.vy[i]) * scene.run.duration / box;
-    if (crossings > max_event_estimate)
-        throw std::runtime_error("event: scene '" + scene.name + "': the disks would cross the box about " +
-                                 describe(crossings) + " times in duration " + describe(scene.run.duration) +
-                                 ", each crossing at least one event; more than " + describe(max_event_estimate) +
-                                 " events cannot finish (speeds too large for the box, or the duration too long)");
-}
-
-}  // namespace
-
 void EventSolver::validate_input(const ParticleState<double>& s) const {
     const Physics& p = scene_.physics;
     if (!(p.restitution >= 0 && p.restitution <= 1))
@@ -289,7 +289,6 @@ void EventSolver::validate_input(const ParticleState<double>& s) const {
                                      describe(r) + " reaches outside the walls [" + describe(w.xmin) + ", " +
                                      describe(w.xmax) + "] x [" + describe(w.ymin) + ", " + describe(w.ymax) + "]");
     }
-    reject_endless_run(scene_, s);
 }
 
 void EventSolver::reject_overlaps() const {
@@ -304,12 +303,12 @@ void EventSolver::reject_overlaps() const {
                 dy = WallLaw<double>::minimum_image(dy, w.height());
             }
             const double sigma = disks_[i].radius + disks_[j].radius;
+            if (!centres_closer_than(dx, dy, sigma * (1 - overlap_tolerance))) return;
             const double distance = std::hypot(dx, dy);
-            if (sigma - distance > overlap_tolerance * sigma)
-                throw std::runtime_error("event: initial state overlaps: particles " + std::to_string(i) + " and " +
-                                         std::to_string(j) + " overlap by " + describe(sigma - distance) +
-                                         " (centre distance " + describe(distance) + ", contact distance " +
-                                         describe(sigma) + ")");
+            throw std::runtime_error("event: initial state overlaps: particles " + std::to_string(i) + " and " +
+                                     std::to_string(j) + " overlap by " + describe(sigma - distance) +
+                                     " (centre distance " + describe(distance) + ", contact distance " +
+                                     describe(sigma) + ")");
         });
     }
 }
