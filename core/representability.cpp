@@ -1,10 +1,12 @@
 #include "representability.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 namespace collide {
 namespace {
