@@ -2,6 +2,8 @@
 
 #include <box2d/box2d.h>
 
+#include "core/number_text.h"
+#include "core/representability.h"
 #include "physics/step_schedule.h"
 
 #include <cfloat>
@@ -36,38 +38,95 @@ double mean_radius(const ParticleState<double>& s) {
 }
 
 // Box2D computes in float. A value beyond float's range becomes inf, on which Box2D stops
-// with an assertion (b2_body.cpp: b2IsValid); a density below float's smallest normal number
-// becomes 0, for which Box2D quietly gives the body a mass of 1 (and the energy is wrong).
-// So every value handed over must be finite in float, and radii and densities normal and > 0.
-void require_float(double value, bool positive, const std::string& scene, const std::string& what) {
-    const double size = std::fabs(value);
-    const bool ok = positive ? value >= FLT_MIN && value <= FLT_MAX : std::isfinite(value) && size <= FLT_MAX;
-    if (ok) return;
-    std::ostringstream msg;
-    msg << "box2d: scene '" << scene << "': " << what << " = " << value << " in Box2D's units is "
-        << (positive ? "outside the normal positive float range [1.2e-38, 3.4e38]" : "beyond float's range (3.4e38)")
-        << "; Box2D computes in float and cannot take it";
-    throw std::runtime_error(msg.str());
+// with an assertion (b2_body.cpp: b2IsValid); a value below float's smallest normal number
+// loses digits or becomes 0 (IEEE 754 underflow): a velocity of 0 stops the disk, a density
+// of 0 makes Box2D quietly give the body a mass of 1. So every value handed over, in Box2D's
+// units, must lie in float's normal range or be exactly 0. Positions are checked for overflow
+// only: an offset from the box centre that rounds to 0 is an ordinary rounding of the position.
+class FloatInputs {
+public:
+    explicit FloatInputs(const Box2dUnits& units) : scale_(units.scale) {}
+    // The value handed over is the product of `factors` (e.g. {scale, g}); formed in double it
+    // could itself overflow, so a problem is described by value_problem, which does not.
+    void both(const char* what, std::initializer_list<double> factors, long long disk = -1) {
+        if (problem_ || fits(factors)) return;
+        const std::string where = std::string(what) + " in Box2D's units (length scale " + round_trip_text(scale_) + ")";
+        problem_ = value_problem("box2d computes", Precision::single, where, factors, disk);
+    }
+    void overflow(const char* what, std::initializer_list<double> factors, long long disk = -1) {
+        double product = 1;
+        for (double f : factors) product *= f;
+        if (!(std::fabs(product) <= 1)) both(what, factors, disk);
+    }
+    void require(const Scene& scene) const {
+        if (problem_) throw std::runtime_error("box2d cannot run scene '" + scene.name + "': " + *problem_ + " (docs/refusals.md)");
+    }
+
+private:
+    // Exactly 0, or in float's normal range (a product that left double's range is outside).
+    static bool fits(std::initializer_list<double> factors) {
+        double product = 1;
+        for (double f : factors) {
+            if (f == 0) return true;
+            product *= f;
+        }
+        return std::fabs(product) >= FLT_MIN && std::fabs(product) <= FLT_MAX;
+    }
+
+    double scale_;
+    std::optional<std::string> problem_;
+};
+
+void check_world_inputs(FloatInputs& in, const Scene& scene, const Box2dUnits& u, int substeps) {
+    const World& w = scene.world;
+    const double s = u.scale;
+    in.both("gravity x", {s, scene.physics.gravity_x});
+    in.both("gravity y", {s, scene.physics.gravity_y});
+    in.both("damping", {scene.physics.damping});
+    in.both("the step dt / substeps", {scene.run.dt / substeps});
+    for (double x : {w.xmin, w.xmax}) in.overflow("a wall x", {s, x - u.centre_x});
+    for (double y : {w.ymin, w.ymax}) in.overflow("a wall y", {s, y - u.centre_y});
+    // Box2D's edge and distance computations square lengths up to the box's size.
+    const double side = std::max(w.width(), w.height());
+    in.both("the box side", {s, side});
+    in.both("the squared box side", {s, side, s, side});
 }
 
-void check_float_inputs(const Scene& scene_, const ParticleState<double>& s, const Box2dUnits& units_, int substeps_) {
-    const std::string& name = scene_.name;
-    require_float(units_.to_box2d_length(scene_.physics.gravity_x), false, name, "gravity x");
-    require_float(units_.to_box2d_length(scene_.physics.gravity_y), false, name, "gravity y");
-    require_float(scene_.physics.damping, false, name, "damping");
-    require_float(scene_.run.dt / substeps_, true, name, "the step dt / substeps");
-    for (double x : {scene_.world.xmin, scene_.world.xmax}) require_float(units_.to_box2d_x(x), false, name, "a wall");
-    for (double y : {scene_.world.ymin, scene_.world.ymax}) require_float(units_.to_box2d_y(y), false, name, "a wall");
-    for (std::size_t i = 0; i < s.size(); ++i) {
-        const std::string disk = "disk " + std::to_string(i) + " ";
-        require_float(units_.to_box2d_x(s.x[i]), false, name, disk + "x");
-        require_float(units_.to_box2d_y(s.y[i]), false, name, disk + "y");
-        require_float(units_.to_box2d_length(s.vx[i]), false, name, disk + "vx");
-        require_float(units_.to_box2d_length(s.vy[i]), false, name, disk + "vy");
-        const double r = units_.to_box2d_length(s.radius[i]);
-        require_float(r, true, name, disk + "radius");
-        if (!s.is_stone(i)) require_float(s.mass[i] / (std::numbers::pi * r * r), true, name, disk + "density (mass / area)");
+void check_disk_inputs(FloatInputs& in, const Scene& scene, const ParticleState<double>& st, const Box2dUnits& u,
+                       double h) {
+    const double s = u.scale, g = std::hypot(scene.physics.gravity_x, scene.physics.gravity_y);
+    for (std::size_t i = 0; i < st.size(); ++i) {
+        const auto disk = static_cast<long long>(i);
+        const double r = st.radius[i], m = st.mass[i], v = std::hypot(st.vx[i], st.vy[i]);
+        in.overflow("x", {s, st.x[i] - u.centre_x}, disk);
+        in.overflow("y", {s, st.y[i] - u.centre_y}, disk);
+        in.both("radius", {s, r}, disk);
+        in.both("squared contact distance (2 r)^2", {4, s, r, s, r}, disk);  // b2CollideCircles
+        if (st.is_stone(i)) continue;  // a static body: no velocity, no mass
+        in.overflow("vx", {s, st.vx[i]}, disk);
+        in.overflow("vy", {s, st.vy[i]}, disk);
+        in.both("speed |v|", {s, v}, disk);
+        in.both("translation per step |v| h", {s, v, h}, disk);  // b2Island: position += h v,
+        in.overflow("squared translation per step (|v| h)^2", {s, v, h, s, v, h}, disk);  // capped by its square
+        in.both("mass", {m}, disk);  // b2Body::ResetMassData: m = density * area, then 1/m
+        in.both("inverse mass 1/m", {1 / m}, disk);
+        in.both("density (mass / area)", {m, 1 / std::numbers::pi, 1 / s, 1 / s, 1 / r, 1 / r}, disk);
+        in.both("impulse m |v|", {m, s, v}, disk);  // b2ContactSolver: impulses are mass x velocity
+        // b2Island::Solve: v += h (1/m) (m g + F), evaluated as (h (1/m)) (m g + F).
+        in.both("step per mass h / m", {h, 1 / m}, disk);
+        in.both("weight m |g|", {m, s, g}, disk);
+        in.both("velocity change per step |g| h", {s, g, h}, disk);
+        in.overflow("displacement per step by gravity |g| h^2", {s, g, h, h}, disk);
     }
+}
+
+void require_float_inputs(const Scene& scene, const ParticleState<double>& s, const Box2dUnits& u, int substeps,
+                          const Box2dOptions& options) {
+    FloatInputs in(u);
+    check_world_inputs(in, scene, u, substeps);
+    check_disk_inputs(in, scene, s, u, scene.run.dt / substeps);
+    if (options.restitution_threshold) in.both("restitution threshold", {u.scale, *options.restitution_threshold});
+    in.require(scene);
 }
 
 }  // namespace
@@ -102,16 +161,21 @@ void Box2dSolver::load(const Scene& scene, const ParticleState<double>& initial)
     initial_ = initial;
     options_ = parse_box2d_options(scene);
     if (iterations_) options_.velocity_iterations = *iterations_;
-    units_ = Box2dUnits(options_.length_scale.value_or(default_box2d_scale(mean_radius(initial))), scene.world);
+    const double mean = mean_radius(initial);
+    const double scale = options_.length_scale.value_or(default_box2d_scale(mean));
+    if (auto why = box2d_scale_problem(scale, mean, options_.length_scale.has_value()))
+        throw std::runtime_error("box2d cannot run scene '" + scene.name + "': " + *why + " (docs/refusals.md)");
+    units_ = Box2dUnits(scale, scene.world);
     substeps_ = options_.substeps.value_or(scene.run.substeps);
     if (!(scene.run.dt > 0) || substeps_ < 1)
         throw std::runtime_error("box2d: scene '" + scene.name + "': needs dt > 0 and substeps >= 1 (dt = " +
-                                 std::to_string(scene.run.dt) + ", substeps = " + std::to_string(substeps_) + ")");
+                                 round_trip_text(scene.run.dt) + ", substeps = " + std::to_string(substeps_) + ")");
     step_count_ = 0;
     stats_ = SolverStats{};
     cap_steps_ = cap_body_steps_ = 0;
 
-    check_float_inputs(scene, initial, units_, substeps_);
+    require_representable(scene, initial, Precision::double_, Method::metrics_only, "box2d");
+    require_float_inputs(scene, initial, units_, substeps_, options_);
     world_ = std::make_unique<b2World>(b2Vec2(float(units_.to_box2d_length(scene.physics.gravity_x)),
                                               float(units_.to_box2d_length(scene.physics.gravity_y))));
     // Sleeping freezes bodies whose speed stays below a threshold: the tuned preset turns it
@@ -260,13 +324,13 @@ std::map<std::string, std::string> Box2dSolver::provenance() const {
     return {
         {"box2d_version", std::to_string(v.major) + "." + std::to_string(v.minor) + "." + std::to_string(v.revision)},
         {"box2d_preset", options_.preset},
-        {"box2d_length_scale", std::to_string(units_.scale)},
-        {"box2d_time_step", std::to_string(scene_.run.dt / substeps_)},
+        {"box2d_length_scale", round_trip_text(units_.scale)},
+        {"box2d_time_step", round_trip_text(scene_.run.dt / substeps_)},
         {"box2d_substeps", std::to_string(substeps_)},
         {"box2d_velocity_iterations", std::to_string(options_.velocity_iterations)},
         {"box2d_position_iterations", std::to_string(options_.position_iterations)},
-        {"box2d_restitution_threshold", std::to_string(units_.from_box2d_length(threshold))},
-        {"box2d_restitution_threshold_box2d_units", std::to_string(threshold)},
+        {"box2d_restitution_threshold", round_trip_text(units_.from_box2d_length(threshold))},
+        {"box2d_restitution_threshold_box2d_units", round_trip_text(threshold)},
         {"box2d_bullet", flag(options_.bullet)},
         {"box2d_sleeping", flag(options_.sleeping)},
         {"box2d_warm_starting", flag(options_.warm_starting)},

@@ -12,6 +12,9 @@
 // cap, which is per step, and its dynamics are linear in mass (density = m / (pi (s r)^2)).
 #pragma once
 
+#include <optional>
+#include <string>
+
 #include "core/scene.h"
 
 namespace collide {
@@ -34,5 +37,13 @@ struct Box2dUnits {
 
 // The default scale: the mean radius becomes 0.5 m, a 1 m disk, the middle of Box2D's range.
 inline double default_box2d_scale(double mean_radius) { return 0.5 / mean_radius; }
+
+// Why Box2D cannot work with the length scale s, or nothing. Box2D computes in float, so s
+// must be a finite number > 0 (the default 0.5 / r_mean overflows double to inf for a mean
+// radius below 0.5 / 1.8e308 = 2.8e-309) that maps the mean radius to a length float holds as
+// a normal number, [1.2e-38, 3.4e38] m. The default puts it at 0.5 m, inside Box2D's 0.1-10 m; a scale
+// set in [backend.box2d] may place it anywhere float can (the `shipped` preset keeps s = 1).
+// Each value handed to Box2D is then checked on its own (box2d_solver.cpp).
+std::optional<std::string> box2d_scale_problem(double scale, double mean_radius, bool chosen);
 
 }  // namespace collide

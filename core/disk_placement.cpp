@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "disk_overlap.h"
 
 namespace collide {
 
@@ -53,7 +54,7 @@ std::int64_t DiskPlacement::find_overlap(double x, double y, double r) const {
                     dy = minimum_image(dy, world_.height());
                 }
                 const double contact = (r + r_[std::size_t(j)]) * (1.0 - 1e-12);
-                if (dx * dx + dy * dy < contact * contact) return j;
+                if (centres_closer_than(dx, dy, contact)) return j;
             }
         }
     }

@@ -25,7 +25,8 @@ public:
     // Index (in insertion order) of a placed disk that overlaps a disk of radius r at
     // (x, y), or -1 if there is none. Touching disks do not overlap: the test is
     // |x_i - x_j| < (r_i + r_j)(1 - 1e-12), the small tolerance absorbing the rounding of
-    // lattice positions at exactly touching spacings. Periodic worlds use minimum images.
+    // lattice positions at exactly touching spacings, tested without squaring (disk_overlap.h),
+    // so that it holds for radii of any size. Periodic worlds use minimum images.
     std::int64_t find_overlap(double x, double y, double r) const;
 
     void insert(double x, double y, double r);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "compensated_sum.h"
+#include "disk_overlap.h"
 #include "physics/stepping_laws.h"
 #include "uniform_grid.h"
 
@@ -36,8 +37,8 @@ void for_each_overlap(const Scene& scene, const ParticleState<double>& s, OnOver
                 dy = WallLaw<double>::minimum_image(dy, ly);
             }
             const double contact = s.radius[i] + s.radius[j];
-            const double d2 = dx * dx + dy * dy;
-            if (d2 < contact * contact) on_overlap((contact - std::sqrt(d2)) / contact);
+            if (centres_closer_than(dx, dy, contact))
+                on_overlap(std::max(0.0, (contact - std::hypot(dx, dy)) / contact));
         });
     }
 }

@@ -1,5 +1,7 @@
 #include "provenance.h"
 
+#include "number_text.h"
+
 #include <H5public.h>
 #include <gsl/gsl_version.h>
 #include <unistd.h>
@@ -47,7 +49,7 @@ std::map<std::string, std::string> run_provenance(const Scene& scene, const std:
     attributes["scene_path"] = scene.source_path;
     attributes["scene_text"] = scene.source_text;
     attributes["seed"] = std::to_string(scene.seed);
-    attributes["dt"] = std::to_string(scene.run.dt);
+    attributes["dt"] = round_trip_text(scene.run.dt);
     attributes["substeps"] = std::to_string(scene.run.substeps);
     attributes["command_line"] = command_line();
     return attributes;

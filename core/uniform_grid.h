@@ -26,12 +26,20 @@ namespace collide {
 struct GridDimensions {
     std::int64_t cells_x = 1, cells_y = 1;
 };
+
+// Cells of edge >= min_cell_size that fit along `length`, at least 1. The quotient is clamped
+// before it becomes an integer: a box 1e20 radii wide gives more than 2^63 cells, whose
+// conversion is undefined behaviour (C++ [conv.fpint]), and two axes of 2^32 cells overflow
+// the product cells_x * cells_y. Callers compare products in double and halve from there.
+inline std::int64_t cells_along(double length, double min_cell_size) {
+    return std::int64_t(std::clamp(std::floor(length / min_cell_size), 1.0, 0x1p62));
+}
 inline GridDimensions grid_dimensions(const World& world, double min_cell_size) {
     GridDimensions d;
-    d.cells_x = std::max<std::int64_t>(1, std::int64_t(world.width() / min_cell_size));
-    d.cells_y = std::max<std::int64_t>(1, std::int64_t(world.height() / min_cell_size));
-    const std::int64_t max_cells = std::int64_t(1) << 26;
-    while (d.cells_x * d.cells_y > max_cells) {
+    d.cells_x = cells_along(world.width(), min_cell_size);
+    d.cells_y = cells_along(world.height(), min_cell_size);
+    const double max_cells = double(std::int64_t(1) << 26);
+    while (double(d.cells_x) * double(d.cells_y) > max_cells) {
         d.cells_x = std::max<std::int64_t>(1, d.cells_x / 2);
         d.cells_y = std::max<std::int64_t>(1, d.cells_y / 2);
     }

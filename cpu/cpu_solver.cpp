@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/phase_timer.h"
+#include "core/representability.h"
 #include "physics/step_schedule.h"
 #include "parallel_for.h"
 
@@ -49,6 +50,7 @@ void CpuSolver::load(const Scene& scene, const ParticleState<double>& initial) {
     apply_settings(options_.extra, "backend options");
     const std::size_t n = initial.size();
     if (n >= std::size_t(UINT32_MAX)) throw std::invalid_argument("cpu: at most 2^32 - 1 disks (32-bit indices)");
+    require_representable(scene, initial, Precision::single, Method::stepping_rules, "cpu");
     state_ = initial.as<float>();  // the one conversion to float; back to double only in read_state
     original_index_.resize(n);
     for (std::size_t i = 0; i < n; ++i) original_index_[i] = std::uint32_t(i);

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "physics/step_schedule.h"
+#include "core/representability.h"
 #include "core/uniform_grid.h"
 #include "device_grid.h"
 #include "step_params.h"
@@ -128,6 +129,9 @@ private:
         merge_scene_options(scene);
         n_ = initial.size();
         if (n_ >= std::size_t(UINT32_MAX)) throw std::invalid_argument("opencl: at most 2^32 - 1 disks (32-bit indices)");
+        // Before the device is opened: a scene the kernels' precision cannot hold needs no device.
+        require_representable(scene, initial, sizeof(Real) == 8 ? Precision::double_ : Precision::single,
+                              Method::stepping_rules, "opencl");
         step_count_ = 0;
         grid_builds_ = 0;
         stats_ = SolverStats{};

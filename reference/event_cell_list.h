@@ -21,6 +21,7 @@
 #include "core/huge_page_allocator.h"
 #include "core/prefetch.h"
 #include "core/scene.h"
+#include "core/uniform_grid.h"
 
 namespace collide {
 
@@ -40,10 +41,10 @@ public:
     void configure(const World& world, double min_cell_size, std::size_t particles) {
         world_ = world;
         periodic_ = world.boundary == Boundary::periodic;
-        cells_x_ = std::max<std::int64_t>(1, std::int64_t(world.width() / min_cell_size));
-        cells_y_ = std::max<std::int64_t>(1, std::int64_t(world.height() / min_cell_size));
-        const std::int64_t max_cells = std::max<std::int64_t>(std::int64_t(1) << 20, 4 * std::int64_t(particles));
-        while (cells_x_ * cells_y_ > max_cells) {
+        cells_x_ = cells_along(world.width(), min_cell_size);  // (clamped: core/uniform_grid.h)
+        cells_y_ = cells_along(world.height(), min_cell_size);
+        const double max_cells = double(std::max<std::int64_t>(std::int64_t(1) << 20, 4 * std::int64_t(particles)));
+        while (double(cells_x_) * double(cells_y_) > max_cells) {
             if (cells_x_ >= cells_y_) cells_x_ = std::max<std::int64_t>(1, cells_x_ / 2);
             else cells_y_ = std::max<std::int64_t>(1, cells_y_ / 2);
         }

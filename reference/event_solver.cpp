@@ -8,6 +8,8 @@
 
 #include "core/target_time.h"
 #include "physics/collision_rule.h"
+#include "core/disk_overlap.h"
+#include "core/representability.h"
 #include "physics/collision_time.h"
 #include "hard_disk_input.h"
 #include "physics/stepping_laws.h"

@@ -5,6 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/disk_overlap.h"
+#include "core/representability.h"
 #include "core/uniform_grid.h"
 #include "physics/stepping_laws.h"
 
@@ -18,11 +20,13 @@ std::string describe(double v) {
     return s.str();
 }
 
+}  // namespace
+
 // An event-driven run jumps from collision to collision, so its cost grows with the number of
 // events, not with the duration: disks at 1e30 length/time cross the box ~1e30 times and the
 // run would never end. The wall (or periodic image) crossings sum_i |v_i| duration / box size
 // are a lower bound on the events; beyond this limit the run is refused rather than started.
-constexpr double max_event_estimate = 1e12;
+static constexpr double max_event_estimate = 1e12;
 
 void reject_endless_run(const std::string& who, const Scene& scene, const ParticleState<double>& s) {
     const double box = std::min(scene.world.width(), scene.world.height());
@@ -34,8 +38,6 @@ void reject_endless_run(const std::string& who, const Scene& scene, const Partic
                                  ", each crossing at least one event; more than " + describe(max_event_estimate) +
                                  " events cannot finish (speeds too large for the box, or the duration too long)");
 }
-
-}  // namespace
 
 bool scene_has_stones(const Scene& scene) {
     for (const auto& g : scene.generators) {
@@ -71,6 +73,9 @@ void check_hard_disk_input(const std::string& who, const Scene& scene, const Par
                                      describe(r) + " reaches outside the walls [" + describe(w.xmin) + ", " +
                                      describe(w.xmax) + "] x [" + describe(w.ymin) + ", " + describe(w.ymax) + "]");
     }
+    // Then the numbers: masses, speeds, the collision denominator in double (a speed that does
+    // not fit is named as such before the run is called endless).
+    require_representable(scene, s, Precision::double_, Method::event_driven, who);
     reject_endless_run(who, scene, s);
 }
 
@@ -92,12 +97,13 @@ void reject_overlapping_disks(const std::string& who, const Scene& scene, const 
                 dy = WallLaw<double>::minimum_image(dy, w.height());
             }
             const double sigma = s.radius[i] + s.radius[j];
+            // The one overlap test of every backend, which cannot underflow (core/disk_overlap.h).
+            if (!centres_closer_than(dx, dy, sigma * (1 - hard_disk_overlap_tolerance))) return;
             const double distance = std::hypot(dx, dy);
-            if (sigma - distance > hard_disk_overlap_tolerance * sigma)
-                throw std::runtime_error(who + ": initial state overlaps: particles " + std::to_string(i) + " and " +
-                                         std::to_string(j) + " overlap by " + describe(sigma - distance) +
-                                         " (centre distance " + describe(distance) + ", contact distance " +
-                                         describe(sigma) + ")");
+            throw std::runtime_error(who + ": initial state overlaps: particles " + std::to_string(i) + " and " +
+                                     std::to_string(j) + " overlap by " + describe(sigma - distance) +
+                                     " (centre distance " + describe(distance) + ", contact distance " +
+                                     describe(sigma) + ")");
         });
     }
 }

@@ -18,9 +18,15 @@ inline constexpr double hard_disk_overlap_tolerance = 1e-10;
 bool scene_has_stones(const Scene& scene);
 
 // Restitutions in [0, 1], radii and masses > 0, finite positions and velocities, disks inside
-// the walls (reflecting box), and a run that can finish (see the .cpp). `who` starts every
+// the walls (reflecting box), numbers representable in double (core/representability.h), and
+// a run that can finish. `who` starts every
 // message ("event", "event-plain"). Throws std::runtime_error.
 void check_hard_disk_input(const std::string& who, const Scene& scene, const ParticleState<double>& state);
+
+// An event-driven run's cost grows with its events, not its duration: refuses a run whose disks
+// would cross the box more than 1e12 times (called after the representability check, so a speed
+// that does not fit is named as such first).
+void reject_endless_run(const std::string& who, const Scene& scene, const ParticleState<double>& state);
 
 // Throws if two disks overlap by more than the tolerance, naming the pair. In a periodic box
 // the positions must already lie inside it (the pair search bins them into cells).

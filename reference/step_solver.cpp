@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 
 #include "core/phase_timer.h"
+#include "core/representability.h"
 #include "physics/step_schedule.h"
 #include "physics/stepping_laws.h"
 
@@ -17,6 +18,7 @@ using Eigen::Vector2d;
 void StepSolver::load(const Scene& scene, const ParticleState<double>& initial) {
     if (initial.size() == 0) throw std::invalid_argument("step: the scene has no disks");
     if (!(scene.run.dt > 0)) throw std::invalid_argument("step: dt must be positive");
+    require_representable(scene, initial, Precision::double_, Method::stepping_rules, "step");
     scene_ = scene;
     state_ = initial;
     step_count_ = 0;
