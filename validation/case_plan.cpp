@@ -109,18 +109,9 @@ void refuse_duplicate_ids(const Suite& suite, const std::vector<CaseSpec>& cases
     }
 }
 
-// A misspelt name in a [[scene]]'s `backends` would silently run the scene on nothing.
-void refuse_unknown_scene_backends(const Suite& suite, const std::vector<BackendInfo>& backends) {
-    for (const SuiteScene& entry : suite.scenes)
-        for (const std::string& name : entry.backends)
-            if (std::none_of(backends.begin(), backends.end(), [&](const BackendInfo& b) { return b.name == name; }))
-                throw SuiteError(suite.source_path + ":" + std::to_string(entry.line) + ": [[scene]] '" + entry.name +
-                                 "'.backends: '" + name + "' is not one of the suite's backends");
-}
-
-}  // namespace
-
-std::vector<BackendInfo> select_backends(const Suite& suite, const std::vector<BackendInfo>& available) {
+// The backends the suite's own `backends` key selects ("all": every one but those left out of
+// "all", event-plain; then the variants).
+std::vector<BackendInfo> suite_level_backends(const Suite& suite, const std::vector<BackendInfo>& available) {
     std::vector<BackendInfo> out;
     if (suite.backends.size() == 1 && suite.backends[0] == "all") {
         for (const auto& b : available)
@@ -144,15 +135,38 @@ std::vector<BackendInfo> select_backends(const Suite& suite, const std::vector<B
     return out;
 }
 
+// Whether the suite's own list holds `name` (else only the scenes that name it run it).
+bool suite_level(const Suite& suite, const BackendInfo& backend) {
+    if (suite.backends.size() == 1 && suite.backends[0] == "all") return backend.in_all;
+    return std::find(suite.backends.begin(), suite.backends.end(), backend.name) != suite.backends.end();
+}
+
+}  // namespace
+
+std::vector<BackendInfo> select_backends(const Suite& suite, const std::vector<BackendInfo>& available) {
+    std::vector<BackendInfo> out = suite_level_backends(suite, available);
+    // A backend that only some [[scene]]s name (`backends = ["event", "event-plain"]`) joins
+    // the list, and runs those scenes alone (suite_level below).
+    for (const SuiteScene& entry : suite.scenes)
+        for (const std::string& name : entry.backends) {
+            if (std::any_of(out.begin(), out.end(), [&](const BackendInfo& b) { return b.name == name; })) continue;
+            const BackendInfo* b = find_available(name, available);
+            if (!b)
+                throw SuiteError(suite.source_path + ":" + std::to_string(entry.line) + ": [[scene]] '" + entry.name +
+                                 "'.backends: no backend '" + name + "' in this build (`collide backends` lists them)");
+            out.push_back(*b);
+        }
+    return out;
+}
+
 std::vector<CaseSpec> plan_cases(const Suite& suite, const std::vector<Scene>& scenes,
                                  const std::vector<BackendInfo>& backends) {
-    refuse_unknown_scene_backends(suite, backends);
     std::vector<CaseSpec> cases;
     for (std::size_t s = 0; s < suite.scenes.size(); ++s) {
         const SuiteScene& entry = suite.scenes[s];
         const auto& seeds = entry.seeds.empty() ? suite.seeds : entry.seeds;
         for (const BackendInfo& backend : backends) {
-            if (!runs_on(entry, backend.name)) continue;
+            if (!runs_on(entry, backend.name) || (entry.backends.empty() && !suite_level(suite, backend))) continue;
             const bool reference = backend.name == suite.reference;
             const auto refused = backend.supports(case_scene(scenes[s], entry, CaseSpec{}));
             // The reference solves the exact dynamics: dt, substeps and iterations mean nothing to

@@ -20,6 +20,8 @@ const std::vector<PhysicsRowKind>& physics_row_kinds() {
         {"speed_distribution", "maxwell_boltzmann", "speed distribution of the final states"},
         {"galperin", "galperin_2003", "collisions (disk-disk and disk-wall) until the disks separate"},
         {"haff", "haff_1983", "cooling time tau of T(t) = T0 / (1 + t / tau)^2"},
+        // Not a [[scene]] key: made from the rows above wherever two exact solvers ran a case.
+        {"exact_agreement", "", "difference between two exact solvers' values of the same row"},
     };
     return kinds;
 }
@@ -288,6 +290,34 @@ PhysicsRow haff_row(const Group& g, const SceneFacts& f, const PublishedReferenc
     return row;
 }
 
+// Two independent exact solvers (`event` and `event-plain`) on the same cases must agree within
+// their error bars: for each judged z row of a second exact backend, the difference from the
+// first backend's row at the same scene and parameter, judged as a z-score about 0.
+void add_exact_agreement(std::vector<PhysicsRow>& rows) {
+    std::vector<PhysicsRow> added;
+    for (const PhysicsRow& a : rows) {
+        if (a.verdict == PhysicsVerdict::shown || a.statistic != "z") continue;
+        for (const PhysicsRow& b : rows) {
+            if (&a == &b || b.row != a.row || b.scene != a.scene || b.verdict == PhysicsVerdict::shown ||
+                b.backend <= a.backend || !(b.parameter == a.parameter || (std::isnan(a.parameter) && std::isnan(b.parameter))))
+                continue;
+            PhysicsRow d = a;
+            d.row = "exact_agreement";
+            d.backend = b.backend + " - " + a.backend;
+            d.measured = "difference of " + a.measured;
+            d.value = b.value - a.value;
+            d.standard_error = std::hypot(a.standard_error, b.standard_error);
+            d.reference = 0, d.reference_uncertainty = 0, d.second_reference = std::nan("");
+            d.reference_name = "the two exact solvers agree", d.citation = "";
+            d.score = std::abs(d.value) / d.standard_error;
+            d.verdict = d.score <= physics_z_max ? PhysicsVerdict::pass : PhysicsVerdict::fail;
+            d.detail = b.backend + " " + std::to_string(b.value) + " against " + a.backend + " " + std::to_string(a.value);
+            added.push_back(std::move(d));
+        }
+    }
+    rows.insert(rows.end(), added.begin(), added.end());
+}
+
 ReferenceCurve sampled_curve(const PublishedReference& eos) {
     ReferenceCurve c{eos.name, eos.citation, {}, {}};
     for (int k = 0; k <= 140; ++k) {
@@ -322,6 +352,7 @@ PhysicsComparison compare_with_physics(const Suite& suite, const std::vector<Cas
             else if (kind == "haff") out.rows.push_back(haff_row(g, f, ref("haff_1983"), eos));
         }
     }
+    add_exact_agreement(out.rows);
     out.curves = {sampled_curve(eos), sampled_curve(ref("henderson_1975"))};
     return out;
 }

@@ -165,8 +165,10 @@ disks = [{ x = 2.0, y = 5.0, vx = 1e155, vy = 0.0, radius = 0.5, mass = 1.0 },
 
 @pytest.mark.parametrize("backend", ["step", "cpu"])
 def test_11_a_nonfinite_state_is_refused_with_the_clis_words(tmp_path, collide_exe, backend):
-    # cpu: 1e155 is beyond float, so its state holds Inf (the issue's "kinetic energy 0.0 beside
-    # nonfinite = 2"); step: the kinetic energy overflows double although every disk is finite.
+    # cpu: 1e155 is beyond float, so its state would hold Inf (the issue's "kinetic energy 0.0
+    # beside nonfinite = 2"); step: the kinetic energy would overflow double although every disk
+    # is finite. Both backends now refuse the scene before it starts (core/representability.h),
+    # naming the quantity; Python raises the CLI's words. A state that breaks midway: below.
     scene_file = tmp_path / "huge_speeds.toml"
     scene_file.write_text(HUGE_SPEEDS)
     cli = cli_error(collide_exe, scene_file, backend)
@@ -174,7 +176,7 @@ def test_11_a_nonfinite_state_is_refused_with_the_clis_words(tmp_path, collide_e
         sim = collide.Simulation(collide.Scene.from_file(str(scene_file)), backend=backend)
         sim.advance_to(0.1)
     assert str(error.value) == cli
-    assert "NaN/Inf" in cli
+    assert "cannot run scene 'huge_speeds'" in cli and "overflows" in cli
 
 
 BAD_OPTIONS = [("tc", "abc"), ("preset", "nope"), ("bogus", 1)]

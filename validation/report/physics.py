@@ -18,6 +18,7 @@ ROW_TITLES = {
     "speed_distribution": "Speed distribution (Maxwell–Boltzmann)",
     "galperin": "Galperin's billiard (digits of π)",
     "haff": "Haff's law (granular cooling)",
+    "exact_agreement": "Two exact solvers agree",
 }
 
 
