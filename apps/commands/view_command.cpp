@@ -18,6 +18,7 @@ struct ViewArgs {
     std::string size = "1280x720";
     BackendOptions options;
     view::ViewOptions view;
+    std::vector<SceneOverride> overrides;
 };
 
 // "WIDTHxHEIGHT" -> pixels; shared by view and render.
@@ -37,7 +38,7 @@ void execute(ViewArgs& args) {
     parse_size(args.size, args.view.width, args.view.height);
     const BackendInfo& backend = find_backend(args.backend);
     const BackendInfo* compare = args.compare.empty() ? nullptr : &find_backend(args.compare);
-    const Scene scene = load_scene(args.scene_path);
+    const Scene scene = load_scene_with_overrides(args.scene_path, args.overrides);
     require_support(backend, scene);
     if (compare) require_support(*compare, scene);
     const ParticleState<double> initial = generate_initial_state(scene);
@@ -61,6 +62,7 @@ void add_view_command(CLI::App& app) {
     cmd->add_option("--real", args->options.real, "Precision for backends that offer both")
         ->check(CLI::IsMember({"float", "double"}));
     cmd->add_option("--cl-device", args->options.device, "OpenCL device (index or name substring)");
+    add_set_option(*cmd, args->overrides);
     cmd->callback([args] { execute(*args); });
 }
 

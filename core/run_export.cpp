@@ -1,0 +1,191 @@
+#include "run_export.h"
+
+#include <charconv>
+#include <filesystem>
+#include <stdexcept>
+#include <vector>
+
+#include "hdf5_handle.h"
+#include "scene_loader.h"
+
+namespace collide {
+namespace {
+
+// What the exports need of a run file (docs/output-format.md): the frame times, the disks'
+// constants and the box; positions and velocities are read one frame at a time.
+class RunFile {
+public:
+    explicit RunFile(const std::string& path) : path_(path) {
+        silence_hdf5_error_printing();
+        file_ = file_handle(checked(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), path, "open the run file"));
+        if (!has("particles") || !has("metrics"))
+            throw std::runtime_error(path + ": not a collide run file (no /particles or /metrics)");
+        if (!has("frames"))
+            throw std::runtime_error(path + ": the run has no frames to export: it was written without --frames; "
+                                            "rerun it with `collide run ... --frames`");
+        times = read("frames/time");
+        radius = read("particles/radius");
+        mass = read("particles/mass");
+        inv_mass = read("particles/inv_mass");
+        scene = parse_scene(attribute("scene_text"), attribute("scene_path"));
+    }
+
+    // Positions (what = "position") or velocities ("velocity") of frame k: x0, y0, x1, y1, ...
+    std::vector<double> frame(const char* what, std::size_t k) const {
+        const std::string name = std::string("frames/") + what;
+        Hdf5Handle d = dataset_handle(checked(H5Dopen2(file_.get(), name.c_str(), H5P_DEFAULT), path_, "open " + name));
+        Hdf5Handle space = dataspace_handle(checked(H5Dget_space(d.get()), path_, "get the shape of " + name));
+        const hsize_t start[3] = {hsize_t(k), 0, 0}, count[3] = {1, hsize_t(radius.size()), 2};
+        checked(H5Sselect_hyperslab(space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr), path_, "select " + name);
+        Hdf5Handle memory = dataspace_handle(checked(H5Screate_simple(3, count, nullptr), path_, "make a dataspace"));
+        std::vector<double> xy(2 * radius.size());
+        checked(H5Dread(d.get(), H5T_NATIVE_DOUBLE, memory.get(), space.get(), H5P_DEFAULT, xy.data()), path_,
+                "read " + name);
+        return xy;
+    }
+
+    std::vector<double> times, radius, mass, inv_mass;
+    Scene scene;
+
+private:
+    bool has(const char* name) const { return H5Lexists(file_.get(), name, H5P_DEFAULT) > 0; }
+
+    std::vector<double> read(const std::string& name) const {
+        Hdf5Handle d = dataset_handle(checked(H5Dopen2(file_.get(), name.c_str(), H5P_DEFAULT), path_, "open " + name));
+        Hdf5Handle space = dataspace_handle(checked(H5Dget_space(d.get()), path_, "get the shape of " + name));
+        std::vector<double> v(std::size_t(checked(H5Sget_simple_extent_npoints(space.get()), path_, "size " + name)));
+        checked(H5Dread(d.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()), path_, "read " + name);
+        return v;
+    }
+
+    std::string attribute(const std::string& name) const {
+        Hdf5Handle a = attribute_handle(
+            checked(H5Aopen_by_name(file_.get(), "/", name.c_str(), H5P_DEFAULT, H5P_DEFAULT), path_, "open /" + name));
+        Hdf5Handle type = variable_length_string_type(path_);
+        char* text = nullptr;
+        checked(H5Aread(a.get(), type.get(), &text), path_, "read /" + name);
+        std::string value(text ? text : "");
+        H5free_memory(text);
+        return value;
+    }
+
+    std::string path_;
+    Hdf5Handle file_;
+};
+
+// The shortest text that reads back as the same double (0.1, not 0.10000000000000001).
+std::string exact(double v) {
+    char buffer[32];
+    const auto end = std::to_chars(buffer, buffer + sizeof buffer, v).ptr;
+    return std::string(buffer, end);
+}
+
+std::string xml_escaped(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        if (c == '&') out += "&amp;";
+        else if (c == '<') out += "&lt;";
+        else if (c == '>') out += "&gt;";
+        else if (c == '"') out += "&quot;";
+        else out += c;
+    }
+    return out;
+}
+
+// Frame k of a T x N x 2 dataset, or one of its two columns (component 0 or 1), as an XDMF
+// HyperSlab: rows of the start, stride and count of the selection, then the whole dataset.
+std::string hyperslab(const std::string& h5, const char* dataset, std::size_t k, std::size_t t, std::size_t n,
+                      int component, const std::string& indent) {
+    const std::string width = component < 0 ? "2" : "1", first = component < 0 ? "0" : std::to_string(component);
+    const std::string N = std::to_string(n);
+    return indent + "<DataItem ItemType=\"HyperSlab\" Dimensions=\"1 " + N + " " + width + "\" Type=\"HyperSlab\">\n" +
+           indent + "  <DataItem Dimensions=\"3 3\" NumberType=\"Int\" Format=\"XML\">" + std::to_string(k) + " 0 " +
+           first + "  1 1 1  1 " + N + " " + width + "</DataItem>\n" + indent + "  <DataItem Dimensions=\"" +
+           std::to_string(t) + " " + N + " 2\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" + h5 + ":/frames/" +
+           dataset + "</DataItem>\n" + indent + "</DataItem>\n";
+}
+
+std::string constant_attribute(const std::string& h5, const char* name, std::size_t n) {
+    return "        <Attribute Name=\"" + std::string(name) + "\" AttributeType=\"Scalar\" Center=\"Node\">\n"
+           "          <DataItem Dimensions=\"" + std::to_string(n) + "\" NumberType=\"Float\" Precision=\"8\" "
+           "Format=\"HDF\">" + h5 + ":/particles/" + name + "</DataItem>\n        </Attribute>\n";
+}
+
+// One Uniform grid per output time. ParaView's Vector attributes have three components, so the
+// velocity is joined from its two columns and a zero z (0 * vx).
+std::string xdmf_frame(const std::string& h5, const RunFile& run, std::size_t k) {
+    const std::size_t t = run.times.size(), n = run.radius.size();
+    const std::string N = std::to_string(n), in = "            ";
+    return "      <Grid Name=\"frame " + std::to_string(k) + "\" GridType=\"Uniform\">\n"
+           "        <Time Value=\"" + exact(run.times[k]) + "\"/>\n"
+           "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" + N + "\" NodesPerElement=\"1\"/>\n"
+           "        <Geometry GeometryType=\"XY\">\n" + hyperslab(h5, "position", k, t, n, -1, "          ") +
+           "        </Geometry>\n" + constant_attribute(h5, "radius", n) + constant_attribute(h5, "mass", n) +
+           "        <Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Node\">\n"
+           "          <DataItem ItemType=\"Function\" Function=\"JOIN($0, $1, 0 * $0)\" Dimensions=\"" + N + " 3\">\n" +
+           hyperslab(h5, "velocity", k, t, n, 0, in) + hyperslab(h5, "velocity", k, t, n, 1, in) +
+           "          </DataItem>\n        </Attribute>\n      </Grid>\n";
+}
+
+}  // namespace
+
+ExportFormat export_format(const std::string& name, const std::string& out) {
+    std::string f = name;
+    if (f.empty()) {
+        f = std::filesystem::path(out).extension().string();
+        if (!f.empty()) f = f.substr(1);
+        if (f == "xmf") f = "xdmf";
+    }
+    if (f == "xdmf") return ExportFormat::xdmf;
+    if (f == "xyz") return ExportFormat::xyz;
+    if (f == "gsd") return ExportFormat::gsd;
+    throw std::runtime_error(name.empty() ? "--out " + out + ": cannot tell the format from the extension; "
+                                                             "expected .xdmf, .gsd or .xyz, or name it with --format"
+                                          : "--format " + name + ": expected xdmf, gsd or xyz");
+}
+
+const char* to_string(ExportFormat f) {
+    return f == ExportFormat::xdmf ? "xdmf" : f == ExportFormat::xyz ? "xyz" : "gsd";
+}
+
+void require_frames(const std::string& run_path) { RunFile run(run_path); }
+
+std::string xdmf_text(const std::string& run_path, const std::string& xdmf_path) {
+    const RunFile run(run_path);
+    namespace fs = std::filesystem;
+    const fs::path folder = fs::absolute(xdmf_path).parent_path();
+    const std::string h5 = xml_escaped(fs::relative(fs::absolute(run_path), folder).string());
+    // "FILE:/dataset" is how XDMF names HDF5 data, so a ':' in the file name cannot be told apart.
+    if (h5.find(':') != std::string::npos)
+        throw std::runtime_error(run_path + ": an XDMF file cannot name a run file whose path holds ':'");
+    std::string text = "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+                       "<!-- Written by `collide export`: points into " + h5 + ", which must stay beside it -->\n"
+                       "<Xdmf Version=\"3.0\" xmlns:xi=\"http://www.w3.org/2001/XInclude\">\n  <Domain>\n"
+                       "    <Grid Name=\"" + xml_escaped(run.scene.name) + "\" GridType=\"Collection\" "
+                       "CollectionType=\"Temporal\">\n";
+    for (std::size_t k = 0; k < run.times.size(); ++k) text += xdmf_frame(h5, run, k);
+    return text + "    </Grid>\n  </Domain>\n</Xdmf>\n";
+}
+
+std::string xyz_text(const std::string& run_path) {
+    const RunFile run(run_path);
+    const World& w = run.scene.world;
+    const std::string periodic = run.scene.periodic() ? "T T F" : "F F F";
+    // The cell is the box (its third vector zero: the disks lie in the plane z = 0), placed at
+    // the box's corner by Origin (OVITO reads it; ASE keeps it in info).
+    const std::string header = "Lattice=\"" + exact(w.width()) + " 0 0 0 " + exact(w.height()) + " 0 0 0 0\" Origin=\"" +
+                               exact(w.xmin) + " " + exact(w.ymin) + " 0\" Properties=species:S:1:pos:R:3:radius:R:1:"
+                               "mass:R:1:vel:R:3 pbc=\"" + periodic + "\"";
+    std::string text;
+    for (std::size_t k = 0; k < run.times.size(); ++k) {
+        const std::vector<double> x = run.frame("position", k), v = run.frame("velocity", k);
+        text += std::to_string(run.radius.size()) + "\n" + header + " Time=" + exact(run.times[k]) + "\n";
+        for (std::size_t i = 0; i < run.radius.size(); ++i)
+            text += std::string(run.inv_mass[i] == 0 ? "stone " : "disk ") + exact(x[2 * i]) + " " + exact(x[2 * i + 1]) +
+                    " 0 " + exact(run.radius[i]) + " " + exact(run.mass[i]) + " " + exact(v[2 * i]) + " " +
+                    exact(v[2 * i + 1]) + " 0\n";
+    }
+    return text;
+}
+
+}  // namespace collide
