@@ -171,19 +171,20 @@ std::string xyz_text(const std::string& run_path) {
     const RunFile run(run_path);
     const World& w = run.scene.world;
     const std::string periodic = run.scene.periodic() ? "T T F" : "F F F";
-    // The cell is the box (its third vector zero: the disks lie in the plane z = 0), placed at
+    // Species X: ASE reads a species as a chemical element, and X is its placeholder for "none";
+    // the stones (kinematic disks) are marked by the stone column instead. The cell is the box (its third vector zero: the disks lie in the plane z = 0), placed at
     // the box's corner by Origin (OVITO reads it; ASE keeps it in info).
     const std::string header = "Lattice=\"" + exact(w.width()) + " 0 0 0 " + exact(w.height()) + " 0 0 0 0\" Origin=\"" +
                                exact(w.xmin) + " " + exact(w.ymin) + " 0\" Properties=species:S:1:pos:R:3:radius:R:1:"
-                               "mass:R:1:vel:R:3 pbc=\"" + periodic + "\"";
+                               "mass:R:1:vel:R:3:stone:I:1 pbc=\"" + periodic + "\"";
     std::string text;
     for (std::size_t k = 0; k < run.times.size(); ++k) {
         const std::vector<double> x = run.frame("position", k), v = run.frame("velocity", k);
         text += std::to_string(run.radius.size()) + "\n" + header + " Time=" + exact(run.times[k]) + "\n";
         for (std::size_t i = 0; i < run.radius.size(); ++i)
-            text += std::string(run.inv_mass[i] == 0 ? "stone " : "disk ") + exact(x[2 * i]) + " " + exact(x[2 * i + 1]) +
-                    " 0 " + exact(run.radius[i]) + " " + exact(run.mass[i]) + " " + exact(v[2 * i]) + " " +
-                    exact(v[2 * i + 1]) + " 0\n";
+            text += "X " + exact(x[2 * i]) + " " + exact(x[2 * i + 1]) + " 0 " + exact(run.radius[i]) + " " +
+                    exact(run.mass[i]) + " " + exact(v[2 * i]) + " " + exact(v[2 * i + 1]) + " 0 " +
+                    (run.inv_mass[i] == 0 ? "1" : "0") + "\n";
     }
     return text;
 }
