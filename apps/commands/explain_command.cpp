@@ -4,6 +4,7 @@
 // one dt at a time and names the step in which the energy changed most, the disks it changed and
 // the kind of contact behind it (validation/energy_jump.h). The report calls it for every energy
 // jump it shows (docs/reading-a-report.md).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -11,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "apps/progress_line.h"
 #include "commands.h"
 #include "validation/case_replay.h"
 #include "validation/case_result.h"
@@ -117,8 +119,18 @@ void execute(const ExplainArgs& args) {
     solver->load(c.scene, c.initial);
     const double start = std::floor(args.from / dt + 1e-9) * dt;
     if (!what_if) require_same_path(*solver, c, record, start);
-    if (start > solver->time()) solver->advance_to(start);
-    const validation::EnergyJump jump = validation::largest_energy_change(*solver, c.scene, end);
+    // A long case takes a while to reach --from and to search: a progress line with the time
+    // left on a terminal, a plain line every 10 s in a log (apps/progress_line.h).
+    ProgressLine progress;
+    const double interval = c.scene.run.output_interval;
+    for (double t = solver->time(); t < start;) {
+        t = std::min(start, (std::floor(t / interval + 1e-9) + 1) * interval);
+        solver->advance_to(t);
+        progress.update(t, end);
+    }
+    const validation::EnergyJump jump = validation::largest_energy_change(
+        *solver, c.scene, end, [&progress](double t, double t_end) { progress.update(t, t_end); });
+    progress.finish();
     if (args.json)
         std::printf("%s\n", to_json(c, jump).dump(2).c_str());
     else
