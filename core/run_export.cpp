@@ -111,20 +111,27 @@ std::string constant_attribute(const std::string& h5, const char* name, std::siz
            "Format=\"HDF\">" + h5 + ":/particles/" + name + "</DataItem>\n        </Attribute>\n";
 }
 
-// One Uniform grid per output time. ParaView's Vector attributes have three components, so the
-// velocity is joined from its two columns and a zero z (0 * vx).
+// A velocity component of frame k as a scalar attribute. Not one Vector attribute: ParaView's
+// XDMF readers take a Vector as three components, and joining a zero z needs an XDMF Function,
+// whose JOIN interlaces in XDMF 2 but concatenates in XDMF 3; two scalars read the same in every
+// reader (docs/exporting.md shows the Calculator that makes the vector in ParaView).
+std::string velocity_attribute(const std::string& h5, const RunFile& run, std::size_t k, int component) {
+    return "        <Attribute Name=\"velocity_" + std::string(component == 0 ? "x" : "y") +
+           "\" AttributeType=\"Scalar\" Center=\"Node\">\n" +
+           hyperslab(h5, "velocity", k, run.times.size(), run.radius.size(), component, "          ") +
+           "        </Attribute>\n";
+}
+
+// One Uniform grid per output time.
 std::string xdmf_frame(const std::string& h5, const RunFile& run, std::size_t k) {
     const std::size_t t = run.times.size(), n = run.radius.size();
-    const std::string N = std::to_string(n), in = "            ";
+    const std::string N = std::to_string(n);
     return "      <Grid Name=\"frame " + std::to_string(k) + "\" GridType=\"Uniform\">\n"
            "        <Time Value=\"" + exact(run.times[k]) + "\"/>\n"
            "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" + N + "\" NodesPerElement=\"1\"/>\n"
            "        <Geometry GeometryType=\"XY\">\n" + hyperslab(h5, "position", k, t, n, -1, "          ") +
            "        </Geometry>\n" + constant_attribute(h5, "radius", n) + constant_attribute(h5, "mass", n) +
-           "        <Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Node\">\n"
-           "          <DataItem ItemType=\"Function\" Function=\"JOIN($0, $1, 0 * $0)\" Dimensions=\"" + N + " 3\">\n" +
-           hyperslab(h5, "velocity", k, t, n, 0, in) + hyperslab(h5, "velocity", k, t, n, 1, in) +
-           "          </DataItem>\n        </Attribute>\n      </Grid>\n";
+           velocity_attribute(h5, run, k, 0) + velocity_attribute(h5, run, k, 1) + "      </Grid>\n";
 }
 
 }  // namespace

@@ -2,7 +2,7 @@
 // `--frames`, described for the tools that read particle trajectories.
 //
 //   xdmf  an XDMF 3 file: XML that points into the run file (nothing copied), read by ParaView
-//         and VisIt as a time series of points with radius, mass and velocity
+//         and VisIt as a time series of points with radius, mass and velocity (x, y)
 //   xyz   extended XYZ text, one block per frame (ASE, OVITO); every number printed in the
 //         shortest form that reads back as the same double
 //   gsd   HOOMD's GSD (OVITO, freud, HOOMD): written by python/collide/gsd_export.py with the
