@@ -36,11 +36,14 @@ toml::node* element(toml::array& a, const std::string& part, const std::string& 
 
 // The text after '=' as a TOML node: a TOML value, else (a bare word) a string.
 toml::table value_holder(const SceneOverride& o) {
+    const std::string line = "value = " + o.value;
+    check_toml_nesting(line, "--set " + shortened(o.path));  // before toml++ recurses into [[[[...
     try {
-        return toml::parse("value = " + o.value);
+        return toml::parse(line);
     } catch (const toml::parse_error& e) {
         if (o.value.find_first_of("\"'[]{}=#\n") != std::string::npos || o.value.empty())
-            throw SceneError("--set " + o.text() + ": the value is no TOML value (" + std::string(e.description()) + ")");
+            throw SceneError("--set " + shortened(o.text()) + ": the value is no TOML value (" +
+                             std::string(e.description()) + ")");
         toml::table t;
         t.insert("value", o.value);
         return t;
@@ -105,7 +108,9 @@ Scene scene_with_overrides(const Scene& scene, const std::vector<SceneOverride>&
     if (scene.source_text.empty()) throw SceneError(file + ": --set: the scene has no source text to change");
     toml::table root = toml::parse(scene.source_text, file);  // parsed once before, so it parses
     for (const SceneOverride& o : overrides) {
-        const TomlPathFail fail = [&](const std::string& why) { throw SceneError(file + ": --set " + o.text() + ": " + why); };
+        const TomlPathFail fail = [&](const std::string& why) {
+            throw SceneError(file + ": --set " + shortened(o.text()) + ": " + why);
+        };
         const auto dot = o.path.rfind('.');
         const std::string last = dot == std::string::npos ? o.path : o.path.substr(dot + 1);
         if (last.empty()) fail("an empty component");
@@ -119,7 +124,7 @@ Scene scene_with_overrides(const Scene& scene, const std::vector<SceneOverride>&
         return out;
     } catch (const SceneError& e) {
         // The loader's message as a file with these values would get it, then where they came from.
-        throw SceneError(std::string(e.what()) + " (with --set " + overrides_text(overrides) + ")");
+        throw SceneError(std::string(e.what()) + " (with --set " + shortened(overrides_text(overrides)) + ")");
     }
 }
 
