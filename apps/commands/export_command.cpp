@@ -9,6 +9,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "apps/resource_path.h"
 #include "commands.h"
 #include "core/run_export.h"
 #include "validation/case_result.h"
@@ -22,7 +23,7 @@ struct ExportArgs {
 
 // fork + exec (no shell, so no quoting of file names); the script names its own errors.
 void write_gsd(const std::string& run, const std::string& out) {
-    const std::string script = std::string(COLLIDE_PYTHON_PACKAGE_DIR) + "/gsd_export.py";
+    const std::string script = resource_path("python/collide") + "/gsd_export.py";
     const pid_t pid = ::fork();
     if (pid < 0) throw std::runtime_error("fork failed");
     if (pid == 0) {

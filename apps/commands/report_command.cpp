@@ -10,6 +10,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "apps/resource_path.h"
 #include "commands.h"
 #include "validation/case_result.h"
 
@@ -33,7 +34,7 @@ void execute(const std::string& dir) {
     if (!std::filesystem::exists(dir + "/summary.json"))
         throw std::runtime_error(dir + "/summary.json: not found; expected the output directory of `collide validate`");
     check_case_files(dir);
-    const std::string script = std::string(COLLIDE_REPORT_DIR) + "/make_report.py";
+    const std::string script = resource_path("validation/report") + "/make_report.py";
     // fork + exec (not system()): no shell, so directory names need no quoting.
     const pid_t pid = ::fork();
     if (pid < 0) throw std::runtime_error("fork failed");
