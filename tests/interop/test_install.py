@@ -1,6 +1,7 @@
 """`cmake --install` into a temporary prefix: the installed program finds its scene library,
 runs a small suite and exports a run with the installed GSD writer; the installed Python package
-imports from the prefix. (Needs the program and the Python module built: ctest after a build.)"""
+imports from the prefix; a ten-line C++ program builds against find_package(collide) and gets
+the kinetic energy the program gets. (Needs the build done: ctest after a build.)"""
 
 import glob
 import os
@@ -61,3 +62,48 @@ def test_the_installed_python_package_imports_from_the_prefix(prefix):
                        capture_output=True, text=True, env={**os.environ, "PYTHONPATH": str(site)}, cwd="/")
     assert r.returncode == 0, r.stderr
     assert r.stdout.splitlines()[0].startswith(str(prefix)) and "'event'" in r.stdout
+
+
+CONSUMER_CMAKE = """cmake_minimum_required(VERSION 3.25)
+project(uses_collide C CXX)   # C: the HDF5 the package links is found as a C library
+set(CMAKE_CXX_STANDARD 20)
+find_package(collide REQUIRED)
+add_executable(final_energy main.cpp)
+target_link_libraries(final_energy PRIVATE collide::reference)
+"""
+
+CONSUMER_MAIN = """// The exact solver on a scene file, from a program of its own: the final kinetic energy.
+#include <cstdio>
+#include "core/metrics.h"
+#include "core/scene_loader.h"
+#include "reference/event_solver.h"
+
+int main(int, char** argv) {
+    const collide::Scene scene = collide::load_scene(argv[1]);
+    collide::EventSolver solver;
+    solver.load(scene, collide::generate_initial_state(scene));
+    solver.advance_to(scene.run.duration);
+    collide::ParticleState<double> state;
+    solver.read_state(state);
+    std::printf("%.17g\\n", collide::compute_metrics(scene, state, solver.time()).kinetic_energy);
+}
+"""
+
+
+def test_a_cpp_program_builds_against_the_installed_package(prefix, tmp_path):
+    source, build = tmp_path / "source", tmp_path / "build"
+    source.mkdir()
+    (source / "CMakeLists.txt").write_text(CONSUMER_CMAKE)
+    (source / "main.cpp").write_text(CONSUMER_MAIN)
+    cmake = os.environ["CMAKE_COMMAND"]
+    for command in ([cmake, "-S", source, "-B", build, "-DCMAKE_PREFIX_PATH=%s" % prefix, "-DCMAKE_BUILD_TYPE=Release"],
+                    [cmake, "--build", build]):
+        r = subprocess.run(command, capture_output=True, text=True)
+        assert r.returncode == 0, r.stdout[-3000:] + r.stderr[-3000:]
+    scene = prefix / "share" / "collide" / "data" / "scenes" / "head_on_equal.toml"
+    ours = subprocess.run([str(build / "final_energy"), str(scene)], capture_output=True, text=True)
+    assert ours.returncode == 0, ours.stderr
+    run = installed(prefix, "run", scene, "--backend", "event")
+    line = next(l for l in run.stdout.splitlines() if l.startswith("energy"))
+    # "energy    kinetic K0 -> K1 (relative change ...)", K1 printed with 15 digits
+    assert line.split("-> ")[1].split(" ")[0] == "%.15g" % float(ours.stdout), (line, ours.stdout)
