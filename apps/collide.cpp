@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
     collide::cli::add_view_command(app);
     collide::cli::add_render_command(app);
     collide::cli::add_explain_command(app);
+    collide::cli::add_export_command(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -48,6 +48,7 @@ std::map<std::string, std::string> run_provenance(const Scene& scene, const std:
     attributes["scene_name"] = scene.name;
     attributes["scene_path"] = scene.source_path;
     attributes["scene_text"] = scene.source_text;
+    attributes["scene_overrides"] = scene.overrides;
     attributes["seed"] = std::to_string(scene.seed);
     attributes["dt"] = round_trip_text(scene.run.dt);
     attributes["substeps"] = std::to_string(scene.run.substeps);

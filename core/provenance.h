@@ -17,7 +17,8 @@ std::map<std::string, std::string> build_provenance();
 
 // The root attributes of a run's output file (docs/output-format.md): build_provenance(), the
 // backend's own provenance (prefixed "backend_"), the backend name, the scene's name, path, full
-// text, seed, time step and sub-steps, and the command line.
+// text (after its --set overrides, listed in scene_overrides), seed, time step and sub-steps, and
+// the command line.
 std::map<std::string, std::string> run_provenance(const Scene& scene, const std::string& backend,
                                                   const Solver& solver);
 

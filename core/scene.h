@@ -89,6 +89,7 @@ struct Scene {
     std::string description;   // one line, shown by `collide scenes`
     std::string source_path;   // the file it was read from ("" if built in code)
     std::string source_text;   // the full file text, stored in every output for provenance
+    std::string overrides;     // `--set` changes made to the file ("run.dt=0.001; ..."), else ""
     std::uint64_t seed = 1;
 
     World world;

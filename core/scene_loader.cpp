@@ -321,6 +321,8 @@ Scene read_scene(const toml::table& root_table, const std::string& file) {
 
 }  // namespace
 
+Scene read_scene_table(const toml::table& root, const std::string& file) { return read_scene(root, file); }
+
 Scene parse_scene(const std::string& text, const std::string& source_name) {
     check_toml_nesting(text, source_name);  // before toml++ recurses into a hostile file
     toml::table table;

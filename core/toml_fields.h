@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <initializer_list>
 #include <optional>
 #include <string>
@@ -13,6 +14,8 @@
 #include <vector>
 
 #include <toml++/toml.h>
+
+#include "scene.h"
 
 namespace collide {
 
@@ -78,5 +81,21 @@ std::string shortened(std::string_view text);
 constexpr int max_key_parts = 8;
 constexpr int max_brackets = 8;
 void check_toml_nesting(std::string_view text, const std::string& file);
+
+// The scene a parsed scene file's table describes, with every check parse_scene makes (for a
+// table changed after parsing: core/scene_overrides.h). Nodes keep the lines they were read
+// from, so messages point into the file; a node added later has no line.
+Scene read_scene_table(const toml::table& root, const std::string& file);
+
+// Follows a dotted path ("particles.0.disks.1.mass": tables by key, arrays by index) from
+// `root` to the node it names; `fail(why)` (which must throw) is called where the path leads
+// nowhere. With `add_tables`, a missing key on the way becomes an empty table.
+using TomlPathFail = std::function<void(const std::string&)>;
+toml::node* find_toml_path(toml::table& root, const std::string& path, const TomlPathFail& fail,
+                           bool add_tables = false);
+
+// `original` with its table changed to `root`: read again with every scene rule (messages name
+// original's file), the changed TOML as source_text, original's name and source_path.
+Scene scene_from_changed_table(const toml::table& root, const Scene& original);
 
 }  // namespace collide

@@ -12,12 +12,16 @@
 #include <pybind11/stl.h>
 
 #include "apps/progress_line.h"
+#include "core/output_file.h"
 #include "core/provenance.h"
+#include "core/run_export.h"
 #include "core/run_driver.h"
 #include "core/scene_loader.h"
+#include "core/scene_overrides.h"
 #include "core/state_hash.h"
 #include "scene_from_dict.h"
 #include "simulation.h"
+#include "validation/case_result.h"
 #include "validation/suite_runner.h"
 
 namespace py = pybind11;
@@ -98,6 +102,7 @@ py::dict run(const Scene& given, const std::string& backend_name, const std::str
 
 // Runs the suite as `collide validate` does (progress on stderr); the caller reads summary.json.
 py::dict validate(const std::string& suite_path, const std::string& out, int jobs, bool resume) {
+    if (jobs <= 0) jobs = validation::default_jobs();
     const validation::Suite suite = validation::load_suite(suite_path);
     validation::RunnerOptions options;
     options.output_dir = out;
@@ -116,6 +121,7 @@ py::dict validate(const std::string& suite_path, const std::string& out, int job
     d["cases_run"] = outcome.cases_run;
     d["cases_resumed"] = outcome.cases_resumed;
     d["wall_seconds"] = outcome.wall_seconds;
+    d["jobs"] = outcome.jobs;
     d["passed"] = outcome.count(validation::CheckStatus::pass);
     d["failed"] = outcome.count(validation::CheckStatus::fail);
     d["left_out"] = outcome.count(validation::CheckStatus::left_out);
@@ -140,6 +146,52 @@ void raise_located(const py::object& type, const std::string& message) {
         error.attr("detail") = part[2].str();
     }
     PyErr_SetObject(type.ptr(), error.ptr());
+}
+
+// A Python value as TOML value text, for Scene.with_overrides: what `--set PATH=VALUE` would
+// carry after the '='. A str is always a string (never parsed as TOML).
+std::string toml_value(const py::handle& v) {
+    if (py::isinstance<py::bool_>(v)) return v.cast<bool>() ? "true" : "false";
+    if (py::isinstance<py::int_>(v)) return py::str(v).cast<std::string>();
+    if (py::isinstance<py::float_>(v)) return py::repr(py::float_(py::reinterpret_borrow<py::object>(v))).cast<std::string>();
+    if (py::isinstance<py::str>(v)) {
+        std::string quoted = "\"";
+        for (char c : v.cast<std::string>()) quoted += c == '"' || c == '\\' ? std::string("\\") + c : std::string(1, c);
+        return quoted + "\"";
+    }
+    std::string text;
+    if (py::isinstance<py::dict>(v)) {
+        for (const auto& [key, value] : v.cast<py::dict>())
+            text += (text.empty() ? "" : ", ") + py::str(key).cast<std::string>() + " = " + toml_value(value);
+        return "{ " + text + " }";
+    }
+    if (py::isinstance<py::list>(v) || py::isinstance<py::tuple>(v)) {
+        for (const auto& item : v) text += (text.empty() ? "" : ", ") + toml_value(item);
+        return "[" + text + "]";
+    }
+    throw py::type_error("with_overrides: " + py::repr(v).cast<std::string>() +
+                         " is no TOML value (expected bool, int, float, str, list or dict)");
+}
+
+Scene with_overrides(const Scene& scene, const py::dict& changes) {
+    std::vector<SceneOverride> overrides;
+    for (const auto& [path, value] : changes) overrides.push_back({py::str(path).cast<std::string>(), toml_value(value)});
+    return scene_with_overrides(scene, overrides);
+}
+
+// XDMF and XYZ, written as `collide export` writes them; GSD is written in Python.
+void export_run(const std::string& run, const std::string& out, const std::string& format) {
+    const ExportFormat f = export_format(format, out);
+    if (f == ExportFormat::gsd) throw std::invalid_argument("_export: gsd is written by collide.gsd_export");
+    write_file_atomically(out, f == ExportFormat::xdmf ? xdmf_text(run, out) : xyz_text(run));
+}
+
+// What `collide export` checks before it writes: the output path (core/output_file.h) and the
+// run file, every frame read through the checked reader (core/run_reader.h). Python's GSD
+// writer calls it first, as the program does.
+void check_export(const std::string& run, const std::string& out) {
+    check_output_path(out);
+    require_frames(run);
 }
 
 py::list backends() {
@@ -201,6 +253,10 @@ PYBIND11_MODULE(_collide, m) {
         .def_readonly("seed", &Scene::seed)
         .def_readonly("source_path", &Scene::source_path)
         .def_readonly("source_text", &Scene::source_text, "The scene's TOML text (for a dict: the text made from it)")
+        .def_readonly("overrides", &Scene::overrides, "The with_overrides changes made to the file, \"PATH=VALUE; ...\"")
+        .def("with_overrides", &with_overrides, py::arg("changes"),
+             "This scene with keys of its file changed, as `collide run --set` does: {\"run.dt\": 2.5e-4, "
+             "\"world.boundary\": \"periodic\"}; bad paths and values raise SceneError")
         .def_property_readonly("box", [](const Scene& s) {
             return py::make_tuple(s.world.xmin, s.world.ymin, s.world.xmax, s.world.ymax);
         })
@@ -241,9 +297,11 @@ PYBIND11_MODULE(_collide, m) {
         });
 
     m.def("_run", &run, py::arg("scene"), py::arg("backend"), py::arg("out"), py::arg("frames"), py::arg("progress"));
+    m.def("_export", &export_run, py::arg("run"), py::arg("out"), py::arg("format"));
     m.def("_validate", &validate, py::arg("suite"), py::arg("out"), py::arg("jobs"), py::arg("resume"));
     m.def("toml_from_dict", &toml_text_from_dict, py::arg("d"),
           "The TOML text Scene.from_dict reads (the lines its error messages name)");
+    m.def("_check_export", &check_export, py::arg("run"), py::arg("out"));
     m.def("backends", &backends, "The backends compiled into this build: name, precision, description");
     m.def("build_provenance", &build_provenance, "Commit, compiler, flags and library versions of this build");
 }

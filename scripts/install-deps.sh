@@ -14,6 +14,7 @@ packages=(
   chromium chromium-driver python3-selenium
   libopenmpi-dev openmpi-bin
   libsdl2-dev libpng-dev libgif-dev python3-pil
+  python3-gsd python3-meshio python3-ase
 )
 
 missing=()

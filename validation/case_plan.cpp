@@ -1,22 +1,18 @@
 #include "case_plan.h"
 
 #include <algorithm>
-#include <charconv>
 #include <map>
 
 #include "backend_variant.h"
+#include "core/number_text.h"
 
 namespace collide::validation {
 namespace {
 
-// The shortest text that reads back as the same double (std::to_chars without a precision:
-// round-trip by the C++17 standard). "%g" kept six digits, so dt = 0.0010000001 and 0.001
-// shared an id and one case's record overwrote the other's.
-std::string format_number(double v) {
-    char buf[64];
-    const auto [end, error] = std::to_chars(buf, buf + sizeof buf, v);
-    return error == std::errc() ? std::string(buf, end) : std::string("?");
-}
+// dt and `set` values in ids: the shortest text that reads back as the same double
+// (core/number_text.h). "%g" kept six digits, so dt = 0.0010000001 and 0.001 shared an id and
+// one case's record overwrote the other's.
+std::string format_number(double v) { return round_trip_text(v); }
 
 std::string make_id(const CaseSpec& c) {
     std::string id = c.scene + "__" + backend_id_token(c.backend);

@@ -5,13 +5,37 @@
 #include <stdexcept>
 
 #include "case_execution.h"
+#include "core/scene_loader.h"
 #include "scene_parameters.h"
 #include "suite.h"
 
 namespace collide::validation {
 
+namespace {
+
+// The case's scene: the suite's sweep parameters and settings, then the overrides, whose run
+// settings and seed win over the suite's (a user who says --set run.dt=1e-4 means it).
+Scene scene_of_case(const Scene& base, const SuiteScene& entry, const CaseSpec& spec,
+                    const std::vector<SceneOverride>& overrides) {
+    const Scene changed = scene_with_overrides(scene_with_parameters(base, spec.parameters), overrides);
+    Scene out = case_scene(changed, entry, spec);
+    for (const SceneOverride& o : overrides) {
+        if (o.path == "seed") out.seed = changed.seed;
+        if (o.path == "run.dt") out.run.dt = changed.run.dt;
+        if (o.path == "run.substeps") out.run.substeps = changed.run.substeps;
+        if (o.path == "run.duration") out.run.duration = changed.run.duration;
+        if (o.path == "run.output_interval") out.run.output_interval = changed.run.output_interval;
+    }
+    const std::string problem = run_settings_problem(out.run);
+    if (!problem.empty())
+        throw SceneError("case " + spec.id + " with --set " + overrides_text(overrides) + ": [run]." + problem);
+    return out;
+}
+
+}  // namespace
+
 ReplayedCase replay_case(const std::string& suite_path, const std::string& case_id,
-                         const std::vector<BackendInfo>& available) {
+                         const std::vector<BackendInfo>& available, const std::vector<SceneOverride>& overrides) {
     const Suite suite = load_suite(suite_path);
     const std::vector<Scene> scenes = load_suite_scenes(suite);
     const std::vector<BackendInfo> backends = select_backends(suite, available);
@@ -29,8 +53,8 @@ ReplayedCase replay_case(const std::string& suite_path, const std::string& case_
     const auto backend = std::find_if(backends.begin(), backends.end(),
                                       [&](const BackendInfo& b) { return b.name == spec->backend; });
     const SuiteScene& entry = suite.scenes[spec->scene_index];
-    ReplayedCase out{*spec, case_scene(scene_with_parameters(scenes[spec->scene_index], spec->parameters), entry, *spec),
-                     {}, *backend, case_backend_options(*spec)};
+    ReplayedCase out{*spec, scene_of_case(scenes[spec->scene_index], entry, *spec, overrides), {}, *backend,
+                     case_backend_options(*spec)};
     out.initial = case_initial_state(out.scene, entry, spec->seed);
     return out;
 }

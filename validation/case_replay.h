@@ -14,6 +14,7 @@
 #include "core/backend_registry.h"
 #include "core/particle_state.h"
 #include "core/scene.h"
+#include "core/scene_overrides.h"
 
 namespace collide::validation {
 
@@ -27,8 +28,11 @@ struct ReplayedCase {
 
 // Throws std::runtime_error naming the suite file and the case id when the suite does not plan
 // that case (another suite, an edited suite, a backend this build lacks) or left it out.
+// `overrides` (`collide explain --set`) change the case's scene file as `collide run --set`
+// does; a run setting they name (run.dt, ...) or the seed wins over the suite's own for the case.
+// Such a case is a what-if: it no longer retraces the recorded run.
 ReplayedCase replay_case(const std::string& suite_path, const std::string& case_id,
-                         const std::vector<BackendInfo>& available);
+                         const std::vector<BackendInfo>& available, const std::vector<SceneOverride>& overrides = {});
 
 // Throws std::runtime_error, naming what differs, unless the rebuilt case ran with the run
 // settings, disk count and initial state (bit for bit) that the case's record holds: a suite or

@@ -231,7 +231,8 @@ std::vector<ContactGroup> attribute_change(const Scene& scene, const ParticleSta
     return groups;
 }
 
-EnergyJump largest_energy_change(Solver& solver, const Scene& scene, double t_end) {
+EnergyJump largest_energy_change(Solver& solver, const Scene& scene, double t_end,
+                                 const std::function<void(double, double)>& on_step) {
     const double dt = scene.run.dt;
     std::int64_t k = std::int64_t(std::llround(solver.time() / dt));
     const std::int64_t last = std::int64_t(std::floor(t_end / dt + 1e-9));
@@ -247,6 +248,7 @@ EnergyJump largest_energy_change(Solver& solver, const Scene& scene, double t_en
     solver.read_state(before);
     for (; k < last; ++k) {
         solver.advance_to(double(k + 1) * dt);
+        if (on_step) on_step(double(k + 1) * dt, t_end);
         solver.read_state(after);
         const double change = total_energy(scene, after) - total_energy(scene, before);
         const bool nonfinite = !std::isfinite(change);

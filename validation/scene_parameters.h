@@ -1,7 +1,8 @@
 // Scene-parameter sweeps: a suite's `set = { "particles.0.disks.1.mass" = [1, 1e9] }` changes
-// one key of the scene file per sweep point. The change is made in the parsed TOML table, which
-// is written back to text and read again by parse_scene, so every rule a scene file must obey
-// (positive masses, disks inside the box, no overlaps) holds for every swept value too.
+// one key of the scene file per sweep point. The path is followed, and the changed table read
+// again, by the same code as `collide run --set` (core/scene_overrides.h), so every rule a scene
+// file must obey (positive masses, disks inside the box, no overlaps) holds for every swept value
+// too. Unlike --set, a sweep changes only a number that the scene file already holds.
 #pragma once
 
 #include <string>

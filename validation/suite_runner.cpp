@@ -8,10 +8,12 @@
 #include <cstdio>
 #include <cstring>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <thread>
 #include <sstream>
 
 #include "backend_variant.h"
@@ -183,6 +185,8 @@ void check_output_places(const std::string& dir, const std::vector<CaseSpec>& sp
 
 }  // namespace
 
+int default_jobs() { return std::max(1u, std::thread::hardware_concurrency()); }
+
 SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& available, const RunnerOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     const std::vector<BackendInfo> backends = select_backends(suite, available);
@@ -216,7 +220,8 @@ SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& avail
 
     std::map<std::string, const BackendInfo*> by_name;
     for (const BackendInfo& b : backends) by_name[b.name] = &b;
-    IsolationOptions isolation{options.jobs, suite.time_limit_seconds, result_dir, runs_dir};
+    outcome.jobs = options.jobs > 0 ? options.jobs : default_jobs();
+    IsolationOptions isolation{outcome.jobs, suite.time_limit_seconds, result_dir, runs_dir};
     auto run_case = [&](const CaseSpec& spec) {
         CaseContext context{&suite, &case_scenes.scene(spec), by_name.at(spec.backend), options.output_dir};
         return execute_case(spec, context);
@@ -234,6 +239,10 @@ SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& avail
         options.dispatch->run(work);
         if (!options.dispatch->is_root()) return outcome;
     } else {  // --- end of the MPI hook
+        // Said before the first case finishes, so a user sees at once how the machine is used.
+        if (options.progress && !to_run.empty())
+            std::fprintf(options.progress, "running %zu cases, %d at a time (--jobs %d)\n", to_run.size(),
+                         int(std::min<std::size_t>(std::size_t(outcome.jobs), to_run.size())), outcome.jobs);
         run_isolated(to_run, isolation, run_case, [&](const CaseResult& r) {
             ++done;
             if (r.status != RunStatus::completed && r.status != RunStatus::left_out) ++failed;
@@ -242,7 +251,7 @@ SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& avail
         });
     }
     if (progress) progress->finish();
-    outcome.execution = options.dispatch ? options.dispatch->execution() : serial_execution(options.jobs);
+    outcome.execution = options.dispatch ? options.dispatch->execution() : serial_execution(outcome.jobs);
     outcome.cases_run = to_run.size();
 
     // Judge every case in plan order, then the comparisons with the reference.

@@ -27,7 +27,7 @@ namespace collide::validation {
 
 struct RunnerOptions {
     std::string output_dir = "results";
-    int jobs = 1;
+    int jobs = 1;                   // cases at the same time; 0: one per core (default_jobs())
     bool resume = false;            // keep every case that already has a result file
     std::FILE* progress = nullptr;  // progress lines go here (nullptr: none)
     bool progress_is_terminal = false;
@@ -41,12 +41,16 @@ struct SuiteOutcome {
     std::vector<WorkPrecisionLine> work_precision;
     PhysicsComparison physics;                     // "Reference against physics" (physics_rows.h)
     std::size_t cases_run = 0, cases_resumed = 0;
+    int jobs = 1;  // the cases run at the same time in this process (options.jobs resolved)
     double wall_seconds = 0;
     std::map<std::string, std::string> execution;  // ranks, hosts, jobs per rank (summary provenance)
     std::size_t count(CheckStatus s) const;
     std::size_t physics_failures() const;
     bool passed() const { return count(CheckStatus::fail) == 0 && physics_failures() == 0; }
 };
+
+// One case per core: std::thread::hardware_concurrency(), or 1 where it cannot tell.
+int default_jobs();
 
 // `backends` are the backends the suite may use (all_backends() in the program, test doubles
 // in tests). Throws SuiteError / SceneError for bad input before any case runs.

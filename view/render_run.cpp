@@ -116,11 +116,17 @@ void render_run(const RenderOptions& o) {
     if (format == "png") {
         Image strip{o.width * int(frames.size()), o.height, {}};
         strip.rgba.resize(std::size_t(strip.width) * std::size_t(strip.height) * 4);
-        for (std::size_t j = 0; j < frames.size(); ++j) paste(strip, painter.paint(frames[j]), int(j) * o.width);
+        for (std::size_t j = 0; j < frames.size(); ++j) {
+            paste(strip, painter.paint(frames[j]), int(j) * o.width);
+            if (o.on_frame) o.on_frame(run.time(frames[j]), run.time(frames.back()));
+        }
         write_png(o.out, strip);
     } else {
         auto writer = format == "gif" ? open_gif(o.out, o.width, o.height, o.fps) : open_mp4(o.out, o.width, o.height, o.fps);
-        for (std::size_t k : frames) writer->add(painter.paint(k));
+        for (std::size_t k : frames) {
+            writer->add(painter.paint(k));
+            if (o.on_frame) o.on_frame(run.time(k), run.time(frames.back()));
+        }
         writer->finish();
     }
     std::printf("wrote %s (%zu frames of %dx%d, t = %g .. %g)\n", o.out.c_str(), frames.size(), o.width, o.height,

@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 
 #include "core/backend_registry.h"
+#include "core/scene_overrides.h"
 
 namespace collide::cli {
 
@@ -17,9 +18,16 @@ void add_devices_command(CLI::App& app);   // list OpenCL platforms and devices
 void add_view_command(CLI::App& app);      // watch a scene run (SDL2 window or headless)
 void add_render_command(CLI::App& app);    // run file with frames -> GIF, MP4 or PNG strip
 void add_explain_command(CLI::App& app);   // the step of a validated case that changed the energy most
+void add_export_command(CLI::App& app);    // run file with frames -> XDMF, GSD or extended XYZ
 
 // Throws "backend 'NAME' cannot run scene 'SCENE': REASON" when the backend does not support
 // the scene; every command that runs a scene says it in these words (run_command.cpp).
 void require_support(const BackendInfo& backend, const Scene& scene);
+
+// `--set PATH=VALUE` (repeatable) on a command that reads a scene (core/scene_overrides.h);
+// each word is checked as PATH=VALUE when parsed, the paths and values when applied.
+void add_set_option(CLI::App& cmd, std::vector<SceneOverride>& overrides);
+// The scene file with the overrides applied (load_scene alone without any).
+Scene load_scene_with_overrides(const std::string& path, const std::vector<SceneOverride>& overrides);
 
 }  // namespace collide::cli

@@ -4,6 +4,7 @@
 // one dt at a time and names the step in which the energy changed most, the disks it changed and
 // the kind of contact behind it (validation/energy_jump.h). The report calls it for every energy
 // jump it shows (docs/reading-a-report.md).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -11,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "apps/progress_line.h"
 #include "commands.h"
 #include "validation/case_replay.h"
 #include "validation/case_result.h"
@@ -23,6 +25,7 @@ struct ExplainArgs {
     std::string dir, case_id, suite;
     double from = 0, to = -1;
     bool json = false;
+    std::vector<SceneOverride> overrides;
 };
 
 // The suite file the results came from, as summary.json records it (or --suite).
@@ -52,7 +55,8 @@ nlohmann::json to_json(const validation::ReplayedCase& c, const validation::Ener
         groups.push_back({{"kind", g.kind}, {"energy_change", g.energy_change}, {"disks", disks},
                           {"pairs", pairs}, {"walls", walls}, {"stones", stones}});
     }
-    return {{"case", c.spec.id}, {"backend", c.spec.backend}, {"dt", c.scene.run.dt}, {"step", jump.step},
+    return {{"case", c.spec.id}, {"backend", c.spec.backend}, {"dt", c.scene.run.dt}, {"set", c.scene.overrides},
+            {"step", jump.step},
             {"time_before", jump.time_before}, {"time_after", jump.time_after},
             {"kinetic_before", jump.kinetic_before}, {"energy_change", jump.energy_change},
             {"nonfinite", jump.nonfinite}, {"groups", groups}, {"description", validation::describe(jump)}};
@@ -60,6 +64,8 @@ nlohmann::json to_json(const validation::ReplayedCase& c, const validation::Ener
 
 void print_text(const validation::ReplayedCase& c, const validation::EnergyJump& jump) {
     std::printf("case      %s (%s, dt = %g)\n", c.spec.id.c_str(), c.spec.backend.c_str(), c.scene.run.dt);
+    if (!c.scene.overrides.empty())
+        std::printf("set       %s (a what-if rerun, not the recorded run)\n", c.scene.overrides.c_str());
     std::printf("step      %lld: t = %.6g -> %.6g\n", static_cast<long long>(jump.step), jump.time_before, jump.time_after);
     std::printf("change    energy %+.6g (kinetic energy before the step %.6g)\n", jump.energy_change,
                 jump.kinetic_before);
@@ -97,12 +103,15 @@ void require_same_path(Solver& solver, const validation::ReplayedCase& c, const 
 }
 
 void execute(const ExplainArgs& args) {
-    const validation::ReplayedCase c = validation::replay_case(suite_of(args), args.case_id, all_backends());
+    const validation::ReplayedCase c =
+        validation::replay_case(suite_of(args), args.case_id, all_backends(), args.overrides);
     if (c.backend.name == "event" || c.backend.name == "event-plain")  // exact: from collision to collision
         throw std::runtime_error("case " + c.spec.id + " ran on '" + c.backend.name +
                                  "', which has no time steps to look inside");
     const validation::CaseResult record = validation::read_case_result(args.dir + "/cases/" + c.spec.id + ".toml");
-    validation::require_same_start(c, record);
+    // With --set the case is a what-if: it starts and runs otherwise than the record.
+    const bool what_if = !args.overrides.empty();
+    if (!what_if) validation::require_same_start(c, record);
     const double dt = c.scene.run.dt, end = args.to < 0 ? c.scene.run.duration : args.to;
     if (!(args.from >= 0) || !(end <= c.scene.run.duration + 0.5 * dt) || !(end > args.from))
         throw std::runtime_error("--from " + std::to_string(args.from) + " --to " + std::to_string(end) +
@@ -110,9 +119,19 @@ void execute(const ExplainArgs& args) {
     auto solver = c.backend.create(c.options);
     solver->load(c.scene, c.initial);
     const double start = std::floor(args.from / dt + 1e-9) * dt;
-    require_same_path(*solver, c, record, start);
-    if (start > solver->time()) solver->advance_to(start);
-    const validation::EnergyJump jump = validation::largest_energy_change(*solver, c.scene, end);
+    if (!what_if) require_same_path(*solver, c, record, start);
+    // A long case takes a while to reach --from and to search: a progress line with the time
+    // left on a terminal, a plain line every 10 s in a log (apps/progress_line.h).
+    ProgressLine progress;
+    const double interval = c.scene.run.output_interval;
+    for (double t = solver->time(); t < start;) {
+        t = std::min(start, (std::floor(t / interval + 1e-9) + 1) * interval);
+        solver->advance_to(t);
+        progress.update(t, end);
+    }
+    const validation::EnergyJump jump = validation::largest_energy_change(
+        *solver, c.scene, end, [&progress](double t, double t_end) { progress.update(t, t_end); });
+    progress.finish();
     if (args.json)
         std::printf("%s\n", to_json(c, jump).dump(2).c_str());
     else
@@ -132,6 +151,7 @@ void add_explain_command(CLI::App& app) {
     cmd->add_option("--to", args->to, "... and up to this time (default: the case's duration)");
     cmd->add_option("--suite", args->suite, "Suite file (default: the one summary.json records)");
     cmd->add_flag("--json", args->json, "Print JSON instead of text");
+    add_set_option(*cmd, args->overrides);
     cmd->callback([args] { execute(*args); });
 }
 

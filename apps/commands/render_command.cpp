@@ -4,6 +4,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "apps/progress_line.h"
 #include "commands.h"
 #include "view/render_run.h"
 
@@ -35,6 +36,9 @@ void add_render_command(CLI::App& app) {
         if (args->render.frames < 0) throw std::runtime_error("--frames must be positive");
         args->render.width = w;
         args->render.height = h;
+        // A long animation: the time left on a terminal, a line every 10 s in a log.
+        ProgressLine progress;
+        args->render.on_frame = [&progress](double t, double last) { progress.update(t, last); };
         view::render_run(args->render);
     });
 }

@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "apps/resource_path.h"
 #include "commands.h"
 #include "core/output_file.h"
 #include "validation/case_result.h"
@@ -96,7 +97,7 @@ void execute(const std::string& dir) {
         throw std::runtime_error(dir + "/summary.json: not found; expected the output directory of `collide validate`");
     check_report_outputs(dir + "/report");  // first: refused at once, before reading every run file
     check_case_files(dir);
-    const std::string script = std::string(COLLIDE_REPORT_DIR) + "/make_report.py";
+    const std::string script = resource_path("validation/report") + "/make_report.py";
     // fork + exec (not system()): no shell, so directory names need no quoting.
     const pid_t pid = ::fork();
     if (pid < 0) throw std::runtime_error("fork failed");

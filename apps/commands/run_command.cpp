@@ -71,6 +71,7 @@ struct RunArgs {
     std::string out;
     bool frames = false;
     BackendOptions options;
+    std::vector<SceneOverride> overrides;
 };
 
 double relative_change(double initial, double final_value) {
@@ -83,6 +84,7 @@ void print_summary(const Scene& scene, const std::string& backend, const RunResu
     const Metrics& b = r.series.back();
     std::printf("scene     %s (%zu disks, seed %llu)\n", scene.name.c_str(), r.final_state.size(),
                 static_cast<unsigned long long>(scene.seed));
+    if (!scene.overrides.empty()) std::printf("set       %s\n", scene.overrides.c_str());
     std::printf("backend   %s, %lld steps, %lld contacts, %.3f s wall time\n", backend.c_str(),
                 static_cast<long long>(r.stats.steps), static_cast<long long>(r.stats.contacts),
                 r.wall_seconds);
@@ -106,7 +108,7 @@ void print_summary(const Scene& scene, const std::string& backend, const RunResu
 // A failure at any point leaves no output file and an existing one untouched (RunWriter).
 void execute(const RunArgs& args) {
     const BackendInfo& backend = find_backend(args.backend);
-    const Scene scene = load_scene(args.scene_path);
+    const Scene scene = load_scene_with_overrides(args.scene_path, args.overrides);
     require_support(backend, scene);
     const ParticleState<double> initial = generate_initial_state(scene);
     auto solver = backend.create(args.options);
@@ -154,6 +156,7 @@ void add_run_command(CLI::App& app) {
     cmd->add_option("--real", args->options.real, "Precision for backends that offer both")
         ->check(CLI::IsMember({"float", "double"}));
     cmd->add_option("--cl-device", args->options.device, "OpenCL device (index or name substring)");
+    add_set_option(*cmd, args->overrides);
     cmd->callback([args] { execute(*args); });
 }
 

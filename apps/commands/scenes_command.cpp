@@ -3,15 +3,16 @@
 #include <filesystem>
 #include <vector>
 
+#include "apps/resource_path.h"
 #include "commands.h"
 #include "core/scene_loader.h"
 
 namespace collide::cli {
 
-// Lists every scene file below a directory (default: the source tree's data/scenes).
+// Lists every scene file below a directory (default: the scene library, apps/resource_path.h).
 void add_scenes_command(CLI::App& app) {
     auto* cmd = app.add_subcommand("scenes", "List the scene library with a one-line description");
-    static std::string dir = COLLIDE_SCENE_DIR;
+    static std::string dir = resource_path("data/scenes");
     cmd->add_option("--dir", dir, "Scene directory")->capture_default_str();
     cmd->callback([] {
         namespace fs = std::filesystem;

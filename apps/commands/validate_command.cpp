@@ -1,5 +1,6 @@
 // `collide validate SUITE [--out DIR] [--jobs N] [--resume] [--gather-hdf5]`: runs a validation
-// suite (validation/suites/*.toml) on every backend it names and writes DIR/summary.json,
+// suite (validation/suites/*.toml), one case per core unless --jobs says otherwise, on every
+// backend it names and writes DIR/summary.json,
 // DIR/junit.xml and one HDF5 file per case. Exit status 1 when any check fails. Under mpirun
 // or srun the cases are shared across the ranks (docs/scaling.md).
 #include <unistd.h>
@@ -17,7 +18,7 @@ namespace {
 struct ValidateArgs {
     std::string suite_path;
     std::string out = "results";
-    int jobs = 1;
+    int jobs = 0;  // 0: not given; one case per core (MPI: one per rank)
     bool resume = false;
     bool gather_hdf5 = false;
 };
@@ -35,21 +36,23 @@ const CLI::Validator at_least_one_job(
 void execute(const ValidateArgs& args) {
     // --- MPI hook (docs/scaling.md): under mpirun or srun the ranks share the cases out and
     // rank 0 alone reports; a plain run gets no dispatch and never initialises MPI.
-    const auto dispatch = validation::start_case_dispatch(args.jobs, args.gather_hdf5);
+    // Under MPI the ranks are the parallelism, so a rank runs one case at a time unless told.
+    const auto dispatch = validation::start_case_dispatch(args.jobs > 0 ? args.jobs : 1, args.gather_hdf5);
     const bool reports = !dispatch || dispatch->is_root();
     // --- end of the MPI hook
     const validation::Suite suite = validation::load_suite(args.suite_path);
     validation::RunnerOptions options;
     options.output_dir = args.out;
-    options.jobs = args.jobs;
+    options.jobs = args.jobs > 0 ? args.jobs : dispatch ? 1 : validation::default_jobs();
     options.resume = args.resume;
     options.progress = reports ? stderr : nullptr;
     options.progress_is_terminal = ::isatty(STDERR_FILENO) != 0;
     options.dispatch = dispatch.get();
     const auto outcome = validation::run_suite(suite, all_backends(), options);
     if (!reports) return;
-    std::printf("suite     %s: %zu cases (%zu run, %zu resumed) in %.1f s\n", suite.name.c_str(),
-                outcome.cases.size(), outcome.cases_run, outcome.cases_resumed, outcome.wall_seconds);
+    std::printf("suite     %s: %zu cases (%zu run, %zu resumed) in %.1f s, %d at a time%s\n", suite.name.c_str(),
+                outcome.cases.size(), outcome.cases_run, outcome.cases_resumed, outcome.wall_seconds, outcome.jobs,
+                dispatch ? " per rank" : "");
     std::printf("checks    %zu passed, %zu failed, %zu left out\n", outcome.count(validation::CheckStatus::pass),
                 outcome.count(validation::CheckStatus::fail), outcome.count(validation::CheckStatus::left_out));
     for (const auto& c : outcome.checks)
@@ -76,8 +79,9 @@ void add_validate_command(CLI::App& app) {
     auto* cmd = app.add_subcommand("validate", "Run a validation suite; write summary.json, junit.xml and HDF5 per case");
     cmd->add_option("suite", args->suite_path, "Suite file (validation/suites/*.toml)")->required()->check(CLI::ExistingFile);
     cmd->add_option("-o,--out", args->out, "Output directory")->capture_default_str();
-    cmd->add_option("-j,--jobs", args->jobs, "Cases run at the same time (each in its own process)")
-        ->check(at_least_one_job)->capture_default_str();
+    cmd->add_option("-j,--jobs", args->jobs,
+                    "Cases run at the same time, each in its own process (default: one per core; under MPI one per rank)")
+        ->check(at_least_one_job);
     cmd->add_flag("--resume", args->resume, "Keep the cases that already have a result in the output directory");
     cmd->add_flag("--gather-hdf5", args->gather_hdf5,
                   "Under MPI: copy every rank's per-case HDF5 files into rank 0's output directory");

@@ -19,6 +19,7 @@ struct ViewArgs {
     std::string size = "1280x720";
     BackendOptions options;
     view::ViewOptions view;
+    std::vector<SceneOverride> overrides;
 };
 
 // "WIDTHxHEIGHT" -> pixels; shared by view and render.
@@ -41,7 +42,7 @@ void execute(ViewArgs& args) {
     if (!args.view.screenshot.empty()) check_output_path(args.view.screenshot);
     const BackendInfo& backend = find_backend(args.backend);
     const BackendInfo* compare = args.compare.empty() ? nullptr : &find_backend(args.compare);
-    const Scene scene = load_scene(args.scene_path);
+    const Scene scene = load_scene_with_overrides(args.scene_path, args.overrides);
     require_support(backend, scene);
     if (compare) require_support(*compare, scene);
     const ParticleState<double> initial = generate_initial_state(scene);
@@ -65,6 +66,7 @@ void add_view_command(CLI::App& app) {
     cmd->add_option("--real", args->options.real, "Precision for backends that offer both")
         ->check(CLI::IsMember({"float", "double"}));
     cmd->add_option("--cl-device", args->options.device, "OpenCL device (index or name substring)");
+    add_set_option(*cmd, args->overrides);
     cmd->callback([args] { execute(*args); });
 }
 

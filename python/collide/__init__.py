@@ -11,6 +11,10 @@ describes the API; the short version:
 
     result = collide.run(scene, "step", out="run.h5")   # metric series as NumPy arrays
     summary = collide.validate("validation/suites/default.toml", "results")
+
+    faster = scene.with_overrides({"run.dt": 2.5e-4})      # as `collide run --set run.dt=2.5e-4`
+    collide.run(scene, "step", out="run.h5", frames=True)
+    collide.export("run.h5", "run.xdmf")                  # ParaView; also .gsd (OVITO), .xyz (ASE)
 """
 
 import json
@@ -30,7 +34,7 @@ from . import _collide
 
 __version__ = build_provenance().get("collide_version", "")
 
-__all__ = ["Scene", "SceneError", "Simulation", "SuiteError", "RunResult", "run", "validate",
+__all__ = ["Scene", "SceneError", "Simulation", "SuiteError", "RunResult", "run", "validate", "export",
            "backends", "build_provenance", "toml_from_dict"]
 
 
@@ -76,13 +80,15 @@ def run(scene, backend="event", out=None, frames=False, progress=True, **options
     return result
 
 
-def validate(suite, out="results", jobs=1, resume=False):
+def validate(suite, out="results", jobs=None, resume=False):
     """Runs a validation suite as `collide validate SUITE --out OUT` does (progress on stderr,
-    the same summary on stdout) and returns summary.json as a dict. Failed checks do not raise:
-    look at summary["checks"] (or the counts printed)."""
-    counts = _collide._validate(os.fspath(suite), os.fspath(out), int(jobs), bool(resume))
-    print("suite     %s: %d cases (%d run, %d resumed) in %.1f s" % (
-        counts["suite"], counts["cases"], counts["cases_run"], counts["cases_resumed"], counts["wall_seconds"]))
+    the same summary on stdout) and returns summary.json as a dict. `jobs`: cases at the same
+    time (default: one per core). Failed checks do not raise: look at summary["checks"] (or the
+    counts printed)."""
+    counts = _collide._validate(os.fspath(suite), os.fspath(out), int(jobs or 0), bool(resume))
+    print("suite     %s: %d cases (%d run, %d resumed) in %.1f s, %d at a time" % (
+        counts["suite"], counts["cases"], counts["cases_run"], counts["cases_resumed"], counts["wall_seconds"],
+        counts["jobs"]))
     print("checks    %d passed, %d failed, %d left out" % (counts["passed"], counts["failed"], counts["left_out"]))
     with open(os.path.join(os.fspath(out), "summary.json"), encoding="utf-8") as f:
         summary = json.load(f)
@@ -92,3 +98,20 @@ def validate(suite, out="results", jobs=1, resume=False):
     print("output    %s/summary.json, %s/junit.xml" % (out, out))
     sys.stdout.flush()
     return summary
+
+
+def export(run, out, format=None):
+    """Writes the frames of a run file (written with frames=True, or `collide run --frames`) as
+    `collide export RUN --out OUT [--format F]` does: "xdmf" (ParaView, VisIt; points into the
+    run file), "gsd" (OVITO, freud, HOOMD; needs the gsd package) or "xyz" (extended XYZ: ASE,
+    OVITO). Without `format`, the extension of `out` says which. docs/exporting.md."""
+    run, out = os.fspath(run), os.fspath(out)
+    if format is None:
+        format = os.path.splitext(out)[1].lstrip(".").replace("xmf", "xdmf")
+    if format == "gsd":
+        from . import gsd_export
+        _collide._check_export(run, out)  # the output path and every frame, as `collide export` does
+        gsd_export.write_gsd(run, out)
+    else:
+        _collide._export(run, out, format or "")
+    return out

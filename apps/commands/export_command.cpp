@@ -1,0 +1,67 @@
+// `collide export RUN.h5 --out FILE [--format xdmf|gsd|xyz]`: a run's frames for ParaView,
+// VisIt, OVITO, ASE or HOOMD (core/run_export.h, docs/exporting.md). XDMF and XYZ are written
+// here; GSD by python/collide/gsd_export.py (the `gsd` package), run as `collide report` runs
+// its renderer.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <memory>
+#include <stdexcept>
+
+#include "apps/resource_path.h"
+#include "commands.h"
+#include "core/output_file.h"
+#include "core/run_export.h"
+#include "validation/case_result.h"
+
+namespace collide::cli {
+namespace {
+
+struct ExportArgs {
+    std::string run, out, format;
+};
+
+// fork + exec (no shell, so no quoting of file names); the script names its own errors.
+void write_gsd(const std::string& run, const std::string& out) {
+    const std::string script = resource_path("python/collide") + "/gsd_export.py";
+    const pid_t pid = ::fork();
+    if (pid < 0) throw std::runtime_error("fork failed");
+    if (pid == 0) {
+        ::execl(COLLIDE_PYTHON, COLLIDE_PYTHON, script.c_str(), run.c_str(), out.c_str(), static_cast<char*>(nullptr));
+        std::perror(COLLIDE_PYTHON);
+        ::_exit(127);
+    }
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+        throw std::runtime_error("no GSD file written (" + std::string(COLLIDE_PYTHON) + " " + script + ", reason above)");
+}
+
+void execute(const ExportArgs& args) {
+    const ExportFormat format = export_format(args.format, args.out);
+    check_output_path(args.out);  // a device, a FIFO, a link to nothing: refused before any work
+    require_frames(args.run);     // every frame read and checked (core/run_reader.h) before writing
+    if (format == ExportFormat::gsd) write_gsd(args.run, args.out);
+    else
+        write_file_atomically(
+            args.out, format == ExportFormat::xdmf ? xdmf_text(args.run, args.out) : xyz_text(args.run));
+    std::printf("output    %s (%s)\n", args.out.c_str(), to_string(format));
+}
+
+}  // namespace
+
+void add_export_command(CLI::App& app) {
+    auto args = std::make_shared<ExportArgs>();
+    auto* cmd = app.add_subcommand(
+        "export", "Write a run's frames for ParaView/VisIt (XDMF), OVITO/freud/HOOMD (GSD) or ASE/OVITO (extended XYZ)");
+    cmd->add_option("run", args->run, "Run file (HDF5, written with `collide run ... --frames`)")
+        ->required()->check(CLI::ExistingFile);
+    cmd->add_option("-o,--out", args->out, "Output file: .xdmf (beside the run file it points into), .gsd or .xyz")
+        ->required();
+    cmd->add_option("-f,--format", args->format, "xdmf, gsd or xyz (default: from the extension of --out)")
+        ->check(CLI::IsMember({"xdmf", "gsd", "xyz"}));
+    cmd->callback([args] { execute(*args); });
+}
+
+}  // namespace collide::cli
