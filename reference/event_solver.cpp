@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/target_time.h"
+#include "event_statistics.h"
 #include "physics/collision_rule.h"
 #include "core/disk_overlap.h"
 #include "core/representability.h"
@@ -681,41 +682,11 @@ double EventSolver::kinetic_energy_now() const {
 }
 
 SolverStats EventSolver::stats() const {
-    SolverStats s;
-    s.contacts = pair_events_;
-    s.steps = pair_events_ + wall_events_ + cell_events_;
-    auto& c = s.counters;
-    c["events_pair"] = double(pair_events_);
-    c["events_wall"] = double(wall_events_);
-    c["events_cell"] = double(cell_events_);
-    c["events_stale"] = double(stale_events_);
-    c["tc_elastic"] = double(tc_elastic_);
-    if (prefetch_) c["events_named_ahead"] = double(named_events_);
-    c["simulated_time"] = now_;
-    const double t = now_, n = double(state_.size()), area = scene_.world.width() * scene_.world.height();
-    if (t > 0 && n > 0) {
-        // Every collision involves two disks: collisions per disk per unit time = 2 C / (N t).
-        c["collision_rate"] = 2 * double(pair_events_) / (n * t);
-        c["collisions_per_time"] = double(pair_events_) / t;
-    }
-    c["virial_sum"] = virial_.value();
-    if (scene_.periodic()) {
-        // Virial theorem for impulsive forces in 2D (docs/event-driven.md):
-        //   P A = <K> + (1 / (2 t)) sum_collisions d.(J n),   <K> = time average of kinetic energy.
-        if (!scene_.has_gravity()) {
-            const double kinetic_integral = kinetic_integral_.value() + kinetic_ * (now_ - kinetic_mark_);
-            c["kinetic_integral"] = kinetic_integral;
-            if (t > 0) c["pressure"] = (kinetic_integral / t + virial_.value() / (2 * t)) / area;
-        }
-    } else {
-        // Mechanical pressure: momentum given to the walls per unit time and unit wall length.
-        static const char* names[4] = {"wall_impulse_xmin", "wall_impulse_xmax", "wall_impulse_ymin", "wall_impulse_ymax"};
-        double total = 0;
-        for (int k = 0; k < 4; ++k) c[names[k]] = wall_impulse_[k].value(), total += wall_impulse_[k].value();
-        c["wall_impulse"] = total;
-        const double perimeter = 2 * (scene_.world.width() + scene_.world.height());
-        if (t > 0) c["pressure"] = total / (perimeter * t);
-    }
+    const EventCounts counts{pair_events_, wall_events_, cell_events_, stale_events_, virial_.value(), wall_impulse_};
+    const double kinetic_integral = kinetic_integral_.value() + kinetic_ * (now_ - kinetic_mark_);
+    SolverStats s = event_statistics(scene_, state_.size(), now_, counts, kinetic_integral);
+    s.counters["tc_elastic"] = double(tc_elastic_);
+    if (prefetch_) s.counters["events_named_ahead"] = double(named_events_);
     return s;
 }
 

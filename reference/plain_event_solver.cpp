@@ -31,6 +31,7 @@
 #include <stdexcept>
 
 #include "core/target_time.h"
+#include "event_statistics.h"
 #include "hard_disk_input.h"
 #include "physics/collision_rule.h"
 #include "physics/collision_time.h"
@@ -309,37 +310,10 @@ void PlainEventSolver::read_state(ParticleState<double>& out) const {
     }
 }
 
-// The same counters, under the same names, as the `event` backend (event_solver.cpp).
+// The same counters, under the same names, as the `event` backend (event_statistics.h).
 SolverStats PlainEventSolver::stats() const {
-    SolverStats s;
-    s.contacts = pair_events_;
-    s.steps = pair_events_ + wall_events_ + cell_events_;
-    auto& c = s.counters;
-    c["events_pair"] = double(pair_events_);
-    c["events_wall"] = double(wall_events_);
-    c["events_cell"] = double(cell_events_);
-    c["events_stale"] = double(stale_events_);
-    c["simulated_time"] = now_;
-    const double t = now_, n = double(disks_.size()), area = scene_.world.width() * scene_.world.height();
-    if (t > 0 && n > 0) {
-        c["collision_rate"] = 2 * double(pair_events_) / (n * t);  // collisions per disk per unit time
-        c["collisions_per_time"] = double(pair_events_) / t;
-    }
-    c["virial_sum"] = virial_.value();
-    // Virial theorem for impulsive forces in 2D (Alder & Wainwright, J. Chem. Phys. 33 (1960)
-    // 1439; Allen & Tildesley §2.4): P A = <K> + (1 / (2 t)) sum over collisions of d.(J n).
-    if (scene_.periodic() && !scene_.has_gravity()) {
-        c["kinetic_integral"] = kinetic_ * t;  // K is constant: elastic, no gravity
-        if (t > 0) c["pressure"] = (kinetic_ + virial_.value() / (2 * t)) / area;
-    }
-    if (scene_.periodic()) return s;
-    // Mechanical pressure: momentum given to the walls per unit time and unit wall length.
-    static const char* names[4] = {"wall_impulse_xmin", "wall_impulse_xmax", "wall_impulse_ymin", "wall_impulse_ymax"};
-    double total = 0;
-    for (int k = 0; k < 4; ++k) c[names[k]] = wall_impulse_[k].value(), total += wall_impulse_[k].value();
-    c["wall_impulse"] = total;
-    if (t > 0) c["pressure"] = total / (2 * (scene_.world.width() + scene_.world.height()) * t);
-    return s;
+    const EventCounts counts{pair_events_, wall_events_, cell_events_, stale_events_, virial_.value(), wall_impulse_};
+    return event_statistics(scene_, disks_.size(), now_, counts, kinetic_ * now_);  // K constant: e = 1
 }
 
 std::map<std::string, std::string> PlainEventSolver::provenance() const {
