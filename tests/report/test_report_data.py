@@ -21,6 +21,7 @@ sys.path.insert(0, REPORT)
 import digest  # noqa: E402
 import figures  # noqa: E402
 import make_report  # noqa: E402
+import physics  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 
 RESULTS = None
@@ -277,6 +278,47 @@ class HostileInputs(unittest.TestCase):
         self.assertIn("$x$ gas", html)
         self.assertIn(f'id="{digest.anchor("scene", "$x$ gas")}"'.replace('"', "'"), html)
 
+
+
+class PhysicsSectionDrawsTheSummary(unittest.TestCase):
+    """The "Reference against physics" section lays out summary.json's physics rows and
+    computes nothing: every number it shows is a number of the summary."""
+
+    def summary(self):
+        row = {"row": "equation_of_state", "scene": "fluid", "backend": "event", "group": "g",
+               "parameter_name": "area fraction", "parameter": 0.65, "measured": "Z", "estimator": "collision virial",
+               "value": 8.4031, "standard_error": 0.0082, "replicates": 4, "reference": 8.4080,
+               "reference_uncertainty": 0.0017, "reference_name": "Kolafa & Rottner (2006)", "citation": "Mol. Phys. 104",
+               "second_reference": 8.5944, "second_reference_name": "Henderson (1975)", "statistic": "z",
+               "score": 0.55, "resolved": True, "verdict": "pass", "detail": ""}
+        failed = dict(row, parameter=0.6, value=6.55, verdict="fail", score=9.1, reference=6.4553)
+        shown = dict(row, backend="step", estimator="contact shell", verdict="shown", resolved=False)
+        curve = {"name": "Kolafa & Rottner (2006)", "citation": "c", "eta": [0.0, 0.5, 0.65], "z": [1.0, 4.106, 8.408]}
+        henderson = {"name": "Henderson (1975)", "citation": "c", "eta": [0.0, 0.5, 0.65], "z": [1.0, 4.125, 8.594]}
+        return {"physics": {"rows": [row, failed, shown], "curves": [curve, henderson], "z_max": 3}}
+
+    def test_counts_only_judged_rows_and_names_the_reference(self):
+        lines = physics.summary_lines(self.summary())
+        self.assertEqual(lines, [("Equation of state", 1, 2, "event", "Kolafa & Rottner (2006)")])
+
+    def test_table_shows_the_summary_numbers_and_verdicts(self):
+        html = physics.section(self.summary(), make_report.image)
+        self.assertIn("8.4031 ± 0.0082", html)
+        self.assertIn("Henderson (1975): 8.5944", html)
+        self.assertIn("FAIL", html)
+        self.assertIn("shown, not judged", html)
+        self.assertIn("not resolved", html)  # the contact-shell row cannot tell the curves apart
+        self.assertIn("id='physics'", html)
+
+    def test_figure_is_drawn_and_markdown_lists_the_failure(self):
+        self.assertIsNotNone(physics.eos_figure(self.summary()))
+        md = "\n".join(physics.markdown(self.summary()))
+        self.assertIn("| Equation of state | 1 of 2 pass |", md)
+        self.assertIn("FAIL equation_of_state event area fraction 0.6", md)
+
+    def test_a_suite_without_physics_rows_has_no_section(self):
+        self.assertEqual(physics.section({"physics": {"rows": [], "curves": []}}, make_report.image), "")
+        self.assertEqual(physics.markdown({}), [])
 
 if __name__ == "__main__":
     if len(sys.argv) < 2:
