@@ -131,6 +131,29 @@ bool write_all(int fd, const std::string& bytes) {
 
 }  // namespace
 
+std::string input_path_problem(const std::string& path, bool directory) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0) {
+        const int error = errno;
+        struct stat link {};
+        if (error == ENOENT && ::lstat(path.c_str(), &link) == 0 && S_ISLNK(link.st_mode)) {
+            std::error_code ignored;
+            return "a symbolic link to nothing ('" + fs::read_symlink(path, ignored).string() + "' does not exist)";
+        }
+        switch (error) {
+            case ENOENT: return "does not exist";
+            case ENAMETOOLONG: return too_long();
+            case ELOOP: return link_loop("it");
+            case ENOTDIR: return "a part of the path is not a directory";
+            default: return std::strerror(error);
+        }
+    }
+    if (directory && !S_ISDIR(st.st_mode)) return "not a directory (it is " + kind_of(st.st_mode) + ")";
+    if (!directory && S_ISDIR(st.st_mode)) return "a directory, not a file";
+    if (::access(path.c_str(), R_OK) != 0) return "cannot be read (" + std::string(std::strerror(errno)) + ")";
+    return "";
+}
+
 void check_output_path(const std::string& path) {
     if (path.empty()) throw OutputFileError("cannot write the output: the file name is empty");
     if (!fs::path(path).has_filename()) refuse(path, "the path names a directory, not a file");

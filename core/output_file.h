@@ -38,6 +38,14 @@ void check_output_path(const std::string& path);
 // symbolic link to one. Throws OutputFileError naming the cause otherwise.
 void check_output_directory(const std::string& path);
 
+// The readers' side of the same guard: why `path` cannot be read as an input file
+// (`directory` false: a scene, a suite, a run file) or an input directory (`directory` true:
+// the results of `collide validate`), from the system's own errno, or "" when it can. The
+// causes: it does not exist, a symbolic link to nothing, a loop of links, the path is too
+// long, a part of it is not a directory, no permission, or it is a directory / not one.
+// (std::filesystem::exists() says "does not exist" for all of these.)
+std::string input_path_problem(const std::string& path, bool directory);
+
 class AtomicOutputFile {
 public:
     // Checks `path` (check_output_path) and creates the empty temporary file.

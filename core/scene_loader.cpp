@@ -10,6 +10,7 @@
 
 #include "backend_table.h"
 #include "disk_placement.h"
+#include "output_file.h"
 #include "toml_fields.h"
 
 namespace collide {
@@ -357,7 +358,10 @@ Scene load_scene(const std::string& path) {
     if (std::filesystem::is_directory(path, error))
         throw SceneError(path + ": is a directory: expected a scene file (TOML)");
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw SceneError(path + ": cannot open scene file");
+    if (!in) {  // the system's cause: missing, a link to nothing, a loop of links, too long, ...
+        const std::string why = input_path_problem(path, false);
+        throw SceneError(path + ": cannot open scene file" + (why.empty() ? "" : ": " + why));
+    }
     std::string text;
     std::vector<char> chunk(1 << 16);
     while (in.read(chunk.data(), std::streamsize(chunk.size())) || in.gcount() > 0) {

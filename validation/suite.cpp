@@ -7,6 +7,7 @@
 #include <sstream>
 #include <toml++/toml.h>
 
+#include "core/output_file.h"
 #include "core/scene_loader.h"
 #include "core/toml_fields.h"
 #include "physics_rows.h"
@@ -349,7 +350,10 @@ Suite parse_suite(const std::string& text, const std::string& file, const std::s
 
 Suite load_suite(const std::string& path) {
     std::ifstream in(path);
-    if (!in) throw SuiteError(path + ": cannot open the suite file");
+    if (!in) {
+        const std::string why = input_path_problem(path, false);
+        throw SuiteError(path + ": cannot open the suite file" + (why.empty() ? "" : ": " + why));
+    }
     std::stringstream text;
     text << in.rdbuf();
     const auto dir = std::filesystem::absolute(path).parent_path().string();

@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "apps/progress_line.h"
+#include "apps/input_paths.h"
 #include "commands.h"
 #include "validation/case_replay.h"
 #include "validation/case_result.h"
@@ -145,7 +146,7 @@ void add_explain_command(CLI::App& app) {
     auto* cmd = app.add_subcommand(
         "explain", "Rerun one case of `collide validate` results and name the step that changed the energy most, "
                    "its disks and the kind of contact");
-    cmd->add_option("dir", args->dir, "Output directory of `collide validate`")->required()->check(CLI::ExistingDirectory);
+    cmd->add_option("dir", args->dir, "Output directory of `collide validate`")->required()->check(readable_directory());
     cmd->add_option("case", args->case_id, "Case id (summary.json's cases[].id)")->required();
     cmd->add_option("--from", args->from, "Look at steps after this time (default 0)");
     cmd->add_option("--to", args->to, "... and up to this time (default: the case's duration)");

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "apps/resource_path.h"
+#include "apps/input_paths.h"
 #include "commands.h"
 #include "core/output_file.h"
 #include "core/run_export.h"
@@ -56,7 +57,7 @@ void add_export_command(CLI::App& app) {
     auto* cmd = app.add_subcommand(
         "export", "Write a run's frames for ParaView/VisIt (XDMF), OVITO/freud/HOOMD (GSD) or ASE/OVITO (extended XYZ)");
     cmd->add_option("run", args->run, "Run file (HDF5, written with `collide run ... --frames`)")
-        ->required()->check(CLI::ExistingFile);
+        ->required()->check(readable_file());
     cmd->add_option("-o,--out", args->out, "Output file: .xdmf (beside the run file it points into), .gsd or .xyz")
         ->required();
     cmd->add_option("-f,--format", args->format, "xdmf, gsd or xyz (default: from the extension of --out)")

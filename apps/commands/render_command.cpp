@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "apps/progress_line.h"
+#include "apps/input_paths.h"
 #include "commands.h"
 #include "view/render_run.h"
 
@@ -18,11 +19,11 @@ void add_render_command(CLI::App& app) {
     auto args = std::make_shared<Args>();
     auto* cmd = app.add_subcommand("render", "Draw a run written with --frames into a GIF, MP4 or PNG strip");
     cmd->add_option("run", args->render.run, "Run file (HDF5, written with `collide run ... --frames`)")
-        ->required()->check(CLI::ExistingFile);
+        ->required()->check(readable_file());
     cmd->add_option("-o,--out", args->render.out, "Output: .gif (animated), .mp4 (needs ffmpeg) or .png (strip)")
         ->required();
     cmd->add_option("--compare", args->render.compare, "Reference run of the same scene, drawn as outlines")
-        ->check(CLI::ExistingFile);
+        ->check(readable_file());
     cmd->add_option("--frames", args->render.frames, "Frames to draw, evenly spaced (default: all; 6 for .png)");
     cmd->add_option("--size", args->size, "Pixels of one frame, WIDTHxHEIGHT")->capture_default_str();
     cmd->add_option("--fps", args->render.fps, "Frames per second of an animation")->capture_default_str()

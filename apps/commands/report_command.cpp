@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/resource_path.h"
+#include "apps/input_paths.h"
 #include "commands.h"
 #include "core/output_file.h"
 #include "validation/case_result.h"
@@ -129,7 +130,7 @@ void execute(const std::string& dir) {
 void add_report_command(CLI::App& app) {
     auto dir = std::make_shared<std::string>();
     auto* cmd = app.add_subcommand("report", "Render DIR/report/index.html and summary.md from `collide validate` results");
-    cmd->add_option("dir", *dir, "Output directory of `collide validate`")->required()->check(CLI::ExistingDirectory);
+    cmd->add_option("dir", *dir, "Output directory of `collide validate`")->required()->check(readable_directory());
     cmd->callback([dir] { execute(*dir); });
 }
 

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "apps/input_paths.h"
 #include "commands.h"
 #include "core/backend_registry.h"
 #include "validation/suite_runner.h"
@@ -77,7 +78,7 @@ void execute(const ValidateArgs& args) {
 void add_validate_command(CLI::App& app) {
     auto args = std::make_shared<ValidateArgs>();
     auto* cmd = app.add_subcommand("validate", "Run a validation suite; write summary.json, junit.xml and HDF5 per case");
-    cmd->add_option("suite", args->suite_path, "Suite file (validation/suites/*.toml)")->required()->check(CLI::ExistingFile);
+    cmd->add_option("suite", args->suite_path, "Suite file (validation/suites/*.toml)")->required()->check(readable_file());
     cmd->add_option("-o,--out", args->out, "Output directory")->capture_default_str();
     cmd->add_option("-j,--jobs", args->jobs,
                     "Cases run at the same time, each in its own process (default: one per core; under MPI one per rank)")

@@ -4,6 +4,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "apps/input_paths.h"
 #include "commands.h"
 #include "core/output_file.h"
 #include "core/scene_loader.h"
@@ -55,7 +56,7 @@ void execute(ViewArgs& args) {
 void add_view_command(CLI::App& app) {
     auto args = std::make_shared<ViewArgs>();
     auto* cmd = app.add_subcommand("view", "Watch a scene run (SDL2 window; --headless renders off-screen)");
-    cmd->add_option("scene", args->scene_path, "Scene file (TOML)")->required()->check(CLI::ExistingFile);
+    cmd->add_option("scene", args->scene_path, "Scene file (TOML)")->required()->check(readable_file());
     cmd->add_option("-b,--backend", args->backend, "Backend name (see `collide backends`)")->capture_default_str();
     cmd->add_option("--compare", args->compare, "Second backend drawn as outlines (e.g. event, the exact solution)");
     cmd->add_flag("--headless", args->view.headless, "No window: draw off-screen (needs --frames)");

@@ -358,5 +358,30 @@ std::vector<Writer> writers_of_a_followed_link() {
 INSTANTIATE_TEST_SUITE_P(OutputPaths, EveryWriterFollowingALink, testing::ValuesIn(writers_of_a_followed_link()),
                          [](const testing::TestParamInfo<Writer>& info) { return info.param.name; });
 
+
+// Every command's input path (scene, suite, run file, results directory) names the system's
+// cause: a loop of links was "File does not exist" (CLI11's ExistingFile), a path too long
+// "cannot open scene file".
+TEST(InputPaths, EveryReaderNamesALoopOfLinksAndAPathTooLong) {
+    ScratchDirectory dir;
+    const std::string a = dir.file("a"), b = dir.file("b");
+    std::filesystem::create_symlink("b", a);
+    std::filesystem::create_symlink("a", b);
+    const std::string too_long = dir.file(std::string(300, 'n') + ".toml");
+    const std::vector<std::vector<std::string>> commands = {
+        {"run", a}, {"view", a, "--headless"}, {"render", a, "--out", dir.file("x.gif")},
+        {"validate", a, "--out", dir.file("results")}, {"report", a}, {"export", a, "--out", dir.file("x.xyz")},
+        {"explain", a, "case"}};
+    for (const auto& args : commands) {
+        const auto r = run_collide(args, dir);
+        EXPECT_NE(r.exit_code, 0) << args[0];
+        EXPECT_TRUE(test::contains(r.err, "loop of symbolic links")) << args[0] << ": " << r.err;
+    }
+    for (const char* command : {"run", "view", "validate"}) {
+        const auto r = run_collide({command, too_long}, dir);
+        EXPECT_TRUE(test::contains(r.err, "too long")) << command << ": " << r.err;
+    }
+}
+
 }  // namespace
 }  // namespace collide

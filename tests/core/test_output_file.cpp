@@ -148,5 +148,26 @@ TEST(OutputFile, ADirectoryWithoutWritePermissionGivesTheSystemsReason) {
     ::chmod(locked.c_str(), 0755);
 }
 
+
+// The readers' side: a scene, suite or run file that cannot be read is named with the system's
+// cause, where CLI11's ExistingFile said "File does not exist" for all of these.
+TEST(InputPath, EachCauseIsNamed) {
+    ScratchDirectory dir;
+    const std::string a = dir.file("a"), b = dir.file("b"), dangling = dir.file("dangling"), file = dir.file("f");
+    fs::create_symlink("b", a);
+    fs::create_symlink("a", b);
+    fs::create_symlink("nowhere", dangling);
+    test::write_text_file(file, "x");
+    EXPECT_TRUE(contains(input_path_problem(a, false), "loop of symbolic links")) << input_path_problem(a, false);
+    EXPECT_TRUE(contains(input_path_problem(dangling, false), "symbolic link to nothing"));
+    EXPECT_TRUE(contains(input_path_problem(dir.file(std::string(300, 'n')), false), "too long"));
+    EXPECT_TRUE(contains(input_path_problem(dir.file("missing"), false), "does not exist"));
+    EXPECT_TRUE(contains(input_path_problem(file + "/x", false), "not a directory"));
+    EXPECT_TRUE(contains(input_path_problem(dir.path().string(), false), "a directory, not a file"));
+    EXPECT_TRUE(contains(input_path_problem(file, true), "not a directory"));
+    EXPECT_EQ(input_path_problem(file, false), "");
+    EXPECT_EQ(input_path_problem(dir.path().string(), true), "");
+}
+
 }  // namespace
 }  // namespace collide
