@@ -3,7 +3,8 @@
 
     check_course.py exercises COLLIDE   run every exercise's commands; each answer's
                                         <!-- expect: TEXT --> line must appear in the output
-    check_course.py links               every image and relative link of docs/ resolves
+    check_course.py links               every image and relative link of docs/ resolves, and every
+                                        quoted line range (<!-- quote PATH:A-B -->) matches its file
     check_course.py figures COLLIDE     docs/figures/make_figures.py runs on the library scenes
 
 An exercise is a "### Exercise" section of a chapter (docs/course/*.md): its first ```sh block
@@ -98,6 +99,25 @@ def check_links():
     return failures
 
 
+def check_quotes():
+    """Code quoted on a page as <!-- quote PATH:A-B --> followed by a fenced block must be lines
+    A to B of PATH, exactly: a quote that drifts from the source fails here."""
+    failures, quoted = [], 0
+    pattern = re.compile(r"<!-- quote ([^ :]+):(\d+)-(\d+) -->\n```[a-z]*\n(.*?)\n```", re.S)
+    for page in sorted((ROOT / "docs").rglob("*.md")):
+        for path, first, last, body in pattern.findall(page.read_text()):
+            quoted += 1
+            source = ROOT / path
+            if not source.exists():
+                failures.append(f"{page.relative_to(ROOT)}: quotes {path}, which does not exist")
+                continue
+            lines = source.read_text().split("\n")[int(first) - 1:int(last)]
+            if "\n".join(lines) != body:
+                failures.append(f"{page.relative_to(ROOT)}: the quote of {path}:{first}-{last} differs from the file")
+    print(f"{quoted} code quotes checked")
+    return failures
+
+
 def check_figures(collide):
     with tempfile.TemporaryDirectory(prefix="collide-figures-out-") as out:
         done = subprocess.run(["/usr/bin/python3", str(ROOT / "docs/figures/make_figures.py"),
@@ -118,7 +138,7 @@ def main():
     if what == "exercises" and len(sys.argv) == 3:
         failures = check_exercises(sys.argv[2])
     elif what == "links":
-        failures = check_links()
+        failures = check_links() + check_quotes()
     elif what == "figures" and len(sys.argv) == 3:
         failures = check_figures(sys.argv[2])
     else:
