@@ -216,7 +216,7 @@ Comparisons compare_with_reference(const Suite& suite, const std::vector<CaseRes
             }
             CheckResult pressure = make_check(g, "pressure");
             if (auto why = pressure_left_out(features[spec.scene_index])) pressure.detail = *why;
-            else z_check(pressure, g, *ref, mean_compressibility, tol.statistics_z, "Z = P/(rho kT)", pressure_model);
+            else z_check(pressure, g, *ref, mean_compressibility, tol.statistics_z, "Z = P/(rho kT) (contact-shell estimator)", pressure_model);
             out.checks.push_back(pressure);
             CheckResult rate = make_check(g, "collision_rate");
             z_check(rate, g, *ref, collision_rate, tol.statistics_z, "collisions per disk per time", rate_model);

@@ -135,7 +135,7 @@ def headline(summary, digest, aliases):
         ax.set_title("trajectory scenes: mean error ± SE over phase replicates", fontsize=9)
         ax.set_ylabel("trajectory error / r_min [dimensionless]")
         used_scenes += [(sc, scene_marker(sc)) for sc in scenes]
-    for check, title, ylabel in (("pressure", "pressure Z", "|Z − Z_ref| / Z_ref [dimensionless]"),
+    for check, title, ylabel in (("pressure", "pressure Z (contact-shell estimator)", "|Z − Z_ref| / Z_ref [dimensionless]"),
                                  ("collision_rate", "collision rate", "|ν − ν_ref| / ν_ref [dimensionless]")):
         if not statistical_scenes:
             break
