@@ -177,6 +177,21 @@ void judge_z(PhysicsRow& row, const std::vector<double>& v, bool judged) {
     row.verdict = !judged ? PhysicsVerdict::shown : row.score <= physics_z_max ? PhysicsVerdict::pass : PhysicsVerdict::fail;
 }
 
+// A measured quantity against a predicted one, replicate by replicate (the prediction depends
+// on each replicate's own temperature): judged by the z-score of the ratios about 1, with the
+// prediction's relative uncertainty u; shown as the means of the two.
+void judge_ratio(PhysicsRow& row, const std::vector<double>& measured, const std::vector<double>& predicted, double u,
+                 bool judged) {
+    std::vector<double> ratio;
+    for (std::size_t k = 0; k < measured.size(); ++k) ratio.push_back(measured[k] / predicted[k]);
+    row.reference = 1, row.reference_uncertainty = u;
+    judge_z(row, ratio, judged);
+    const MeanAndError m = mean_and_error(measured);
+    row.value = m.mean, row.standard_error = m.standard_error;
+    row.reference = mean_and_error(predicted).mean;
+    row.reference_uncertainty = u * row.reference;
+}
+
 // --- The rows ------------------------------------------------------------------------------
 
 PhysicsRow equation_of_state_row(const Group& g, const SceneFacts& f, const PublishedReference& eos,
@@ -202,19 +217,14 @@ PhysicsRow collision_rate_row(const Group& g, const SceneFacts& f, const Publish
     row.parameter_name = "area fraction", row.parameter = f.eta;
     row.estimator = "collisions counted in the second half";
     const double g_contact = contact_value(compressibility_factor(eos, f.eta), f.eta);
-    std::vector<double> ratio, nu, nu_enskog;
+    std::vector<double> nu, nu_enskog;
     for (const CaseResult* r : g.cases) {
         const double kt_over_m = initial_kinetic_energy(*r) / (double(f.mobile) * f.mass);  // K = N kT (2-D)
         nu.push_back(second_half_collision_rate(*r));
         nu_enskog.push_back(enskog_collision_rate(f.density, f.sigma, g_contact, kt_over_m));
-        ratio.push_back(nu.back() / nu_enskog.back());
     }
-    row.reference = 1, row.reference_uncertainty = enskog.numbers.count("relative_uncertainty") ? enskog.number("relative_uncertainty") : 0;
-    judge_z(row, ratio, true);  // the score is that of the ratio nu / nu_Enskog
-    const MeanAndError m = mean_and_error(nu);
-    row.value = m.mean, row.standard_error = m.standard_error;
-    row.reference = mean_and_error(nu_enskog).mean;
-    row.reference_uncertainty *= row.reference;
+    const double u = enskog.numbers.count("relative_uncertainty") ? enskog.number("relative_uncertainty") : 0;
+    judge_ratio(row, nu, nu_enskog, u, true);
     std::ostringstream d;
     d << "g(sigma) = " << g_contact << " from " << eos.name << "; kT from each replicate's conserved energy";
     row.detail = d.str();
@@ -269,20 +279,14 @@ PhysicsRow haff_row(const Group& g, const SceneFacts& f, const PublishedReferenc
     row.parameter_name = "restitution", row.parameter = f.restitution;
     row.estimator = "least-squares line through T^(-1/2) for t <= min(tau, run)";
     const double g_contact = contact_value(compressibility_factor(eos, f.eta), f.eta);
-    std::vector<double> ratio, tau, tau_haff;
+    std::vector<double> tau, tau_haff;
     for (const CaseResult* r : g.cases) {
         const double t0 = initial_kinetic_energy(*r) / (double(f.mobile) * f.mass);  // kT0 / m
         const double nu0 = enskog_collision_rate(f.density, f.sigma, g_contact, t0);  // t0 = kT0 / m
         tau_haff.push_back(4 / ((1 - f.restitution * f.restitution) * nu0));  // 1/tau = (1 - e^2) nu0 / 4 (2-D)
         tau.push_back(haff_cooling_time(*r, tau_haff.back()));
-        ratio.push_back(tau.back() / tau_haff.back());
     }
-    row.reference = 1, row.reference_uncertainty = haff.number("model_uncertainty");
-    judge_z(row, ratio, g.exact());
-    const MeanAndError m = mean_and_error(tau);
-    row.value = m.mean, row.standard_error = m.standard_error;
-    row.reference = mean_and_error(tau_haff).mean;
-    row.reference_uncertainty *= row.reference;
+    judge_ratio(row, tau, tau_haff, haff.number("model_uncertainty"), g.exact());
     std::ostringstream d;
     d << "tau = 4 / ((1 - e^2) nu0), nu0 Enskog's rate at T0 with g(sigma) = " << g_contact << " (" << eos.name
       << "); the law's own accuracy " << haff.number("model_uncertainty") * 100 << " % counts in the error";
