@@ -29,8 +29,12 @@ def installed(prefix, *args, cwd=None):
 def test_the_layout(prefix):
     share = prefix / "share" / "collide"
     for path in ("data/scenes/head_on_equal.toml", "validation/suites/default.toml",
-                 "validation/report/make_report.py", "python/collide/gsd_export.py"):
+                 "validation/report/make_report.py", "python/collide/gsd_export.py",
+                 "data/scenes/physics/hard_disk_fluid.toml", "data/references/kolafa_rottner_2006.toml"):
         assert (share / path).is_file(), path
+    # The default suite's physics rows read their published references from ../../data/references.
+    suites = share / "validation" / "suites"
+    assert (suites / ".." / ".." / "data" / "references" / "galperin_2003.toml").resolve().is_file()
     assert (prefix / "share" / "doc" / "collide" / "exporting.md").is_file()
 
 
