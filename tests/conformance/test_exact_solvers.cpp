@@ -27,34 +27,11 @@
 #include "core/metrics.h"
 #include "core/scene_loader.h"
 #include "core/state_hash.h"
+#include "tests/support/state_difference.h"
 #include "tests/support/test_scenes.h"
 
 namespace collide::test {
 namespace {
-
-struct Difference {
-    double position = 0, velocity = 0;  // largest relative difference over disks and components
-};
-
-// |a - b| / max(1, |a|): relative for large values, absolute for small ones.
-double relative(double a, double b) { return std::fabs(a - b) / std::max(1.0, std::fabs(a)); }
-
-Difference difference(const Scene& scene, const ParticleState<double>& a, const ParticleState<double>& b) {
-    Difference d;
-    const World& w = scene.world;
-    for (std::size_t i = 0; i < a.size(); ++i) {
-        double dx = a.x[i] - b.x[i], dy = a.y[i] - b.y[i];
-        // In a periodic box a disk on a side may sit at lo in one solver and just below lo + L in
-        // the other: compare the nearest images.
-        if (scene.periodic()) {
-            dx -= w.width() * std::round(dx / w.width());
-            dy -= w.height() * std::round(dy / w.height());
-        }
-        d.position = std::max({d.position, relative(a.x[i], a.x[i] - dx), relative(a.y[i], a.y[i] - dy)});
-        d.velocity = std::max({d.velocity, relative(a.vx[i], b.vx[i]), relative(a.vy[i], b.vy[i])});
-    }
-    return d;
-}
 
 std::unique_ptr<Solver> make(const std::string& backend) { return find_backend(backend).create(BackendOptions{}); }
 
@@ -69,13 +46,13 @@ void expect_same_trajectories(const std::string& name, const Scene& scene, const
     event->load(scene, initial);
     plain->load(scene, initial);
     ParticleState<double> a, b;
-    Difference worst;
+    StateDifference worst;
     for (double t : output_times(scene)) {
         event->advance_to(t);
         plain->advance_to(t);
         event->read_state(a);
         plain->read_state(b);
-        const Difference d = difference(scene, a, b);
+        const StateDifference d = state_difference(scene, a, b, true);
         worst.position = std::max(worst.position, d.position);
         worst.velocity = std::max(worst.velocity, d.velocity);
         ASSERT_LT(d.position, 1e-9) << name << " at t = " << t;

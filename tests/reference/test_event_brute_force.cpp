@@ -33,6 +33,7 @@
 #include "core/scene.h"
 #include "reference/event_solver.h"
 #include "reference/plain_event_solver.h"
+#include "tests/support/state_difference.h"
 #include "tests/support/test_scenes.h"
 
 namespace collide {
@@ -94,27 +95,6 @@ double area_fraction(const Gas& gas) {
 // Comparing the two solvers
 // ---------------------------------------------------------------------------------------
 
-struct Difference {
-    double position = 0, velocity = 0;  // largest over disks and components
-};
-
-Difference max_difference(const Scene& scene, const ParticleState<double>& a, const ParticleState<double>& b) {
-    Difference d;
-    const World& w = scene.world;
-    for (std::size_t i = 0; i < a.size(); ++i) {
-        double dx = a.x[i] - b.x[i], dy = a.y[i] - b.y[i];
-        // In a periodic box a disk on a side may sit at lo in one solver and at lo + L (wrapped
-        // back to just below it) in the other: compare the nearest images.
-        if (scene.periodic()) {
-            dx -= w.width() * std::round(dx / w.width());
-            dy -= w.height() * std::round(dy / w.height());
-        }
-        d.position = std::max({d.position, std::fabs(dx), std::fabs(dy)});
-        d.velocity = std::max({d.velocity, std::fabs(a.vx[i] - b.vx[i]), std::fabs(a.vy[i] - b.vy[i])});
-    }
-    return d;
-}
-
 // Runs both solvers from the same start to t_end and checks that they agree.
 //
 // Why 1e-9 is a safe bound, and what limits the run length. Both solvers find the same
@@ -156,7 +136,7 @@ void expect_same_run(const Gas& gas, double t_end, const char* label, const std:
     // (The counts could differ by one if an event fell within rounding of t_end, one solver
     // processing it and the other not; with ~1e3 events per time unit that has a chance of
     // ~1e-12 per run, and the end times below are fixed.)
-    const Difference d = max_difference(gas.scene, fast_state, plain_state);
+    const StateDifference d = state_difference(gas.scene, fast_state, plain_state, false);
     const auto cell_crossings = static_cast<long long>(stats.counters.at("events_cell"));
     std::printf("%s: N = %zu, area fraction %.3f, t = %g: %lld pair and %lld wall collisions (%lld cell crossings "
                 "in the event solver); max |dx| = %.2e, max |dv| = %.2e\n",
