@@ -136,7 +136,7 @@ void expect_same_run(const Gas& gas, double t_end, const char* label, const std:
     // (The counts could differ by one if an event fell within rounding of t_end, one solver
     // processing it and the other not; with ~1e3 events per time unit that has a chance of
     // ~1e-12 per run, and the end times below are fixed.)
-    const StateDifference d = state_difference(gas.scene, fast_state, plain_state, false);
+    const test::StateDifference d = test::state_difference(gas.scene, fast_state, plain_state, false);
     const auto cell_crossings = static_cast<long long>(stats.counters.at("events_cell"));
     std::printf("%s: N = %zu, area fraction %.3f, t = %g: %lld pair and %lld wall collisions (%lld cell crossings "
                 "in the event solver); max |dx| = %.2e, max |dv| = %.2e\n",
