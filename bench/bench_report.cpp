@@ -9,6 +9,7 @@
 
 #include "bench_suite.h"
 #include "core/output_file.h"
+#include "core/progress_line.h"
 #include "core/provenance.h"
 
 namespace collide::bench {
@@ -30,7 +31,22 @@ nlohmann::ordered_json json_value(const Value& v) {
 
 }  // namespace
 
+BenchReport::BenchReport(std::string suite) : suite_(std::move(suite)) {}
+BenchReport::~BenchReport() = default;
+
+void BenchReport::expect_work(double total) {
+    work_total_ = total;
+    work_done_ = 0;
+}
+
+void BenchReport::work_done(double amount, const std::string& what) {
+    if (!progress_) progress_ = std::make_unique<ProgressLine>(stderr);
+    work_done_ += amount;
+    progress_->update(work_total_ > 0 ? work_done_ / work_total_ : 0.0, "[" + suite_ + "] " + what);
+}
+
 void BenchReport::add(const Row& row) {
+    if (progress_) progress_->finish();  // the row replaces the progress line on a terminal
     rows_.push_back(row);
     std::string line = "[" + suite_ + "]";
     for (const auto& [k, v] : row) line += " " + k + "=" + to_text(v);

@@ -9,9 +9,14 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <variant>
 #include <vector>
+
+namespace collide {
+class ProgressLine;
+}
 
 namespace collide::bench {
 
@@ -34,9 +39,15 @@ using Row = std::map<std::string, Value>;
 
 class BenchReport {
 public:
-    explicit BenchReport(std::string suite) : suite_(std::move(suite)) {}
-    // Adds a row and prints it at once (progress on long suites).
+    explicit BenchReport(std::string suite);
+    ~BenchReport();
+    // Adds a row and prints it at once on stdout.
     void add(const Row& row);
+    // Progress with the time left (core/progress_line.h, on stderr): a suite says how much
+    // work it plans, in its own unit (disk-steps, collisions), then how much is done as it
+    // goes. The time left assumes the rest runs at the rate of the part done so far.
+    void expect_work(double total);
+    void work_done(double amount, const std::string& what);
     // Free-form notes ("box2d stopped at N = 1e5: one step took 1.3 s").
     void note(const std::string& text);
     const std::vector<Row>& rows() const { return rows_; }
@@ -47,6 +58,8 @@ private:
     std::string suite_;
     std::vector<Row> rows_;
     std::vector<std::string> notes_;
+    double work_total_ = 0, work_done_ = 0;
+    std::unique_ptr<ProgressLine> progress_;  // made on the first work_done
 };
 
 struct BenchSuite {

@@ -112,17 +112,21 @@ SizeCase melted_case(const std::string& backend, std::int64_t n, double phi, boo
 // Times the windows of all sizes and solvers in turn (window 1 of every case, then window 2,
 // ...), so that a machine whose speed drifts over minutes (other programs, frequency changes)
 // affects every case alike, and the ratio of two cases can be taken window by window.
-void time_interleaved(std::vector<SizeCase>& cases, double phi) {
+void time_interleaved(std::vector<SizeCase>& cases, double phi, BenchReport& report) {
+    double planned = 0;
+    for (const SizeCase& c : cases) planned += double(c.per_window) * timing_windows;
+    report.expect_work(planned);
     for (int w = 0; w < timing_windows; ++w)
         for (SizeCase& c : cases) {
-            std::fprintf(stderr, "[%s] area fraction %.1f, timing window %d of %d: N = %lld (%lld collisions)\n",
-                         c.backend.c_str(), phi, w + 1, timing_windows, static_cast<long long>(c.n),
-                         static_cast<long long>(c.per_window));
             const std::int64_t start = c.solver->stats().contacts;
             const Timing t = run_collisions(*c.solver, c.per_window);
             c.timing.seconds += t.seconds;
             c.timing.cpu_seconds += t.cpu_seconds;
             c.window_ns.push_back(1e9 * t.seconds / double(c.solver->stats().contacts - start));
+            char what[128];
+            std::snprintf(what, sizeof what, "area fraction %.1f, window %d of %d: %s N = %lld", phi, w + 1, timing_windows,
+                          c.backend.c_str(), static_cast<long long>(c.n));
+            report.work_done(double(c.per_window), what);
         }
 }
 
@@ -185,7 +189,7 @@ void run_event_suite(const BenchArgs& args, BenchReport& report) {
         std::vector<SizeCase> cases;  // size by size, each size's solvers in solver_names order
         for (std::int64_t n : sizes)
             for (const char* backend : solver_names) cases.push_back(melted_case(backend, n, phi, args.quick));
-        time_interleaved(cases, phi);
+        time_interleaved(cases, phi, report);
         const std::size_t solvers = std::size(solver_names);
         for (std::size_t k = 0; k < cases.size(); ++k)
             report_case(cases[k], cases[k % solvers], cases[k - k % solvers], phi, report);

@@ -56,6 +56,7 @@ void run_sizes(const BenchArgs& args, BenchReport& report, const BackendInfo& ba
                 {"steps", std::int64_t(args.steps)}};
         add_timing(row, t, n);
         report.add(row);
+        report.work_done(double(n) * args.steps, config.label + " N = " + std::to_string(n) + " done");
     }
 }
 
@@ -65,14 +66,25 @@ void run_throughput_suite(const BenchArgs& args, BenchReport& report) {
     std::vector<std::int64_t> sizes = args.sizes;
     if (sizes.empty()) sizes = args.quick ? std::vector<std::int64_t>{1000, 10000}
                                           : std::vector<std::int64_t>{1000, 10000, 100000, 1000000};
+    // Plan first (for the progress line's time left), then run.
+    struct Planned {
+        const BackendInfo* backend;
+        Configuration config;
+        int threads;
+    };
+    std::vector<Planned> plan;
     for (const auto& backend : all_backends()) {
         if (backend.name == "event" || backend.name == "event-plain") continue;  // (suite `event`)
         for (const Configuration& config : configurations(backend.name)) {
             // --backend box2d runs both presets; --backend "box2d[shipped]" only that one.
             if (!wanted(args, backend.name) && !wanted(args, config.label)) continue;
-            for (int threads : thread_counts(args, backend.name)) run_sizes(args, report, backend, config, threads, sizes);
+            for (int threads : thread_counts(args, backend.name)) plan.push_back({&backend, config, threads});
         }
     }
+    double disk_steps = 0;
+    for (std::int64_t n : sizes) disk_steps += double(n) * args.steps;
+    report.expect_work(disk_steps * double(plan.size()));
+    for (const Planned& p : plan) run_sizes(args, report, *p.backend, p.config, p.threads, sizes);
 }
 
 }  // namespace collide::bench

@@ -11,7 +11,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include "apps/progress_line.h"
+#include "core/progress_line.h"
 #include "core/output_file.h"
 #include "core/provenance.h"
 #include "core/run_export.h"
@@ -43,12 +43,12 @@ py::dict run(const Scene& given, const std::string& backend_name, const std::str
     std::unique_ptr<RunWriter> writer;
     if (!out.empty()) writer = std::make_unique<RunWriter>(out, frames);
 
-    std::unique_ptr<cli::ProgressLine> line;
-    if (progress) line = std::make_unique<cli::ProgressLine>(stderr);
+    std::unique_ptr<ProgressLine> line;
+    if (progress) line = std::make_unique<ProgressLine>(stderr);
     RunOptions run_options;
     run_options.writer = writer.get();
     run_options.on_output = [&line](double time, double duration) {
-        if (line) line->update(time, duration);
+        if (line) line->update_time(time, duration);
         py::gil_scoped_acquire gil;
         if (PyErr_CheckSignals() != 0) throw Interrupted{};
     };

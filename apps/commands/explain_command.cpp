@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
-#include "apps/progress_line.h"
+#include "core/progress_line.h"
 #include "apps/input_paths.h"
 #include "commands.h"
 #include "validation/case_replay.h"
@@ -122,16 +122,16 @@ void execute(const ExplainArgs& args) {
     const double start = std::floor(args.from / dt + 1e-9) * dt;
     if (!what_if) require_same_path(*solver, c, record, start);
     // A long case takes a while to reach --from and to search: a progress line with the time
-    // left on a terminal, a plain line every 10 s in a log (apps/progress_line.h).
+    // left on a terminal, a plain line every 10 s in a log (core/progress_line.h).
     ProgressLine progress;
     const double interval = c.scene.run.output_interval;
     for (double t = solver->time(); t < start;) {
         t = std::min(start, (std::floor(t / interval + 1e-9) + 1) * interval);
         solver->advance_to(t);
-        progress.update(t, end);
+        progress.update_time(t, end);
     }
     const validation::EnergyJump jump = validation::largest_energy_change(
-        *solver, c.scene, end, [&progress](double t, double t_end) { progress.update(t, t_end); });
+        *solver, c.scene, end, [&progress](double t, double t_end) { progress.update_time(t, t_end); });
     progress.finish();
     if (args.json)
         std::printf("%s\n", to_json(c, jump).dump(2).c_str());

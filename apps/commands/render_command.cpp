@@ -4,7 +4,7 @@
 #include <memory>
 #include <stdexcept>
 
-#include "apps/progress_line.h"
+#include "core/progress_line.h"
 #include "apps/input_paths.h"
 #include "commands.h"
 #include "view/render_run.h"
@@ -39,7 +39,7 @@ void add_render_command(CLI::App& app) {
         args->render.height = h;
         // A long animation: the time left on a terminal, a line every 10 s in a log.
         ProgressLine progress;
-        args->render.on_frame = [&progress](double t, double last) { progress.update(t, last); };
+        args->render.on_frame = [&progress](double t, double last) { progress.update_time(t, last); };
         view::render_run(args->render);
     });
 }

@@ -9,7 +9,7 @@
 #include <memory>
 #include <optional>
 
-#include "apps/progress_line.h"
+#include "core/progress_line.h"
 #include "commands.h"
 #include "core/backend_registry.h"
 #include "core/provenance.h"
@@ -124,7 +124,7 @@ void execute(const RunArgs& args) {
     ProgressLine progress;
     RunOptions run_options;
     run_options.writer = writer.get();
-    run_options.on_output = [&progress](double time, double duration) { progress.update(time, duration); };
+    run_options.on_output = [&progress](double time, double duration) { progress.update_time(time, duration); };
     const RunResult result = run_scene(scene, *solver, initial, run_options);
     progress.finish();
 
