@@ -4,7 +4,7 @@
 #include "core/backend_registry.h"
 #include "cpu/cpu_solver.h"
 #include "opencl/opencl_solver.h"
-#include "reference/event_solver.h"
+#include "reference/event/event_solver.h"
 #include "reference/plain_event_solver.h"
 #include "reference/step_solver.h"
 

@@ -2,7 +2,8 @@
 written plainly): collisions per second of processor time, one core, a periodic gas at area
 fraction 0.3, best of three runs of 1.5 s after one time unit of settling. The tuned solver's
 options switch its speed layer off one piece at a time ([backend.event] prefetch,
-renumber_interval; reference/event_solver.cpp). Results are the same bits either way (tests).
+renumber_interval: reference/event/prefetch_pipeline.h, cell_order_renumbering.h). Results
+are the same bits either way (tests).
 
 usage: python3 bench/event_optimisations.py [N]   (from the repository root, after a build;
                                                    N = 100000 by default)

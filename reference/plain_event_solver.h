@@ -1,6 +1,6 @@
 // The `event-plain` backend: the event-driven method for hard disks in its plainest form, one
 // file (plain_event_solver.cpp) a student reads in one sitting. The `event` backend
-// (event_solver.h) is the same method tuned for speed; the conformance tests hold the two
+// (event/event_solver.h) is the same method tuned for speed; the conformance tests hold the two
 // against each other. docs/event-driven.md, "The plain solver", walks through it.
 #pragma once
 

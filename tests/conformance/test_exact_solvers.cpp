@@ -1,4 +1,4 @@
-// The two exact solvers against each other: `event` (reference/event_solver.*, tuned for
+// The two exact solvers against each other: `event` (reference/event/event_solver.*, tuned for
 // speed) and `event-plain` (reference/plain_event_solver.*, written to be read). Both solve
 // the same dynamics with the same formulas (physics/collision_time.h, collision_rule.h) but
 // with their own event loops, queues and cell lists, so a bug in either shows as a difference.

@@ -80,7 +80,7 @@ CONSUMER_MAIN = """// The exact solver on a scene file, from a program of its ow
 #include <cstdio>
 #include "core/metrics.h"
 #include "core/scene_loader.h"
-#include "reference/event_solver.h"
+#include "reference/event/event_solver.h"
 
 int main(int, char** argv) {
     const collide::Scene scene = collide::load_scene(argv[1]);

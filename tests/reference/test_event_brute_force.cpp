@@ -1,4 +1,4 @@
-// The optimised `event` backend (reference/event_solver.h: cell list with crossings, calendar
+// The optimised `event` backend (reference/event/event_solver.h: cell list with crossings, calendar
 // queue, renumbering, prefetching, a clock per disk) against the plain one, `event-plain`
 // (reference/plain_event_solver.cpp: a binary heap of every predicted event, lazy invalidation,
 // a plain cell list), in gases of a few dozen disks. The two must find the same collisions in
@@ -31,7 +31,7 @@
 
 #include "core/particle_state.h"
 #include "core/scene.h"
-#include "reference/event_solver.h"
+#include "reference/event/event_solver.h"
 #include "reference/plain_event_solver.h"
 #include "tests/support/state_difference.h"
 #include "tests/support/test_scenes.h"
@@ -228,7 +228,7 @@ TEST(EventBruteForce, RenumberingChangesNoBit) {
     }
 }
 
-// Prefetching the coming events (EventSolver::prefetch_upcoming) only requests memory: forced
+// Prefetching the coming events (reference/event/prefetch_pipeline.h) only requests memory: forced
 // on in a small periodic gas (with renumbering every 7 events, which resets the look-ahead),
 // in a reflecting box (whose edge cells are not prefetched), and left to "auto" above its
 // threshold, the state is the same to the last bit as with prefetching off.

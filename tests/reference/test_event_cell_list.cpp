@@ -1,6 +1,6 @@
-// The event solver's cell list (reference/event_cell_list.h): the blocks of cells its prefetching
+// The event solver's cell list (reference/event/event_cell_list.h): the blocks of cells its prefetching
 // requests must hold the lists the solver then reads.
-#include "reference/event_cell_list.h"
+#include "reference/event/event_cell_list.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// The event calendar (reference/event_queue.h): it must hand out exactly what one heap over
+// The event calendar (reference/event/event_queue.h): it must hand out exactly what one heap over
 // all entries would, keep doing so through renumbering, and not rebuild itself every turn.
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-#include "reference/event_queue.h"
+#include "reference/event/event_queue.h"
 
 namespace collide {
 namespace {

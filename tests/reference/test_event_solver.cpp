@@ -11,7 +11,7 @@
 #include <string>
 
 #include "core/metrics.h"
-#include "reference/event_solver.h"
+#include "reference/event/event_solver.h"
 #include "tests/support/test_scenes.h"
 
 namespace collide {

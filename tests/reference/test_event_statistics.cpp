@@ -10,7 +10,7 @@
 #include <random>
 #include <vector>
 
-#include "reference/event_solver.h"
+#include "reference/event/event_solver.h"
 #include "tests/support/test_scenes.h"
 
 namespace collide {

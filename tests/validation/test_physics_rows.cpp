@@ -10,7 +10,7 @@
 #include <memory>
 
 #include "core/scene_loader.h"
-#include "reference/event_solver.h"
+#include "reference/event/event_solver.h"
 #include "test_backends.h"
 #include "tests/support/test_scenes.h"
 #include "validation/physics_rows.h"

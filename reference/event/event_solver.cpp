@@ -6,29 +6,19 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "core/target_time.h"
-#include "event_statistics.h"
-#include "physics/collision_rule.h"
 #include "core/disk_overlap.h"
 #include "core/representability.h"
+#include "core/target_time.h"
+#include "physics/collision_rule.h"
 #include "physics/collision_time.h"
-#include "hard_disk_input.h"
 #include "physics/stepping_laws.h"
+#include "reference/event_statistics.h"
+#include "reference/hard_disk_input.h"
 
 namespace collide {
 namespace {
 
 using event_time::never;
-
-// The coming events are prefetched (prefetch_upcoming) from this many disks on: 2^16 disks
-// have 8 MiB of records and calendar slots, four times what a core's L2 cache holds. Below,
-// most of the state stays in the cache and the prefetching mostly costs time: per collision
-// +22 % at N = 1e3, +35 % at 1e4, +10 % at 3e4, +2 % at 4.5e4, then -11 % at 6.6e4 and
-// -23 % at 1e5 (area fraction 0.5, medians of 4 concurrent runs, docs/event-driven.md).
-constexpr std::size_t prefetch_from_disks = std::size_t(1) << 16;
-
-// The disks are renumbered in cell order after about this many events per disk (see renumber).
-constexpr std::int64_t renumber_events_per_disk = 4;
 
 std::string describe(double v) {
     std::ostringstream s;
@@ -100,8 +90,7 @@ void EventSolver::load(const Scene& scene, const ParticleState<double>& initial)
     last_collision_.assign(n, -std::numeric_limits<double>::infinity());
     now_ = progress_mark_ = kinetic_mark_ = 0;
     events_since_mark_ = 0;
-    pair_events_ = wall_events_ = cell_events_ = stale_events_ = tc_elastic_ = named_events_ = 0;
-    forget_names();
+    pair_events_ = wall_events_ = cell_events_ = stale_events_ = tc_elastic_ = 0;
     virial_ = kinetic_integral_ = CompensatedSum{};
     for (auto& s : wall_impulse_) s = CompensatedSum{};
 
@@ -126,7 +115,6 @@ void EventSolver::load(const Scene& scene, const ParticleState<double>& initial)
     if (n > 0 && cell_size < 0.5 * dilute_size && 4 * dilute_size < std::min(w.width(), w.height()))
         cell_size = dilute_size;
     cells_.configure(w, cell_size, n);
-    prefetch_second_records_ = double(n) >= double(cells_.cells_x()) * double(cells_.cells_y());
     if (scene.periodic() && (cells_.cells_x() < 3 || cells_.cells_y() < 3))
         throw std::runtime_error("event: periodic box " + describe(w.width()) + " x " + describe(w.height()) +
                                  " is narrower than 3 contact distances (2 r_max = " + describe(2 * r_max) +
@@ -156,41 +144,17 @@ void EventSolver::load(const Scene& scene, const ParticleState<double>& initial)
     renumber();
 }
 
-// Memory locality. A prediction reads the record of every disk in the 3x3 cells around a disk.
-// If the disks are numbered in cell order, those records lie in three runs of consecutive
-// records (one per row of cells), a few cache lines each; in the scene's order, or after the
-// disks have diffused, each is a separate cache miss once the records outgrow the cache (N =
-// 1e5: 6.4 MB). So the disks are renumbered cell by cell at load and then every
-// renumber_interval_ events. The renumbering is exact: it moves the records and the calendar
-// slots with their predictions as they are (no re-prediction, no position is touched, the
-// calendar keeps its buckets), keeps each cell's list in its order (so neighbours are visited
-// in the same order and equal collision times resolve the same way), and the queue breaks
-// ties by the original index. The events are therefore the same, bit for bit, as without
-// renumbering.
+// The speed layer's renumbering (cell_order_renumbering.h): exact, so the events are the same
+// with or without it.
 void EventSolver::renumber() {
-    events_since_renumber_ = 0;
-    const std::size_t n = disks_.size();
-    if (n == 0) return;
-    cells_.cell_order(disks_, order_);  // order_[new] = old
-    new_of_.resize(n);
-    for (std::uint32_t k = 0; k < n; ++k) new_of_[order_[k]] = k;
+    std::vector<std::vector<double>*> per_disk = state_.arrays();
+    per_disk.push_back(&last_collision_);
+    renumbering_.apply(disks_, cells_, queue_, per_disk, original_);
+    prefetch_.forget();  // (it holds disks by their old numbers)
+}
 
-    disks_scratch_.resize(n);
-    for (std::size_t k = 0; k < n; ++k) disks_scratch_[k] = disks_[order_[k]];
-    disks_.swap(disks_scratch_);
-    cells_.relink_consecutive(disks_, n);
-
-    auto permute = [&](auto& v, auto& scratch) {
-        scratch.resize(n);
-        for (std::size_t k = 0; k < n; ++k) scratch[k] = v[order_[k]];
-        v.swap(scratch);
-    };
-    for (auto* a : state_.arrays()) permute(*a, real_scratch_);
-    permute(last_collision_, real_scratch_);
-    permute(original_, index_scratch_);
-    queue_.renumber(order_, new_of_);
-    forget_names();
-    for (std::uint32_t k = 0; k < n; ++k) prediction(k).partner = new_of_[prediction(k).partner];
+void EventSolver::renumber_if_due() {
+    if (renumbering_.count_event()) renumber();
 }
 
 // Reads [backend.event]: tc (the TC model's duration), renumber_interval (events between
@@ -208,32 +172,36 @@ void EventSolver::read_options(std::size_t n) {
     // 1e-6 the gaps fall below the rounding of the positions and the loop stalls). The counter
     // `tc_elastic` says how many collisions were made elastic.
     tc_ = 1e-4 * time_scale_;
-    renumber_interval_ = renumber_events_per_disk * std::int64_t(n) + 1000;
-    prefetch_ = n >= prefetch_from_disks;
-    auto options = scene_.backend_options.find("event");
-    if (options == scene_.backend_options.end()) return;
+    std::int64_t renumber_interval = CellOrderRenumbering::default_interval(n);
+    bool prefetch = n >= prefetch_from_disks;
+    // Stage 3 of the pipeline where the cells hold a disk or more on average.
+    const bool second_records = double(n) >= double(cells_.cells_x()) * double(cells_.cells_y());
+    const auto options = scene_.backend_options.find("event");
     const std::string where = "event: scene '" + scene_.name + "' [backend.event]";
-    for (const auto& [key, value] : options->second) {
-        if (key == "tc") {
-            const auto tc = parse_whole(value, [](const std::string& t, std::size_t* used) { return std::stod(t, used); });
-            if (!tc || !(*tc >= 0) || !std::isfinite(*tc))
-                throw std::runtime_error(where + " tc = '" + value + "': expected a duration >= 0");
-            tc_ = *tc;
-        } else if (key == "renumber_interval") {
-            const auto interval =
-                parse_whole(value, [](const std::string& t, std::size_t* used) { return std::stoll(t, used); });
-            if (!interval || *interval < 1)
-                throw std::runtime_error(where + " renumber_interval = '" + value +
-                                         "': expected a whole number of events >= 1");
-            renumber_interval_ = *interval;
-        } else if (key == "prefetch") {
-            if (value != "auto" && value != "on" && value != "off")
-                throw std::runtime_error(where + " prefetch = '" + value + "': expected \"auto\", \"on\" or \"off\"");
-            if (value != "auto") prefetch_ = value == "on";
-        } else {
-            throw std::runtime_error(where + ": unknown key '" + key + "' (known: tc, renumber_interval, prefetch)");
+    if (options != scene_.backend_options.end())
+        for (const auto& [key, value] : options->second) {
+            if (key == "tc") {
+                const auto tc = parse_whole(value, [](const std::string& t, std::size_t* used) { return std::stod(t, used); });
+                if (!tc || !(*tc >= 0) || !std::isfinite(*tc))
+                    throw std::runtime_error(where + " tc = '" + value + "': expected a duration >= 0");
+                tc_ = *tc;
+            } else if (key == "renumber_interval") {
+                const auto interval =
+                    parse_whole(value, [](const std::string& t, std::size_t* used) { return std::stoll(t, used); });
+                if (!interval || *interval < 1)
+                    throw std::runtime_error(where + " renumber_interval = '" + value +
+                                             "': expected a whole number of events >= 1");
+                renumber_interval = *interval;
+            } else if (key == "prefetch") {
+                if (value != "auto" && value != "on" && value != "off")
+                    throw std::runtime_error(where + " prefetch = '" + value + "': expected \"auto\", \"on\" or \"off\"");
+                if (value != "auto") prefetch = value == "on";
+            } else {
+                throw std::runtime_error(where + ": unknown key '" + key + "' (known: tc, renumber_interval, prefetch)");
+            }
         }
-    }
+    renumbering_.set_interval(renumber_interval);
+    prefetch_.configure(prefetch, second_records);
 }
 
 // The checks are shared with the plain solver (hard_disk_input.h): both refuse the same starts.
@@ -249,116 +217,26 @@ void EventSolver::advance_to(double t) {
     check_target_time("event", t, now_, scene_.run.dt, false);  // NaN would become every disk's time
     while (!queue_.empty() && queue_.top_time() <= t) {
         process_event();
-        if (++events_since_renumber_ >= renumber_interval_) renumber();
+        renumber_if_due();
     }
     now_ = t;
 }
 
-// Software pipelining over the coming events. Successive events fall at unrelated places in
-// the box, so once the state outgrows the cache every event waits for a chain of cache misses:
-// its calendar slot and record, then the list heads of the cells it will look at (which need
-// the record's cell), then the records in those cells (which need the heads), then the next
-// records in the same cells. The calendar knows the disks of the next few events
-// (EventQueue::next_upcoming), so each is taken through this chain one link per event, ahead
-// of time (prefetch_line, core/prefetch.h: a request the compiler cannot delete):
-//   stage 0: its calendar slot and record are requested;
-//   stage 1 (one event later): the list heads of its cells (cells_to_visit), and its
-//            predicted partner's record and slot (for a crossing, the kept partner's record,
-//            whose event counter the crossing reads);
-//   stage 2: the first record of each of those cells, and the list heads around the partner;
-//   stage 3: the second record of each of those cells, only where the cells hold a disk or
-//            more on average (prefetch_second_records_: dilute gases, very dense or crowded
-//            cells); where they hold fewer, few lists have a second record and the stage cost
-//            more than it saved.
-// The misses of three or four coming events then overlap with the work of the current one,
-// instead of following each other. Prefetches are hints: the events, and their order, are the
-// same with or without them (docs/event-driven.md, "Performance", has the measurements).
-void EventSolver::prefetch_upcoming() {
-    constexpr std::uint32_t none = EventQueue<Slot>::none;
-    const Upcoming& third = upcoming_[2];
-    if (third.disk != none && prefetch_second_records_) cells_.prefetch_records(disks_, third.cells, 1);
-    const Upcoming& second = upcoming_[1];
-    if (second.disk != none) {
-        cells_.prefetch_records(disks_, second.cells, 0);
-        const Prediction& p = prediction(second.disk);
-        if (p.kind == EventKind::pair) cells_.prefetch_heads(cells_.neighbourhood_block(disks_[p.partner].links));
-    }
-    Upcoming& first = upcoming_[0];
-    if (first.disk != none) {
-        first.cells = cells_to_visit(first.disk);  // (its record arrived: its cell is known)
-        cells_.prefetch_heads(first.cells);
-        // A collision reads and writes its partner's record and slot; a crossing reads the
-        // event counter in its kept partner's record (predict_after_crossing).
-        const Prediction& p = prediction(first.disk);
-        if (p.kind == EventKind::pair || (p.kind == EventKind::cell && p.pair_time != never))
-            prefetch_line(&disks_[p.partner]);
-        if (p.kind == EventKind::pair) {
-            prefetch_line(queue_.slot_address(p.partner));
-            partners_.remember(p.partner);
-        }
-    }
-    upcoming_[2] = upcoming_[1];
-    upcoming_[1] = upcoming_[0];
-    upcoming_[0] = Upcoming{next_to_name(), {}};
-    if (upcoming_[0].disk != none) {
-        prefetch_line(&disks_[upcoming_[0].disk]);
-        prefetch_line(queue_.slot_address(upcoming_[0].disk));
-        names_.remember(upcoming_[0].disk);
-    }
-}
-
-// The next disk for the pipeline: the look-ahead's next one that is not the partner of a
-// collision already in it. About half the collisions were predicted by both disks, so each
-// has a calendar entry for it; the entry served second vanishes (serving the first
-// re-predicts both disks), and the pipeline already requested both
-// disks' records and slots for the first. Naming the second would waste a stage and, worse,
-// let the front gain on the look-ahead: the front serves more entries than there are events,
-// the walk names one per event, and where the front reaches the bucket the walk is in, the
-// walk leaves that bucket's remaining entries unnamed (docs/event-driven.md, "Prefetching the
-// coming events", has the shares of events named with and without). A partner whose own entry
-// is another, later event is passed over only if the walk reaches it while it is among the
-// last few partners, which is rare (its entry lies far ahead).
-std::uint32_t EventSolver::next_to_name() {
-    constexpr std::uint32_t none = EventQueue<Slot>::none;
-    std::uint32_t next = queue_.next_upcoming();
-    for (unsigned passed = 0; next != none && passed < partners_.size && partners_.holds(next); ++passed)
-        next = queue_.next_upcoming();
-    return next;
-}
-
-// Forgets every disk the pipeline holds (on load and after renumbering, which renames them).
-void EventSolver::forget_names() {
-    for (Upcoming& u : upcoming_) u = Upcoming{};
-    partners_.forget();
-    names_.forget();
-}
-
-// The statistic events_named_ahead: events (of all four kinds, stale ones included) whose
-// disk, or for a collision either disk, was among the last 32 disks the look-ahead named.
-// Such an event found its memory requested ahead, at least partly (a disk named one event
-// before has only its record in the cache); the others wait for each of their cache misses
-// in turn.
-void EventSolver::count_if_named(std::uint32_t i, const Prediction& p) {
-    if (names_.holds(i, p.kind == EventKind::pair ? p.partner : i)) ++named_events_;
-}
-
-// The cells whose lists the coming event of disk k will read: for a cell crossing the cell it
-// enters and the three beyond (crossing_block), else the 3x3 block around its cell.
-CellList::Block EventSolver::cells_to_visit(std::uint32_t k) const {
-    const Prediction& p = prediction(k);
-    if (p.kind == EventKind::cell) return cells_.crossing_block(disks_[k].links, p.border);
-    return cells_.neighbourhood_block(disks_[k].links);
+// The speed layer's prefetch pipeline (prefetch_pipeline.h), from 2^16 disks on: it only
+// requests memory, so the events are the same with or without it.
+void EventSolver::prefetch_coming_events() {
+    if (prefetch_.on()) prefetch_.advance(disks_, cells_, queue_);
 }
 
 void EventSolver::process_event() {
-    if (prefetch_) prefetch_upcoming();
+    prefetch_coming_events();
     const std::uint32_t i = queue_.top();
     // Event times are never earlier than the time they were predicted at (collision_time.h
     // clamps to "now"), so simulated time never runs backwards.
     now_ = std::max(now_, queue_.top_time());
     check_progress(i);
     const Prediction p = prediction(i);
-    if (prefetch_) count_if_named(i, p);
+    prefetch_.count_if_named(i, p);  // (the pipeline's statistic events_named_ahead)
     switch (p.kind) {
     case EventKind::pair:
         if (disks_[p.partner].count != p.partner_count) {
@@ -686,14 +564,14 @@ SolverStats EventSolver::stats() const {
     const double kinetic_integral = kinetic_integral_.value() + kinetic_ * (now_ - kinetic_mark_);
     SolverStats s = event_statistics(scene_, state_.size(), now_, counts, kinetic_integral);
     s.counters["tc_elastic"] = double(tc_elastic_);
-    if (prefetch_) s.counters["events_named_ahead"] = double(named_events_);
+    if (prefetch_.on()) s.counters["events_named_ahead"] = double(prefetch_.events_named_ahead());
     return s;
 }
 
 std::map<std::string, std::string> EventSolver::provenance() const {
     return {{"event.tc", describe(tc_)},
             {"event.cells", std::to_string(cells_.cells_x()) + "x" + std::to_string(cells_.cells_y())},
-            {"event.prefetch", prefetch_ ? (prefetch_second_records_ ? "on, second records" : "on") : "off"}};
+            {"event.prefetch", prefetch_.describe()}};
 }
 
 }  // namespace collide

@@ -9,7 +9,7 @@
 // The list is intrusive: the links (`CellLinks`) live inside the caller's per-disk record,
 // next to the disk's position and velocity. Walking a cell then reads one record per
 // neighbour, and that record already holds everything a collision prediction needs, so a
-// neighbour costs one cache line (event_solver.h, `Disk`). The list itself only owns the
+// neighbour costs one cache line (event_records.h, `EventDisk`). The list itself only owns the
 // first disk of every cell. Every method that follows links takes the records as `disks`,
 // any indexable container whose elements have a member `links`.
 #pragma once
@@ -18,7 +18,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/huge_page_allocator.h"
+#include "event_memory.h"
 #include "core/prefetch.h"
 #include "core/scene.h"
 #include "core/uniform_grid.h"
@@ -109,7 +109,7 @@ public:
     // the disk records outgrow the cache, walking a block of cells means a chain of cache
     // misses: the list heads, then the records they name, then the records those name. The
     // solver knows the coming events a few events ahead and walks each chain one link per
-    // event ahead of time (EventSolver::prefetch_upcoming), with the methods below. They only
+    // event ahead of time (prefetch_pipeline.h), with the methods below. They only
     // request memory; nothing they do changes a result.
 
     // A rectangle of cells, columns x0..x1 and rows y0..y1; empty when any of its cells would
@@ -173,7 +173,7 @@ public:
         for_each_in_block(disks, b.x0, b.x1, b.y0, b.y1, visit);
     }
 
-    // Renumbering for memory locality (EventSolver::renumber). cell_order lists the disks cell
+    // Renumbering for memory locality (cell_order_renumbering.h). cell_order lists the disks cell
     // by cell in the order of the cell index, each cell in the order of its list: order[k] is
     // the disk that becomes number k.
     template <typename Disks>
@@ -262,7 +262,7 @@ private:
     bool periodic_ = false;
     std::int64_t cells_x_ = 1, cells_y_ = 1;
     double cell_w_ = 1, cell_h_ = 1;
-    HugePageVector<std::uint32_t> head_;  // first disk of each cell (the links live in the disks)
+    EventArray<std::uint32_t> head_;  // first disk of each cell (the links live in the disks)
 };
 
 }  // namespace collide
