@@ -40,7 +40,9 @@ void BenchReport::expect_work(double total) {
 }
 
 void BenchReport::work_done(double amount, const std::string& what) {
-    if (!progress_) progress_ = std::make_unique<ProgressLine>(stderr);
+    // In a log every step of a suite gets its line (a suite has tens of them, and the order of
+    // the measurements is part of what a reader checks); on a terminal one line in place.
+    if (!progress_) progress_ = std::make_unique<ProgressLine>(stderr, 0.0);
     work_done_ += amount;
     progress_->update(work_total_ > 0 ? work_done_ / work_total_ : 0.0, "[" + suite_ + "] " + what);
 }

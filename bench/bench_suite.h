@@ -45,7 +45,8 @@ public:
     void add(const Row& row);
     // Progress with the time left (core/progress_line.h, on stderr): a suite says how much
     // work it plans, in its own unit (disk-steps, collisions), then how much is done as it
-    // goes. The time left assumes the rest runs at the rate of the part done so far.
+    // goes. The time left assumes the rest runs at the rate of the part done so far. In a log
+    // (not a terminal) every call prints a line.
     void expect_work(double total);
     void work_done(double amount, const std::string& what);
     // Free-form notes ("box2d stopped at N = 1e5: one step took 1.3 s").

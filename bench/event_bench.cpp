@@ -124,8 +124,9 @@ void time_interleaved(std::vector<SizeCase>& cases, double phi, BenchReport& rep
             c.timing.cpu_seconds += t.cpu_seconds;
             c.window_ns.push_back(1e9 * t.seconds / double(c.solver->stats().contacts - start));
             char what[128];
-            std::snprintf(what, sizeof what, "area fraction %.1f, window %d of %d: %s N = %lld", phi, w + 1, timing_windows,
-                          c.backend.c_str(), static_cast<long long>(c.n));
+            std::snprintf(what, sizeof what, "area fraction %.1f, timing window %d of %d: N = %lld (%s, %lld collisions)", phi,
+                          w + 1, timing_windows, static_cast<long long>(c.n), c.backend.c_str(),
+                          static_cast<long long>(c.per_window));
             report.work_done(double(c.per_window), what);
         }
 }
