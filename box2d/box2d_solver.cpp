@@ -316,13 +316,13 @@ SolverStats Box2dSolver::stats() const {
     return s;
 }
 
-// The preset and every effective setting, so that a run file says which Box2D it measured.
+// The preset and every effective setting, so that a run file says how Box2D was driven. Which
+// Box2D is the build's provenance (box2d_version, the installed package's version): the
+// library's own b2_version is not recorded, as Box2D 2.4.1 still calls itself 2.4.0.
 std::map<std::string, std::string> Box2dSolver::provenance() const {
-    const b2Version v = b2_version;
     auto flag = [](bool b) { return std::string(b ? "true" : "false"); };
     const double threshold = restitution_threshold();
     return {
-        {"box2d_version", std::to_string(v.major) + "." + std::to_string(v.minor) + "." + std::to_string(v.revision)},
         {"box2d_preset", options_.preset},
         {"box2d_length_scale", round_trip_text(units_.scale)},
         {"box2d_time_step", round_trip_text(scene_.run.dt / substeps_)},

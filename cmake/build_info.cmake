@@ -7,10 +7,10 @@ set(COLLIDE_CXX_FLAGS "${CMAKE_CXX_FLAGS} ${CMAKE_CXX_FLAGS_${_bt}}")
 if(COLLIDE_SANITIZE)
   string(APPEND COLLIDE_CXX_FLAGS " -fsanitize=address,undefined")
 endif()
-# The installed Box2D package's own version. Box2D 2.4.1 still says 2.4.0 in its b2_version
-# (which the box2d backend records as backend_box2d_version) and Findbox2d.cmake can only tell
-# 2.4 from the headers, so the package's version is read here, at configure time: from its
-# pkg-config file, else from dpkg (Debian's package version, e.g. 2.4.1-3), else "unknown".
+# Box2D's version, recorded once (box2d_version): the installed package's own version. The
+# library's b2_version cannot be trusted (Box2D 2.4.1 still says 2.4.0) and Findbox2d.cmake can
+# only tell 2.4 from the headers, so the package's version is read here, at configure time: from
+# its pkg-config file, else from dpkg (Debian's package version, e.g. 2.4.1-3), else "unknown".
 find_package(PkgConfig QUIET)
 if(PKG_CONFIG_FOUND)
   pkg_check_modules(COLLIDE_BOX2D_PC QUIET box2d)
@@ -37,8 +37,7 @@ add_custom_target(collide_build_info
     -DEIGEN_VERSION=${Eigen3_VERSION}
     -DCLI11_VERSION=${CLI11_VERSION}
     -DTOMLPP_VERSION=${tomlplusplus_VERSION}
-    -DBOX2D_VERSION=${box2d_VERSION}
-    -DBOX2D_PACKAGE_VERSION=${COLLIDE_BOX2D_PACKAGE_VERSION}
+    -DBOX2D_VERSION=${COLLIDE_BOX2D_PACKAGE_VERSION}
     -DOPENCL_VERSION=${OpenCL_VERSION_STRING}
     -DPYTHON=${Python3_EXECUTABLE}
     -P ${CMAKE_SOURCE_DIR}/cmake/write_build_info.cmake

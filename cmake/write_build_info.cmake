@@ -31,7 +31,6 @@ std::map<std::string, std::string> compiled_build_info() {
         {\"cli11_version\", \"${CLI11_VERSION}\"},
         {\"tomlplusplus_version\", \"${TOMLPP_VERSION}\"},
         {\"box2d_version\", \"${BOX2D_VERSION}\"},
-        {\"box2d_package_version\", \"${BOX2D_PACKAGE_VERSION}\"},
         {\"opencl_headers_version\", \"${OPENCL_VERSION}\"},
         {\"python\", \"${PYTHON}\"},
     };

@@ -66,7 +66,7 @@ Metrics compute_disk_metrics(const Scene& scene, const ParticleState<double>& s,
         const double mass = s.mass[i];
         px.add(mass * s.vx[i]);
         py.add(mass * s.vy[i]);
-        kinetic.add(0.5 * mass * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i]));
+        kinetic.add(disk_kinetic_energy(mass, s.vx[i], s.vy[i]));
         potential.add(-mass * (gx * s.x[i] + gy * s.y[i]));
         if (!scene.periodic())
             m.max_wall_penetration = std::max(m.max_wall_penetration,

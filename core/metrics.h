@@ -10,6 +10,11 @@
 
 namespace collide {
 
+// m |v|^2 / 2 of one disk: the kinetic energy every sum of collide is made of (compute_metrics,
+// the event solver's running energy, `collide explain`'s energy budget).
+inline double disk_kinetic_energy(double mass, double vx, double vy) { return 0.5 * mass * (vx * vx + vy * vy); }
+
+// One row of the run schema (core/run_schema.h names, units and describes every field).
 struct Metrics {
     double time = 0;
     double momentum_x = 0, momentum_y = 0;  // sum m v over non-stone disks

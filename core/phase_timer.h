@@ -1,6 +1,11 @@
-// PhaseTimer: adds the wall time of one phase of a step (grid, collide, correct, integrate) to
-// a solver's statistics when it goes out of scope. The stepping backends time their phases
-// with it, so `SolverStats::phase_seconds` means the same in each.
+// The phases of a step of the stepping rules, named once for every backend that runs them
+// (step, cpu; the OpenCL kernels' comments use the same words) and for SolverStats::phase_seconds:
+//   grid       rebuild the broad phase (the uniform grid / cell list)
+//   collide    the Jacobi contact pass: every disk's correction from one snapshot
+//   correct    apply the corrections, then the walls
+//   integrate  forces and Euler (the rule decides whether before or after the contacts)
+// PhaseTimer adds the wall time of one phase to a solver's statistics when it goes out of
+// scope, so `phase_seconds` means the same in each backend.
 #pragma once
 
 #include <chrono>
@@ -8,6 +13,13 @@
 #include "solver.h"
 
 namespace collide {
+
+namespace phase {
+inline constexpr const char* grid = "grid";
+inline constexpr const char* collide = "collide";
+inline constexpr const char* correct = "correct";
+inline constexpr const char* integrate = "integrate";
+}  // namespace phase
 
 class PhaseTimer {
 public:

@@ -5,20 +5,12 @@
 #include <cmath>
 #include <cstdint>
 
+#include "output_file.h"
+#include "run_schema.h"
 #include "run_writer.h"
 
 namespace collide {
 namespace {
-
-// The datasets RunWriter writes under /metrics (its tables in run_writer.cpp). A name here
-// that the writer no longer writes fails RunReader.ReadsBackWhatTheWriterWrote.
-const char* const real_metric_names[] = {"time",        "momentum_x",  "momentum_y",   "kinetic_energy",
-                                         "potential_energy", "max_overlap", "mean_overlap",
-                                         "max_wall_penetration"};
-const char* const count_metric_names[] = {"overlapping_pairs", "nonfinite"};
-// Measures that are never negative by definition (a NaN is the run's own failure, kept).
-const char* const non_negative_metrics[] = {"kinetic_energy", "max_overlap", "mean_overlap",
-                                            "max_wall_penetration", "overlapping_pairs", "nonfinite"};
 
 bool has_link(hid_t file, const std::string& name) {
     // H5Lexists fails (< 0) when a parent group is missing: that is "no" too.
@@ -65,6 +57,8 @@ hsize_t length_of(hid_t file, const std::string& name, const std::string& path) 
 }  // namespace
 
 RunFile::RunFile(const std::string& path) : path_(path) {
+    // The system's own cause (missing, a link loop, a directory, no permission) before HDF5's.
+    if (const std::string why = input_path_problem(path, false); !why.empty()) fail(why);
     silence_hdf5_error_printing();
     const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
     if (id < 0) {
@@ -189,18 +183,21 @@ void RunFile::read_constants() {
 
 void RunFile::read_metrics() {
     const hsize_t t = length_of(file_.get(), "metrics/time", path_);
-    for (const char* name : real_metric_names) metrics_[name] = read_all(std::string("metrics/") + name, false, {t});
-    for (const char* name : count_metric_names) metrics_[name] = read_all(std::string("metrics/") + name, true, {t});
+    for (const MetricColumn& column : metric_columns)
+        metrics_[column.name] = read_all(std::string("metrics/") + column.name, column.integer(), {t});
     const std::vector<double>& time = metrics_["time"];
     for (std::size_t k = 0; k < t; ++k)
         if (!std::isfinite(time[k]) || (k > 0 && time[k] < time[k - 1]))
             fail("/metrics/time: row " + std::to_string(k) + ": time " + std::to_string(time[k]) +
                  " is not finite or runs backwards");
-    for (const char* name : non_negative_metrics)
+    for (const MetricColumn& column : metric_columns) {
+        if (!column.non_negative) continue;
+        const std::vector<double>& values = metrics_[column.name];
         for (std::size_t k = 0; k < t; ++k)
-            if (metrics_[name][k] < 0)
-                fail(std::string("/metrics/") + name + ": row " + std::to_string(k) + ": " +
-                     std::to_string(metrics_[name][k]) + " is negative, which this measure cannot be");
+            if (values[k] < 0)
+                fail(std::string("/metrics/") + column.name + ": row " + std::to_string(k) + ": " +
+                     std::to_string(values[k]) + " is negative, which this measure cannot be");
+    }
     for (std::size_t k = 0; k < t; ++k)
         if (metrics_["nonfinite"][k] > double(disk_count()))
             fail("/metrics/nonfinite: row " + std::to_string(k) + ": more non-finite disks than disks");
@@ -210,6 +207,13 @@ const std::vector<double>& RunFile::metric(const std::string& name) const {
     const auto found = metrics_.find(name);
     if (found == metrics_.end()) throw std::logic_error("RunFile::metric: no metric '" + name + "'");
     return found->second;
+}
+
+Metrics RunFile::metrics_at(std::size_t k) const {
+    if (k >= output_count()) throw std::out_of_range(path_ + ": no output " + std::to_string(k));
+    Metrics m;
+    for (const MetricColumn& column : metric_columns) column.assign(m, metrics_.at(column.name)[k]);
+    return m;
 }
 
 void RunFile::read_frame_times() {

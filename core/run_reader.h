@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "hdf5_handle.h"
+#include "metrics.h"
 #include "particle_state.h"
 
 namespace collide {
@@ -51,8 +52,13 @@ public:
     std::string attribute(const std::string& name) const;
     // radius, mass and inv_mass, checked; x, y, vx, vy sized N.
     const ParticleState<double>& constants() const { return constants_; }
-    // /metrics/<name>, one value per output (count metrics converted to double).
+    // /metrics/<name> for a column of the run schema (core/run_schema.h), one value per output
+    // (count columns converted to double).
     const std::vector<double>& metric(const std::string& name) const;
+    // Every column at output k, as the run computed them.
+    Metrics metrics_at(std::size_t k) const;
+    // Every root attribute (all are text), by name.
+    std::map<std::string, std::string> root_attributes() const;
 
     // Frames (only with has_frames()): the time of each, and the state at frame k.
     const std::vector<double>& frame_times() const { return frame_times_; }
@@ -64,7 +70,6 @@ private:
     [[noreturn]] void fail(const std::string& what) const;
     Hdf5Handle open_dataset(const std::string& name, bool integer, const std::vector<hsize_t>& shape) const;
     std::vector<double> read_all(const std::string& name, bool integer, const std::vector<hsize_t>& shape) const;
-    std::map<std::string, std::string> root_attributes() const;
     void check_format() const;
     void read_constants();
     void read_metrics();

@@ -17,47 +17,12 @@
 #include "crc32.h"
 #include "hdf5_handle.h"
 #include "output_file.h"
+#include "run_schema.h"
 
 namespace collide {
 namespace {
 
-// ---------------------------------------------------------------------------------------
-// What goes into /metrics: one dataset per Metrics field, with its units (in the scene's own
-// units: the scene file states what "length", "mass" and "time" are) and meaning.
-
-struct RealMetric {
-    const char* name;
-    double Metrics::*field;
-    const char* units;
-    const char* meaning;
-};
-
-struct CountMetric {
-    const char* name;
-    std::int64_t Metrics::*field;
-    const char* meaning;
-};
-
-const RealMetric real_metrics[] = {
-    {"time", &Metrics::time, "time", "simulation time of the output"},
-    {"momentum_x", &Metrics::momentum_x, "mass*length/time", "sum of m*vx over non-stone disks"},
-    {"momentum_y", &Metrics::momentum_y, "mass*length/time", "sum of m*vy over non-stone disks"},
-    {"kinetic_energy", &Metrics::kinetic_energy, "mass*length^2/time^2",
-     "sum of m*|v|^2/2 over non-stone disks"},
-    {"potential_energy", &Metrics::potential_energy, "mass*length^2/time^2",
-     "gravitational, -sum of m*(g.x) (0 without gravity)"},
-    {"max_overlap", &Metrics::max_overlap, "1",
-     "max over pairs of (r_i + r_j - d)/(r_i + r_j), 0 without overlap"},
-    {"mean_overlap", &Metrics::mean_overlap, "1",
-     "mean of (r_i + r_j - d)/(r_i + r_j) over overlapping pairs"},
-    {"max_wall_penetration", &Metrics::max_wall_penetration, "1",
-     "max over disks of the depth beyond a reflecting wall divided by the radius"},
-};
-
-const CountMetric count_metrics[] = {
-    {"overlapping_pairs", &Metrics::overlapping_pairs, "pairs with |x_i - x_j| < r_i + r_j"},
-    {"nonfinite", &Metrics::nonfinite, "disks with a NaN or Inf coordinate or velocity"},
-};
+// What goes into /metrics: one dataset per column of the run schema (core/run_schema.h).
 
 constexpr hsize_t metrics_chunk_rows = 256;
 constexpr std::size_t frame_chunk_target_bytes = 256 * 1024;
@@ -225,8 +190,7 @@ struct RunWriter::Impl {
     AtomicOutputFile output;
     Hdf5Handle file;
     Hdf5Handle metrics_group;
-    std::vector<Hdf5Handle> real_metric_datasets;   // in the order of real_metrics
-    std::vector<Hdf5Handle> count_metric_datasets;  // in the order of count_metrics
+    std::vector<Hdf5Handle> metric_datasets;  // in the order of metric_columns
     hsize_t outputs = 0;                            // rows written to every time series
 
     bool write_frames;
@@ -254,17 +218,12 @@ struct RunWriter::Impl {
 
     void create_metric_datasets() {
         metrics_group = create_group(file.get(), "metrics", target);
-        for (const RealMetric& metric : real_metrics) {
-            Hdf5Handle dataset = create_growing_dataset(metrics_group.get(), metric.name, H5T_IEEE_F64LE, {},
+        for (const MetricColumn& column : metric_columns) {
+            Hdf5Handle dataset = create_growing_dataset(metrics_group.get(), column.name,
+                                                        column.integer() ? H5T_STD_I64LE : H5T_IEEE_F64LE, {},
                                                         metrics_chunk_rows, false, target + ": /metrics");
-            describe(dataset.get(), metric.units, metric.meaning, target + ": /metrics/" + metric.name);
-            real_metric_datasets.push_back(std::move(dataset));
-        }
-        for (const CountMetric& metric : count_metrics) {
-            Hdf5Handle dataset = create_growing_dataset(metrics_group.get(), metric.name, H5T_STD_I64LE, {},
-                                                        metrics_chunk_rows, false, target + ": /metrics");
-            describe(dataset.get(), "1", metric.meaning, target + ": /metrics/" + metric.name);
-            count_metric_datasets.push_back(std::move(dataset));
+            describe(dataset.get(), column.units, column.description, target + ": /metrics/" + column.name);
+            metric_datasets.push_back(std::move(dataset));
         }
     }
 
@@ -301,12 +260,12 @@ struct RunWriter::Impl {
     }
 
     void append_metrics(const Metrics& metrics) {
-        for (std::size_t k = 0; k < std::size(real_metrics); ++k)
-            append_row(real_metric_datasets[k].get(), H5T_NATIVE_DOUBLE, outputs, {}, &(metrics.*real_metrics[k].field),
-                       target + ": /metrics/" + real_metrics[k].name);
-        for (std::size_t k = 0; k < std::size(count_metrics); ++k)
-            append_row(count_metric_datasets[k].get(), H5T_NATIVE_INT64, outputs, {},
-                       &(metrics.*count_metrics[k].field), target + ": /metrics/" + count_metrics[k].name);
+        for (std::size_t k = 0; k < metric_column_count; ++k) {
+            const MetricColumn& column = metric_columns[k];
+            const std::string where = target + ": /metrics/" + column.name;
+            if (column.integer()) append_row(metric_datasets[k].get(), H5T_NATIVE_INT64, outputs, {}, &(metrics.*column.count), where);
+            else append_row(metric_datasets[k].get(), H5T_NATIVE_DOUBLE, outputs, {}, &(metrics.*column.real), where);
+        }
     }
 
     void require_open(const char* operation) const {
@@ -317,8 +276,7 @@ struct RunWriter::Impl {
     // Closes every object, then the file (the file only really closes, and reports a failed
     // final flush, once nothing in it is open).
     void close_file() {
-        for (auto* handles : {&real_metric_datasets, &count_metric_datasets})
-            for (Hdf5Handle& handle : *handles) handle.reset();
+        for (Hdf5Handle& handle : metric_datasets) handle.reset();
         for (Hdf5Handle* handle : {&frame_time, &frame_position, &frame_velocity, &frames_group, &metrics_group})
             handle->reset();
         checked(file.reset(), target, "close the HDF5 file '" + output.temporary_path() + "'");

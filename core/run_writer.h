@@ -5,7 +5,8 @@
 //                          provenance (commit, compiler, versions, seed, command line,
 //                          backend, scene text, ...), each a variable-length UTF-8 string
 //   /particles/radius, mass, inv_mass        per-disk constants (N)
-//   /metrics/<name>        one 1-D dataset per Metrics field, one entry per output time
+//   /metrics/<name>        one 1-D dataset per column of the run schema (core/run_schema.h),
+//                          one entry per output time
 //                          (chunked and extendible, so it grows as the run goes)
 //   /stats                 attributes steps, contacts; /stats/phase_seconds and
 //                          /stats/counters hold one attribute per named entry

@@ -2,7 +2,7 @@
 // largest possible contact distance (2 r_max), so every disk that can touch disk i has its
 // centre in i's cell or one of the 8 around it (the 3x3 neighbourhood).
 //
-// Built each step by a counting sort (ParticleBox's design, no per-cell containers):
+// Built each step by a counting sort (no per-cell containers, so nothing is allocated per step):
 //   1. count the disks in each cell,
 //   2. exclusive prefix sum of the counts -> cell_start[c], the first slot of cell c,
 //   3. scatter each disk index into its cell's next free slot of `sorted_index`.

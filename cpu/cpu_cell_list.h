@@ -1,5 +1,5 @@
 // CellList: the broad phase of the `cpu` backend, a uniform grid rebuilt by counting sort
-// (the same scheme as core/uniform_grid.h, ParticleBox's flat index buffer) with three changes
+// (the same scheme as core/uniform_grid.h: one flat index buffer) with three changes
 // for speed:
 //   * the whole sort runs in parallel (below), in one parallel region;
 //   * the caller decides what "placing disk i into slot k" means: writing an index buffer

@@ -59,7 +59,7 @@ void CpuSolver::load(const Scene& scene, const ParticleState<double>& initial) {
     grid_builds_ = 0;
     stats_ = SolverStats{};
 
-    features_ = specialise_ ? FeatureSet::of(scene, state_) : FeatureSet::generic(scene);
+    features_ = specialise_ ? FeatureSet::of(scene_features(scene, initial)) : FeatureSet::generic(scene);
     auto all_equal = [](const std::vector<float>& a) {
         return std::all_of(a.begin(), a.end(), [&](float v) { return v == a.front(); });
     };
@@ -95,9 +95,9 @@ void CpuSolver::step_collide_first(float dt) {
     correct_and_integrate(dt);
 }
 
-// ParticleBox's six phases: (1) field accelerations, (2) velocity with damping, (3) position,
-// fused into one pass by integrate(); (4) grid rebuild; (5) contact pass; (6) corrections and
-// world bounds.
+// The integrate-first sub-step in six steps: (1) field accelerations, (2) velocity with damping,
+// (3) position, fused into one pass by integrate(); (4) grid rebuild; (5) contact pass;
+// (6) corrections and world bounds.
 void CpuSolver::substep_integrate_first(float h) {
     integrate(h);
     build_grid();
@@ -106,7 +106,7 @@ void CpuSolver::substep_integrate_first(float h) {
 }
 
 void CpuSolver::integrate(float h) {
-    PhaseTimer timer(stats_, "integrate");
+    PhaseTimer timer(stats_, phase::integrate);
     dispatch([&]<bool Gravity, bool Damping, bool Stones>() {
         parallel_for(state_.size(), threads_, [&](std::size_t b, std::size_t e) {
             return integrate_range<Gravity, Damping, Stones>(state_, params_, h, b, e);
@@ -115,7 +115,7 @@ void CpuSolver::integrate(float h) {
 }
 
 void CpuSolver::build_grid() {
-    PhaseTimer timer(stats_, "grid");
+    PhaseTimer timer(stats_, phase::grid);
     const std::size_t n = state_.size();
     // Every sort_interval-th build moves the disks themselves into cell order, so that the
     // neighbours the contact pass reads lie next to each other in memory and it needs no index
@@ -164,20 +164,20 @@ void CpuSolver::build_grid() {
 }
 
 void CpuSolver::collide() {
-    PhaseTimer timer(stats_, "collide");
+    PhaseTimer timer(stats_, phase::collide);
     // Parallel over rows of cells; a row holds about cells_x * (disks per cell) disks.
     const std::size_t rows = std::size_t(grid_.cells_y());
     const std::size_t min_rows = std::max<std::size_t>(1, kMinChunk / std::size_t(std::max<std::int64_t>(1, grid_.cells_x())));
     dispatch([&]<bool Friction, bool Stones, bool UniformRadius, bool Periodic, bool InCellOrder>() {
         stats_.contacts += parallel_for(rows, threads_, [&](std::size_t b, std::size_t e) {
-            return collide_rows<Friction, Stones, UniformRadius, Periodic, InCellOrder>(state_, grid_, params_,
+            return collide_range<Friction, Stones, UniformRadius, Periodic, InCellOrder>(state_, grid_, params_,
                                                                                        corrections(), b, e);
         }, state_.size(), min_rows);
     }, features_.friction, features_.stones, features_.uniform_radius, features_.periodic, in_cell_order_);
 }
 
 void CpuSolver::correct() {
-    PhaseTimer timer(stats_, "correct");
+    PhaseTimer timer(stats_, phase::correct);
     dispatch([&]<bool Stones, bool Periodic>() {
         parallel_for(state_.size(), threads_, [&](std::size_t b, std::size_t e) {
             return correct_range<Stones, Periodic>(state_, corrections(), params_, b, e);
@@ -186,7 +186,7 @@ void CpuSolver::correct() {
 }
 
 void CpuSolver::correct_and_integrate(float dt) {
-    PhaseTimer timer(stats_, "integrate");
+    PhaseTimer timer(stats_, phase::integrate);
     dispatch([&]<bool Gravity, bool Damping, bool Stones, bool Periodic>() {
         parallel_for(state_.size(), threads_, [&](std::size_t b, std::size_t e) {
             return correct_and_integrate_range<Gravity, Damping, Stones, Periodic>(state_, corrections(), params_,

@@ -1,18 +1,14 @@
 #include "feature_set.h"
 
-#include <algorithm>
-
 namespace collide::cpu {
 
-FeatureSet FeatureSet::of(const Scene& scene, const ParticleState<float>& state) {
+FeatureSet FeatureSet::of(const SceneFeatures& scene) {
     FeatureSet f;
-    f.gravity = scene.has_gravity();
-    f.damping = scene.has_damping();
-    f.friction = scene.has_friction();
-    f.stones = std::any_of(state.inv_mass.begin(), state.inv_mass.end(), [](float w) { return w == 0.0f; });
-    f.uniform_radius = !state.radius.empty() &&
-                       std::all_of(state.radius.begin(), state.radius.end(),
-                                   [&](float r) { return r == state.radius.front(); });
+    f.gravity = scene.gravity;
+    f.damping = scene.damping;
+    f.friction = scene.friction;
+    f.stones = scene.stones;
+    f.uniform_radius = scene.uniform_radius;
     f.periodic = scene.periodic();
     return f;
 }

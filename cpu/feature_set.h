@@ -1,5 +1,6 @@
-// FeatureSet: which optional physics a scene uses, and the dispatch that turns it into
-// template arguments, so that a scene pays only for what it uses (ARCHITECTURE: "leave out
+// FeatureSet: which loop instantiation a scene runs, made from its SceneFeatures
+// (core/scene_features.h, where what a scene uses is worked out), and the dispatch that turns
+// it into template arguments, so that a scene pays only for what it uses (ARCHITECTURE: "leave out
 // what a scene does not need").
 //
 // Each hot loop of the `cpu` backend is a template on the features it touches. With a feature
@@ -8,8 +9,8 @@
 // stone exists). bench/features_suite.cpp measures what this saves.
 #pragma once
 
-#include "core/particle_state.h"
 #include "core/scene.h"
+#include "core/scene_features.h"
 
 namespace collide::cpu {
 
@@ -21,8 +22,8 @@ struct FeatureSet {
     bool uniform_radius = false; // every disk has the same radius
     bool periodic = false;       // periodic boundaries (a geometry choice, always honoured)
 
-    // The features `scene` and `state` actually use.
-    static FeatureSet of(const Scene& scene, const ParticleState<float>& state);
+    // The features the scene actually uses.
+    static FeatureSet of(const SceneFeatures& features);
     // The unspecialised instantiation: every optional feature compiled in, driven by the
     // scene's runtime values (zero gravity, zero friction, ...). Gives bitwise the same
     // results as the specialised one; the benchmark compares their speed.

@@ -1,9 +1,9 @@
 // parallel_for: the one way the `cpu` backend runs a loop over particles in parallel.
 //
-// ParticleBox keeps a persistent worker pool and lets workers claim chunks of the particle range
-// from a shared cursor, about four chunks per worker, so that a dense region (more contacts,
-// more work per particle) does not leave the other workers idle; workloads too small to pay
-// for the hand-off run inline on the calling thread. OpenMP provides exactly this: the
+// A persistent worker pool whose workers claim chunks of the particle range from a shared
+// cursor, about four chunks per worker, so that a dense region (more contacts, more work per
+// particle) does not leave the other workers idle; workloads too small to pay for the hand-off
+// run inline on the calling thread. OpenMP provides exactly this: the
 // runtime keeps its threads alive between parallel regions (the persistent pool),
 // `schedule(dynamic, 1)` over chunks is the chunk-claiming cursor, and the `if` clause runs
 // small loops inline.
@@ -25,7 +25,8 @@ namespace collide::cpu {
 inline constexpr std::size_t kInlineBelow = 4096;
 // Chunks smaller than this cost more in claiming than they save in balance.
 inline constexpr std::size_t kMinChunk = 1024;
-// ParticleBox's choice: about four chunks per worker.
+// About four chunks per worker: a worker that finishes a light chunk claims another, so a
+// dense region costs at most about a quarter of one worker's share in idle time.
 inline constexpr std::size_t kChunksPerThread = 4;
 
 // Runs body over [0, n) in chunks. `particles` is the number of particles the loop covers,

@@ -25,8 +25,7 @@ struct PhaseParams {
     float xmin = 0, ymin = 0, xmax = 1, ymax = 1, width = 1, height = 1;
 };
 
-// Per-particle corrections of one Jacobi contact pass (ParticleBox keeps them in the then-unused
-// acceleration arrays; here they have their own arrays).
+// Per-particle corrections of one Jacobi contact pass, in arrays of their own.
 struct Corrections {
     float* dx;
     float* dy;
@@ -65,7 +64,7 @@ inline void apply_bounds(float& x, float& y, float& vx, float& vy, float radius,
 }
 
 // Integrate-first, phases 1-3: field accelerations, velocity with damping, then position with
-// the new velocity (semi-implicit Euler, ParticleBox).
+// the new velocity (semi-implicit, symplectic Euler).
 template <bool Gravity, bool Damping, bool Stones>
 std::int64_t integrate_range(ParticleState<float>& s, const PhaseParams& p, float h, std::size_t begin,
                              std::size_t end) {
@@ -93,7 +92,7 @@ std::int64_t integrate_range(ParticleState<float>& s, const PhaseParams& p, floa
 // the state itself is in cell order (CpuSolver's reorder), so slot k is disk k and the
 // candidates are contiguous in every array; otherwise slots map to disks through the index.
 template <bool Friction, bool Stones, bool UniformRadius, bool Periodic, bool InCellOrder>
-std::int64_t collide_rows(const ParticleState<float>& s, const CellList& grid, const PhaseParams& p,
+std::int64_t collide_range(const ParticleState<float>& s, const CellList& grid, const PhaseParams& p,
                           Corrections out, std::size_t row_begin, std::size_t row_end) {
     const float *x = s.x.data(), *y = s.y.data(), *vx = s.vx.data(), *vy = s.vy.data();
     const float *radius = s.radius.data(), *inv_mass = s.inv_mass.data();
@@ -126,7 +125,7 @@ std::int64_t collide_rows(const ParticleState<float>& s, const CellList& grid, c
                                 sep_x = WallLaw<float>::minimum_image(sep_x, p.width);
                                 sep_y = WallLaw<float>::minimum_image(sep_y, p.height);
                             }
-                            // Squared-distance reject first (ParticleBox): no square root, no
+                            // Squared-distance reject first: no square root, no
                             // other load, no law call. Disk i itself (distance 0) passes it
                             // and is skipped by the slot test.
                             const float contact2 = UniformRadius ? uniform_contact2 : (ri + radius[j]) * (ri + radius[j]);

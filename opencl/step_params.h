@@ -5,35 +5,26 @@
 
 #include "core/particle_state.h"
 #include "core/scene.h"
+#include "core/scene_features.h"
 #include "core/uniform_grid.h"
 #include "particle_layout.h"
 
 namespace collide::opencl {
 
-// True if every disk has the same radius (the kernels then use one constant contact distance).
-inline bool uniform_radius(const ParticleState<double>& s) {
-    for (double r : s.radius)
-        if (r != s.radius.front()) return false;
-    return !s.radius.empty();
-}
-
-inline bool has_stones(const ParticleState<double>& s) {
-    for (double w : s.inv_mass)
-        if (w == 0) return true;
-    return false;
-}
-
-// The -D flags of kernels/prelude.cl for this scene: a kernel pays only for what it uses.
+// The -D flags of kernels/prelude.cl for this scene's features (core/scene_features.h): a
+// kernel pays only for what it uses. With COLLIDE_UNIFORM_RADIUS the kernels use one constant
+// contact distance.
 inline std::string feature_flags(const Scene& scene, const ParticleState<double>& s, bool real_double) {
+    const SceneFeatures f = scene_features(scene, s);
     std::string flags;
     if (real_double) flags += " -D COLLIDE_REAL_DOUBLE";
     if (scene.run.order == StepOrder::integrate_first) flags += " -D COLLIDE_INTEGRATE_FIRST";
-    if (scene.periodic()) flags += " -D COLLIDE_PERIODIC";
-    if (scene.has_gravity()) flags += " -D COLLIDE_GRAVITY";
-    if (scene.has_damping()) flags += " -D COLLIDE_DAMPING";
-    if (scene.has_friction()) flags += " -D COLLIDE_FRICTION";
-    if (has_stones(s)) flags += " -D COLLIDE_STONES";
-    if (uniform_radius(s)) flags += " -D COLLIDE_UNIFORM_RADIUS";
+    if (f.periodic()) flags += " -D COLLIDE_PERIODIC";
+    if (f.gravity) flags += " -D COLLIDE_GRAVITY";
+    if (f.damping) flags += " -D COLLIDE_DAMPING";
+    if (f.friction) flags += " -D COLLIDE_FRICTION";
+    if (f.stones) flags += " -D COLLIDE_STONES";
+    if (f.uniform_radius) flags += " -D COLLIDE_UNIFORM_RADIUS";
     return flags.empty() ? flags : flags.substr(1);
 }
 

@@ -2,7 +2,7 @@
  * OpenCL C like contact_law.cl.h (the includer defines `Real`), so step, cpu and the kernels
  * treat walls identically.
  *
- * Reflecting wall (the OpenCL engine's integrate kernel, with restitution): a disk whose edge is past
+ * Reflecting wall, with restitution: a disk whose edge is past
  * the wall is clamped back to touch it (centre at wall + r) and its velocity component into
  * the wall is reversed and scaled by the wall restitution. Clamping keeps wall penetration
  * from accumulating over steps; the energy it removes or adds is part of the rule's error.

@@ -15,6 +15,7 @@
 #include "core/output_file.h"
 #include "core/provenance.h"
 #include "core/run_export.h"
+#include "core/run_reader.h"
 #include "core/run_driver.h"
 #include "core/scene_loader.h"
 #include "core/scene_overrides.h"
@@ -65,28 +66,7 @@ py::dict run(const Scene& given, const std::string& backend_name, const std::str
         throw py::error_already_set();  // the KeyboardInterrupt PyErr_CheckSignals set
     }
 
-    py::dict metrics;
-    const auto& series = result.series;
-    // One array per Metrics field, with the field's type (the counts are int64, as in the HDF5 file).
-    auto column = [&series](auto field) {
-        using T = decltype(field(series.front()));
-        std::vector<T> v;
-        for (const Metrics& m : series) v.push_back(field(m));
-        py::array_t<T> a(py::ssize_t(v.size()), v.data());
-        a.attr("flags").attr("writeable") = false;
-        return a;
-    };
-    metrics["time"] = column([](const Metrics& m) { return m.time; });
-    metrics["momentum_x"] = column([](const Metrics& m) { return m.momentum_x; });
-    metrics["momentum_y"] = column([](const Metrics& m) { return m.momentum_y; });
-    metrics["kinetic_energy"] = column([](const Metrics& m) { return m.kinetic_energy; });
-    metrics["potential_energy"] = column([](const Metrics& m) { return m.potential_energy; });
-    metrics["total_energy"] = column([](const Metrics& m) { return m.total_energy(); });
-    metrics["overlapping_pairs"] = column([](const Metrics& m) { return m.overlapping_pairs; });
-    metrics["max_overlap"] = column([](const Metrics& m) { return m.max_overlap; });
-    metrics["mean_overlap"] = column([](const Metrics& m) { return m.mean_overlap; });
-    metrics["max_wall_penetration"] = column([](const Metrics& m) { return m.max_wall_penetration; });
-    metrics["nonfinite"] = column([](const Metrics& m) { return m.nonfinite; });
+    const py::dict metrics = metric_series_dict(result.series);
 
     const ParticleState<double>& s = result.final_state;
     py::dict d;
@@ -194,6 +174,50 @@ void check_export(const std::string& run, const std::string& out) {
     require_frames(run);
 }
 
+// A run file read back through the checked reader (core/run_reader.h): every check `collide
+// render` and `collide report` make, then the columns of the run schema as NumPy arrays. With
+// `frames`, every frame as (T, N, 2) arrays (each checked as it is read).
+py::dict read_run(const std::string& path, bool frames) {
+    const RunFile run(path);
+    py::dict attributes;
+    for (const auto& [name, value] : run.root_attributes()) attributes[py::str(name)] = value;
+    std::vector<Metrics> series;
+    for (std::size_t k = 0; k < run.output_count(); ++k) series.push_back(run.metrics_at(k));
+    const ParticleState<double>& constants = run.constants();
+    py::dict particles;
+    particles["radius"] = read_only_array(constants.radius);
+    particles["mass"] = read_only_array(constants.mass);
+    particles["inv_mass"] = read_only_array(constants.inv_mass);
+    py::dict d;
+    d["attributes"] = attributes;
+    d["metrics"] = metric_series_dict(series);
+    d["particles"] = particles;
+    d["has_frames"] = run.has_frames();
+    if (frames && !run.has_frames())
+        throw std::invalid_argument(path + ": written without frames: rerun with frames=True (`collide run --frames`)");
+    if (frames) {
+        const auto t = py::ssize_t(run.output_count()), n = py::ssize_t(run.disk_count());
+        py::array_t<double> position({t, n, py::ssize_t(2)}), velocity({t, n, py::ssize_t(2)});
+        auto p = position.mutable_unchecked<3>();
+        auto v = velocity.mutable_unchecked<3>();
+        ParticleState<double> state;
+        for (py::ssize_t k = 0; k < t; ++k) {
+            run.read_frame(std::size_t(k), state);
+            for (py::ssize_t i = 0; i < n; ++i) {
+                const auto j = std::size_t(i);
+                p(k, i, 0) = state.x[j], p(k, i, 1) = state.y[j];
+                v(k, i, 0) = state.vx[j], v(k, i, 1) = state.vy[j];
+            }
+        }
+        position.attr("flags").attr("writeable") = false;
+        velocity.attr("flags").attr("writeable") = false;
+        d["frame_times"] = read_only_array(run.frame_times());
+        d["positions"] = position;
+        d["velocities"] = velocity;
+    }
+    return d;
+}
+
 py::list backends() {
     py::list list;
     for (const BackendInfo& b : all_backends()) {
@@ -297,6 +321,7 @@ PYBIND11_MODULE(_collide, m) {
         });
 
     m.def("_run", &run, py::arg("scene"), py::arg("backend"), py::arg("out"), py::arg("frames"), py::arg("progress"));
+    m.def("_read_run", &read_run, py::arg("path"), py::arg("frames"));
     m.def("_export", &export_run, py::arg("run"), py::arg("out"), py::arg("format"));
     m.def("_validate", &validate, py::arg("suite"), py::arg("out"), py::arg("jobs"), py::arg("resume"));
     m.def("toml_from_dict", &toml_text_from_dict, py::arg("d"),

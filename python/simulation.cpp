@@ -4,11 +4,13 @@
 #include <climits>
 #include <cmath>
 #include <stdexcept>
+#include <type_traits>
 
 #include <pybind11/stl.h>
 
 #include "core/backend_table.h"
 #include "core/run_driver.h"
+#include "core/run_schema.h"
 #include "core/scene_loader.h"
 #include "core/state_hash.h"
 #include "core/target_time.h"
@@ -99,19 +101,40 @@ py::array_t<double> read_only_array(const std::vector<double>& a) {
     return out;
 }
 
+// One entry per column of the run schema (core/run_schema.h), with the column's type, and
+// total_energy = kinetic_energy + potential_energy.
 py::dict metrics_dict(const Metrics& m) {
     py::dict d;
-    d["time"] = m.time;
-    d["momentum_x"] = m.momentum_x;
-    d["momentum_y"] = m.momentum_y;
-    d["kinetic_energy"] = m.kinetic_energy;
-    d["potential_energy"] = m.potential_energy;
+    for (const MetricColumn& column : metric_columns) {
+        if (column.integer()) d[column.name] = m.*column.count;
+        else d[column.name] = m.*column.real;
+    }
     d["total_energy"] = m.total_energy();
-    d["overlapping_pairs"] = m.overlapping_pairs;
-    d["max_overlap"] = m.max_overlap;
-    d["mean_overlap"] = m.mean_overlap;
-    d["max_wall_penetration"] = m.max_wall_penetration;
-    d["nonfinite"] = m.nonfinite;
+    return d;
+}
+
+py::dict metric_series_dict(const std::vector<Metrics>& series) {
+    auto read_only = [](auto&& values) {
+        using T = typename std::decay_t<decltype(values)>::value_type;
+        py::array_t<T> a(py::ssize_t(values.size()), values.data());  // copies
+        mark_read_only(a);
+        return a;
+    };
+    py::dict d;
+    for (const MetricColumn& column : metric_columns) {
+        if (column.integer()) {
+            std::vector<std::int64_t> v;
+            for (const Metrics& m : series) v.push_back(m.*column.count);
+            d[column.name] = read_only(v);
+        } else {
+            std::vector<double> v;
+            for (const Metrics& m : series) v.push_back(m.*column.real);
+            d[column.name] = read_only(v);
+        }
+    }
+    std::vector<double> total;
+    for (const Metrics& m : series) total.push_back(m.total_energy());
+    d["total_energy"] = read_only(total);
     return d;
 }
 

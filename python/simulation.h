@@ -73,5 +73,7 @@ private:
 
 pybind11::dict stats_dict(const SolverStats& stats);
 pybind11::dict metrics_dict(const Metrics& m);
+// A run's metric series, one read-only NumPy array per column (int64 for the counts).
+pybind11::dict metric_series_dict(const std::vector<Metrics>& series);
 
 }  // namespace collide::python

@@ -39,15 +39,6 @@ void reject_endless_run(const std::string& who, const Scene& scene, const Partic
                                  " events cannot finish (speeds too large for the box, or the duration too long)");
 }
 
-bool scene_has_stones(const Scene& scene) {
-    for (const auto& g : scene.generators) {
-        if (g.stone) return true;
-        for (const auto& d : g.disks)
-            if (d.stone) return true;
-    }
-    return false;
-}
-
 void check_hard_disk_input(const std::string& who, const Scene& scene, const ParticleState<double>& s) {
     const Physics& p = scene.physics;
     if (!(p.restitution >= 0 && p.restitution <= 1))

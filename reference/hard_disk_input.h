@@ -14,9 +14,6 @@ namespace collide {
 // (e.g. a lattice with spacing exactly 2r, rounded); anything deeper is an input error.
 inline constexpr double hard_disk_overlap_tolerance = 1e-10;
 
-// Whether the scene declares kinematic stones (inverse mass 0), in a generator or a listed disk.
-bool scene_has_stones(const Scene& scene);
-
 // Restitutions in [0, 1], radii and masses > 0, finite positions and velocities, disks inside
 // the walls (reflecting box), numbers representable in double (core/representability.h), and
 // a run that can finish. `who` starts every

@@ -30,6 +30,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/metrics.h"
+#include "core/scene_features.h"
 #include "core/target_time.h"
 #include "event_statistics.h"
 #include "hard_disk_input.h"
@@ -41,13 +43,13 @@ namespace collide {
 using event_time::never;
 
 std::optional<std::string> PlainEventSolver::supports(const Scene& scene) {
-    const Physics& p = scene.physics;
-    if (scene.has_friction()) return "friction: hard disks of the event-driven model are smooth (no tangential impulse)";
-    if (scene.has_damping()) return "damping: a velocity-dependent drag is not free flight between events";
-    if (p.restitution != 1 || p.wall_restitution != 1)
+    const SceneFeatures f = scene_features(scene);
+    if (f.friction) return "friction: hard disks of the event-driven model are smooth (no tangential impulse)";
+    if (f.damping) return "damping: a velocity-dependent drag is not free flight between events";
+    if (f.restitution != 1 || f.wall_restitution != 1)
         return "restitution below 1: inelastic disks can collapse (infinitely many collisions in a finite time), "
                "and the plain solver leaves out the TC model that prevents it (the `event` backend has it)";
-    if (scene.has_gravity() && scene_has_stones(scene))
+    if (f.gravity && f.stones)
         return "gravity with stones: a falling disk moves on a parabola relative to a fixed stone, so their "
                "collision time is a quartic root, which this solver does not compute";
     return std::nullopt;
@@ -69,7 +71,7 @@ void PlainEventSolver::load(const Scene& scene, const ParticleState<double>& ini
         if (s.is_stone(i) && scene.has_gravity())
             throw std::runtime_error("event-plain: particle " + std::to_string(i) + " is a stone, and the scene has gravity");
         if (s.is_stone(i)) s.vx[i] = s.vy[i] = 0;  // a kinematic stone never moves, as in the stepping rules
-        kinetic.add(0.5 * s.mass[i] * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i]));
+        kinetic.add(disk_kinetic_energy(s.mass[i], s.vx[i], s.vy[i]));
     }
     reject_overlapping_disks("event-plain", scene, s);  // (shared with `event`)
     disks_.clear();

@@ -42,8 +42,8 @@ void StepSolver::step() {
 
 void StepSolver::step_collide_first(double dt) {
     build_grid();
-    compute_contact_deltas();
-    apply_contact_deltas();
+    collide();
+    correct();
     // Explicit Euler: x_{n+1} = x_n + v_n dt uses the velocity after the contacts but before
     // the forces of this step, which are applied after.
     integrate_positions(dt);
@@ -56,18 +56,18 @@ void StepSolver::substep_integrate_first(double h) {
     integrate_velocities(h);
     integrate_positions(h);
     build_grid();
-    compute_contact_deltas();
-    apply_contact_deltas();
+    collide();
+    correct();
     apply_walls();
 }
 
 void StepSolver::build_grid() {
-    PhaseTimer timer(stats_, "grid");
+    PhaseTimer timer(stats_, phase::grid);
     grid_.build(state_.x.data(), state_.y.data(), state_.size());
 }
 
-void StepSolver::compute_contact_deltas() {
-    PhaseTimer timer(stats_, "collide");
+void StepSolver::collide() {
+    PhaseTimer timer(stats_, phase::collide);
     const auto& s = state_;
     const bool periodic = scene_.periodic();
     const double lx = scene_.world.width(), ly = scene_.world.height();
@@ -114,8 +114,8 @@ void StepSolver::compute_contact_deltas() {
     stats_.counters["multi_contact_disks"] += double(multi_contact_disks);
 }
 
-void StepSolver::apply_contact_deltas() {
-    PhaseTimer timer(stats_, "correct");
+void StepSolver::correct() {
+    PhaseTimer timer(stats_, phase::correct);
     for (std::size_t i = 0; i < state_.size(); ++i) {
         state_.x[i] += dx_[i];
         state_.y[i] += dy_[i];
@@ -130,7 +130,7 @@ void StepSolver::apply_contact_deltas() {
 void StepSolver::integrate_velocities(double h) {
     const double gx = scene_.physics.gravity_x, gy = scene_.physics.gravity_y;
     const double gamma = scene_.physics.damping;
-    PhaseTimer timer(stats_, "integrate");
+    PhaseTimer timer(stats_, phase::integrate);
     for (std::size_t i = 0; i < state_.size(); ++i) {
         if (state_.is_stone(i)) continue;  // kinematic: never integrated
         state_.vx[i] += (gx - gamma * state_.vx[i]) * h;
@@ -139,7 +139,7 @@ void StepSolver::integrate_velocities(double h) {
 }
 
 void StepSolver::integrate_positions(double h) {
-    PhaseTimer timer(stats_, "integrate");
+    PhaseTimer timer(stats_, phase::integrate);
     for (std::size_t i = 0; i < state_.size(); ++i) {
         if (state_.is_stone(i)) continue;
         state_.x[i] += state_.vx[i] * h;
@@ -148,7 +148,7 @@ void StepSolver::integrate_positions(double h) {
 }
 
 void StepSolver::apply_walls() {
-    PhaseTimer timer(stats_, "correct");
+    PhaseTimer timer(stats_, phase::correct);
     const World& w = scene_.world;
     const double e_wall = scene_.physics.wall_restitution;
     const bool periodic = scene_.periodic();

@@ -24,16 +24,17 @@ public:
     void step();
 
 private:
-    // Rule "collide-first" (the OpenCL engine): contacts on the current state, then Euler, then walls.
+    // Rule "collide-first": contacts on the current state, then Euler, then walls.
     void step_collide_first(double dt);
-    // Rule "integrate-first" (ParticleBox): one sub-step of length h.
+    // Rule "integrate-first": one sub-step of length h, forces and Euler before the contacts.
     void substep_integrate_first(double h);
 
+    // The phases (core/phase_timer.h names them for every stepping backend).
     void build_grid();
     // Jacobi contact pass: every disk's correction is computed from the same snapshot and
-    // stored in dx_/dy_/dvx_/dvy_; nothing moves until apply_contact_deltas().
-    void compute_contact_deltas();
-    void apply_contact_deltas();
+    // stored in dx_/dy_/dvx_/dvy_; nothing moves until correct().
+    void collide();
+    void correct();
     void integrate_velocities(double h);  // v += (g - gamma v) h
     void integrate_positions(double h);   // x += v h
     void apply_walls();

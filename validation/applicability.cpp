@@ -4,26 +4,6 @@
 
 namespace collide::validation {
 
-SceneFeatures scene_features(const Scene& scene, const ParticleState<double>& initial) {
-    SceneFeatures f;
-    f.reflecting_walls = !scene.periodic();
-    f.gravity = scene.has_gravity();
-    f.damping = scene.has_damping();
-    f.friction = scene.has_friction();
-    f.restitution = scene.physics.restitution;
-    f.wall_restitution = scene.physics.wall_restitution;
-    for (std::size_t i = 0; i < initial.size(); ++i) {
-        if (initial.is_stone(i)) {
-            f.stones = true;
-            if (initial.vx[i] != 0 || initial.vy[i] != 0) f.moving_stones = true;
-        }
-        if (initial.radius[i] != initial.radius.front()) f.monodisperse = false;
-        f.area_fraction += 3.14159265358979323846 * initial.radius[i] * initial.radius[i];
-    }
-    f.area_fraction /= scene.world.width() * scene.world.height();
-    return f;
-}
-
 std::optional<std::string> momentum_left_out(const SceneFeatures& f) {
     if (f.reflecting_walls) return "reflecting walls exchange momentum with the disks";
     if (f.gravity) return "gravity is an external force";
@@ -51,7 +31,7 @@ std::optional<std::string> wall_penetration_left_out(const SceneFeatures& f) {
 }
 
 std::optional<std::string> pressure_left_out(const SceneFeatures& f) {
-    if (!f.monodisperse) return "polydisperse disks: the contact-value pressure needs one diameter";
+    if (!f.uniform_radius) return "polydisperse disks: the contact-value pressure needs one diameter";
     return std::nullopt;
 }
 

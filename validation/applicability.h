@@ -6,21 +6,12 @@
 #include <optional>
 #include <string>
 
-#include "core/particle_state.h"
-#include "core/scene.h"
+#include "core/scene_features.h"
 
 namespace collide::validation {
 
-// The features of a scene (and its initial state) that decide which checks apply.
-struct SceneFeatures {
-    bool reflecting_walls = false;
-    bool gravity = false, damping = false, friction = false;
-    bool stones = false, moving_stones = false;
-    double restitution = 1, wall_restitution = 1;
-    bool monodisperse = true;
-    double area_fraction = 0;  // of the disks in the box (the energy-loss model of the stepped rules)
-};
-SceneFeatures scene_features(const Scene& scene, const ParticleState<double>& initial);
+// The features that decide which checks apply are core's SceneFeatures (core/scene_features.h),
+// computed once per scene and its initial state (scene_features(scene, initial)).
 
 // Total momentum is conserved when no external force acts: no reflecting walls (they push
 // back), no gravity, no drag, no stones (infinite mass absorbs any momentum).

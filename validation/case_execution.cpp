@@ -18,19 +18,6 @@ namespace {
 
 Snapshot snapshot_of(const ParticleState<double>& s) { return {s.x, s.y, s.vx, s.vy, s.radius}; }
 
-void append(MetricSeries& m, const Metrics& x) {
-    m.time.push_back(x.time);
-    m.kinetic_energy.push_back(x.kinetic_energy);
-    m.total_energy.push_back(x.total_energy());
-    m.momentum_x.push_back(x.momentum_x);
-    m.momentum_y.push_back(x.momentum_y);
-    m.max_overlap.push_back(x.max_overlap);
-    m.mean_overlap.push_back(x.mean_overlap);
-    m.overlapping_pairs.push_back(double(x.overlapping_pairs));
-    m.wall_penetration.push_back(x.max_wall_penetration);
-    m.nonfinite.push_back(double(x.nonfinite));
-}
-
 bool feeds(const SuiteScene& entry, const char* physics_row) {
     return std::find(entry.physics.begin(), entry.physics.end(), physics_row) != entry.physics.end();
 }
@@ -94,7 +81,7 @@ void measure(const CaseSpec& spec, const CaseContext& ctx, CaseResult& result) {
     RunOptions options;
     options.writer = writer.get();
     options.on_state = [&](const ParticleState<double>& state, const Metrics& m) {
-        append(result.series, m);
+        result.series.push_back(m);
         if (record_trajectory) {
             result.trajectory_time.push_back(m.time);
             result.trajectory.push_back(snapshot_of(state));

@@ -87,9 +87,8 @@ void require_same_start(const ReplayedCase& replay, const CaseResult& record) {
 }
 
 std::optional<double> recorded_kinetic_energy(const CaseResult& record, double t) {
-    const auto& times = record.series.time;
-    for (std::size_t k = 0; k < times.size(); ++k)
-        if (std::fabs(times[k] - t) <= 1e-9 * record.dt) return record.series.kinetic_energy[k];
+    for (const Metrics& row : record.series)
+        if (std::fabs(row.time - t) <= 1e-9 * record.dt) return row.kinetic_energy;
     return std::nullopt;
 }
 

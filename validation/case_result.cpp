@@ -19,6 +19,7 @@
 #include "core/hdf5_handle.h"
 #include "core/output_file.h"
 #include "core/run_reader.h"
+#include "core/run_schema.h"
 
 namespace collide::validation {
 
@@ -82,13 +83,16 @@ void write_case_result(const CaseResult& r, const std::string& path) {
         for (const auto& [path, value] : r.spec.parameters) parameters.push_back(toml::table{{"path", path}, {"value", value}});
         spec.insert("parameters", parameters);
     }
-    const MetricSeries& m = r.series;
-    toml::table series{{"time", to_array(m.time)}, {"kinetic_energy", to_array(m.kinetic_energy)},
-                       {"total_energy", to_array(m.total_energy)}, {"momentum_x", to_array(m.momentum_x)},
-                       {"momentum_y", to_array(m.momentum_y)}, {"max_overlap", to_array(m.max_overlap)},
-                       {"mean_overlap", to_array(m.mean_overlap)},
-                       {"overlapping_pairs", to_array(m.overlapping_pairs)},
-                       {"wall_penetration", to_array(m.wall_penetration)}, {"nonfinite", to_array(m.nonfinite)}};
+    toml::table series;
+    for (const MetricColumn& column : metric_columns) {
+        toml::array values;
+        for (const Metrics& m : r.series) values.push_back(column.value(m));
+        series.insert(column.name, values);
+    }
+    // Derived, not read back (total_energy() recomputes it): for the report's energy figures.
+    toml::array total_energy;
+    for (const Metrics& m : r.series) total_energy.push_back(m.total_energy());
+    series.insert("total_energy", total_energy);
     toml::array trajectory;
     for (const auto& s : r.trajectory) trajectory.push_back(to_table(s));
     toml::table root{{"spec", spec},
@@ -137,8 +141,8 @@ std::string verified_record_text(const std::string& path) {
 }
 
 // Every field the writer writes is required, with its type. A record that lacks one, or holds
-// one of another type, is damaged: no default stands in for a lost value (a record without
-// its status once read as an error with an empty message, `steps = "many"` as 0 steps).
+// one of another type, is damaged: no default stands in for a lost value (a default would read
+// a record without its status as an error with an empty message, `steps = "many"` as 0 steps).
 class RecordReader {
 public:
     explicit RecordReader(const std::string& path) : path_(path) {}
@@ -237,15 +241,14 @@ CaseSpec read_spec(const RecordReader& in, const toml::table& root) {
 MetricSeries read_series(const RecordReader& in, const toml::table& root) {
     const toml::table& s = in.table(root, "series");
     const std::string w = "series.";
-    MetricSeries m{in.numbers(s, "time", w),         in.numbers(s, "kinetic_energy", w),
-                   in.numbers(s, "total_energy", w), in.numbers(s, "momentum_x", w),
-                   in.numbers(s, "momentum_y", w),   in.numbers(s, "max_overlap", w),
-                   in.numbers(s, "mean_overlap", w), in.numbers(s, "overlapping_pairs", w),
-                   in.numbers(s, "wall_penetration", w), in.numbers(s, "nonfinite", w)};
-    for (const auto* column : {&m.kinetic_energy, &m.total_energy, &m.momentum_x, &m.momentum_y, &m.max_overlap,
-                               &m.mean_overlap, &m.overlapping_pairs, &m.wall_penetration, &m.nonfinite})
-        if (column->size() != m.time.size()) in.damaged("the columns of [series] differ in length");
-    return m;
+    MetricSeries rows;
+    for (const MetricColumn& column : metric_columns) {
+        const std::vector<double> values = in.numbers(s, column.name, w);
+        if (column.name == std::string_view("time")) rows.resize(values.size());
+        if (values.size() != rows.size()) in.damaged("the columns of [series] differ in length");
+        for (std::size_t k = 0; k < rows.size(); ++k) column.assign(rows[k], values[k]);
+    }
+    return rows;
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "case_plan.h"
+#include "core/metrics.h"
 
 namespace collide::validation {
 
@@ -23,12 +24,9 @@ enum class RunStatus {
 const char* to_string(RunStatus s);
 RunStatus run_status_from_string(const std::string& s);
 
-// Metrics at every output time, as columns.
-struct MetricSeries {
-    std::vector<double> time, kinetic_energy, total_energy, momentum_x, momentum_y;
-    std::vector<double> max_overlap, mean_overlap, overlapping_pairs, wall_penetration, nonfinite;
-    std::size_t size() const { return time.size(); }
-};
+// Metrics at every output time, one row each (the columns are the run schema's,
+// core/run_schema.h; the case record stores them under the same names).
+using MetricSeries = std::vector<Metrics>;
 
 struct Snapshot {  // positions and radii, for pictures and trajectory comparison
     std::vector<double> x, y, vx, vy, radius;

@@ -1,5 +1,7 @@
 #include "checks.h"
 
+#include "core/run_schema.h"
+#include "check_table.h"
 #include "energy_loss_model.h"
 
 #include <algorithm>
@@ -28,21 +30,21 @@ namespace {
 // metric pass as 0 (the `at_most` comparison fails on NaN, so it must reach it).
 double max_keeping_nan(double a, double b) { return std::isnan(a) || std::isnan(b) ? NAN : std::max(a, b); }
 
-double max_of(const std::vector<double>& v) {
+// max_t of one column of the series (NaN wins, as above).
+double max_of(const MetricSeries& series, double (*column)(const Metrics&)) {
     double m = 0;
-    for (double x : v) m = max_keeping_nan(m, x);
+    for (const Metrics& row : series) m = max_keeping_nan(m, column(row));
     return m;
 }
 
-// The name of the first series holding a NaN or Inf, or "" when all are finite.
-std::string first_nonfinite_series(const MetricSeries& m) {
-    const std::pair<const char*, const std::vector<double>*> series[] = {
-        {"time", &m.time}, {"kinetic_energy", &m.kinetic_energy}, {"total_energy", &m.total_energy},
-        {"momentum_x", &m.momentum_x}, {"momentum_y", &m.momentum_y}, {"max_overlap", &m.max_overlap},
-        {"mean_overlap", &m.mean_overlap}, {"wall_penetration", &m.wall_penetration}};
-    for (const auto& [name, values] : series)
-        for (double x : *values)
-            if (!std::isfinite(x)) return name;
+// The name of the first column of the run schema, or total_energy, holding a NaN or Inf, or ""
+// when all are finite.
+std::string first_nonfinite_series(const MetricSeries& series) {
+    for (const MetricColumn& column : metric_columns)
+        for (const Metrics& row : series)
+            if (!std::isfinite(column.value(row))) return column.name;
+    for (const Metrics& row : series)
+        if (!std::isfinite(row.total_energy())) return "total_energy";
     return "";
 }
 
@@ -98,10 +100,10 @@ private:
 // at the rms speed (the total momentum itself is often zero, so it cannot be the scale).
 double momentum_drift(const CaseResult& r) {
     const MetricSeries& m = r.series;
-    const double scale = std::sqrt(2 * r.total_mass * m.kinetic_energy.front());
+    const double scale = std::sqrt(2 * r.total_mass * m.front().kinetic_energy);
     double drift = 0;
-    for (std::size_t k = 0; k < m.size(); ++k)
-        drift = max_keeping_nan(drift, std::hypot(m.momentum_x[k] - m.momentum_x[0], m.momentum_y[k] - m.momentum_y[0]));
+    for (const Metrics& row : m)
+        drift = max_keeping_nan(drift, std::hypot(row.momentum_x - m.front().momentum_x, row.momentum_y - m.front().momentum_y));
     return scale > 0 ? drift / scale : drift;
 }
 
@@ -109,10 +111,10 @@ double momentum_drift(const CaseResult& r) {
 // energy has an arbitrary zero, so E(0) itself is no scale).
 double energy_drift(const CaseResult& r, EnergyKind kind) {
     const MetricSeries& m = r.series;
-    const auto& e = kind == EnergyKind::total ? m.total_energy : m.kinetic_energy;
-    const double scale = max_of(m.kinetic_energy);
+    auto energy = [kind](const Metrics& row) { return kind == EnergyKind::total ? row.total_energy() : row.kinetic_energy; };
+    const double scale = max_of(m, [](const Metrics& row) { return row.kinetic_energy; });
     double drift = 0;
-    for (double x : e) drift = max_keeping_nan(drift, std::fabs(x - e.front()));
+    for (const Metrics& row : m) drift = max_keeping_nan(drift, std::fabs(energy(row) - energy(m.front())));
     return scale > 0 ? drift / scale : drift;
 }
 
@@ -129,7 +131,7 @@ double collision_frequency(const CaseResult& r, const SceneFeatures& f) {
         sum_r2 += x * x;
     }
     const double m = double(r.initial.radius.size());
-    const double kt_over_m = r.series.kinetic_energy.front() / r.total_mass;  // 2D: K = N kT
+    const double kt_over_m = r.series.front().kinetic_energy / r.total_mass;  // 2D: K = N kT
     return enskog_collision_frequency(f.area_fraction, sum_r / m, sum_r2 / m, kt_over_m);
 }
 
@@ -141,8 +143,8 @@ bool stepped_backend(const std::string& b) { return b == "step" || b == "cpu" ||
 std::vector<CheckResult> case_checks(const CaseResult& r, const SceneFeatures& f, const Tolerances& tol) {
     std::vector<CheckResult> out;
     CaseChecker c(r, out);
-    const std::vector<std::string> per_case = {"momentum_drift", "energy_drift", "max_overlap", "mean_overlap",
-                                               "overlapping_pairs", "wall_penetration"};
+    std::vector<std::string> per_case = check_names(CheckKind::case_check);  // "run" first, then the rest
+    per_case.erase(per_case.begin());
     if (r.status == RunStatus::left_out) {
         c.left_out("run", "backend cannot run this scene: " + r.diagnostic);
         for (const auto& name : per_case) c.left_out(name, "case left out: backend cannot run this scene");
@@ -183,13 +185,13 @@ std::vector<CheckResult> case_checks(const CaseResult& r, const SceneFeatures& f
     } else c.at_most("energy_drift", energy_drift(r, energy.kind), tol.energy_drift,
                    energy.kind == EnergyKind::total ? "relative total-energy drift" : "relative kinetic-energy drift");
 
-    c.at_most("max_overlap", max_of(r.series.max_overlap), tol.max_overlap, "maximum relative overlap depth");
-    c.at_most("mean_overlap", max_of(r.series.mean_overlap), tol.mean_overlap, "mean relative overlap depth");
+    c.at_most("max_overlap", max_of(r.series, [](const Metrics& m) { return m.max_overlap; }), tol.max_overlap, "maximum relative overlap depth");
+    c.at_most("mean_overlap", max_of(r.series, [](const Metrics& m) { return m.mean_overlap; }), tol.mean_overlap, "mean relative overlap depth");
     const double disks = double(std::max<std::size_t>(1, r.disks));
-    c.at_most("overlapping_pairs", max_of(r.series.overlapping_pairs) / disks, tol.overlapping_pairs_per_disk,
+    c.at_most("overlapping_pairs", max_of(r.series, [](const Metrics& m) { return double(m.overlapping_pairs); }) / disks, tol.overlapping_pairs_per_disk,
               "overlapping pairs per disk");
     if (auto why = wall_penetration_left_out(f)) c.left_out("wall_penetration", *why);
-    else c.at_most("wall_penetration", max_of(r.series.wall_penetration), tol.wall_penetration,
+    else c.at_most("wall_penetration", max_of(r.series, [](const Metrics& m) { return m.max_wall_penetration; }), tol.wall_penetration,
                    "maximum wall penetration / radius");
     return out;
 }

@@ -1,18 +1,7 @@
-// The checks: each turns measurements into a value, compares it with its tolerance and says
-// pass, fail or left out (with the reason). Definitions and tolerance derivations are in
-// docs/validation.md; the names here are the ones the report and the JUnit file show.
-//
-//   run                  the case ran to the end (no exception, crash, NaN or time-out)
-//   momentum_drift       max_t |P(t) - P(0)| / sqrt(2 M K(0))           (M mobile mass)
-//   energy_drift         max_t |E(t) - E(0)| / max_t K(t)               (E kinetic or total)
-//   max_overlap          max_t max over pairs of (r_i + r_j - d) / (r_i + r_j)
-//   mean_overlap         max_t mean of the same over overlapping pairs
-//   overlapping_pairs    max_t (overlapping pairs) / N
-//   wall_penetration     max_t max over disks of depth beyond a wall / r
-//   trajectory_error     max over output times and disks of |x - x_ref| / r_min
-//   pressure             z-score of Z = P/(rho kT) vs the reference, over replicates
-//   collision_rate       z-score of collisions per disk per time unit vs the reference
-//   speed_distribution   two-sample Kolmogorov-Smirnov p-value of final speeds vs the reference
+// The per-case checks: each turns measurements into a value, compares it with its tolerance and
+// says pass, fail or left out (with the reason). What each check measures, its tolerance key
+// and when it applies are declared once, in the check table (check_table.h); docs/validation.md
+// shows the same table and derives the tolerances.
 #pragma once
 
 #include <cmath>

@@ -7,6 +7,8 @@
 #include <set>
 #include <stdexcept>
 
+#include "core/metrics.h"
+
 namespace collide::validation {
 namespace {
 
@@ -17,7 +19,7 @@ constexpr double force_slack = 1e-3;    // of the forces' own change: how exactl
 
 double kinetic(const ParticleState<double>& p, std::size_t i) {
     if (p.is_stone(i)) return 0;  // a kinematic stone moves as prescribed and exchanges no energy
-    return 0.5 * p.mass[i] * (p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]);
+    return disk_kinetic_energy(p.mass[i], p.vx[i], p.vy[i]);
 }
 
 // Kinetic plus gravitational potential energy, m |v|^2 / 2 - m g.x.

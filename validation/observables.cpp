@@ -3,20 +3,15 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/scene_features.h"
 #include "core/uniform_grid.h"
 #include "physics/stepping_laws.h"
 
 namespace collide::validation {
 
-bool monodisperse(const ParticleState<double>& s) {
-    for (double r : s.radius)
-        if (r != s.radius.front()) return false;
-    return !s.radius.empty();
-}
-
 double compressibility_factor(const Scene& scene, const ParticleState<double>& s, double shell) {
     const std::size_t n = s.size();
-    if (n < 2 || !monodisperse(s)) return std::nan("");
+    if (n < 2 || !uniform_radius(s)) return std::nan("");
     const double sigma = 2 * s.radius.front();
     const double reach = sigma * (1 + shell);
     UniformGrid<double> grid;

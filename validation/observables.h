@@ -25,7 +25,4 @@ double compressibility_factor(const Scene& scene, const ParticleState<double>& s
 // |v| of every mobile disk.
 std::vector<double> speeds(const ParticleState<double>& state);
 
-// True when all radii are equal (the contact-value estimator above needs one sigma).
-bool monodisperse(const ParticleState<double>& state);
-
 }  // namespace collide::validation

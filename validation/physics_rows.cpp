@@ -47,7 +47,7 @@ double counter(const CaseResult& r, const char* name) {
 
 // The kinetic energy at the first output time: the conserved energy of an e = 1 gas.
 double initial_kinetic_energy(const CaseResult& r) {
-    return r.series.kinetic_energy.empty() ? std::nan("") : r.series.kinetic_energy.front();
+    return r.series.empty() ? std::nan("") : r.series.front().kinetic_energy;
 }
 
 double virial_compressibility(const CaseResult& r) {
@@ -63,10 +63,10 @@ double second_half_collision_rate(const CaseResult& r) {
 
 double haff_cooling_time(const CaseResult& r, double t_max) {
     std::vector<double> t, y;
-    for (std::size_t i = 0; i < r.series.size(); ++i)
-        if (r.series.time[i] <= t_max && r.series.kinetic_energy[i] > 0) {
-            t.push_back(r.series.time[i]);
-            y.push_back(1 / std::sqrt(r.series.kinetic_energy[i]));  // T^(-1/2) up to a constant
+    for (const Metrics& row : r.series)
+        if (row.time <= t_max && row.kinetic_energy > 0) {
+            t.push_back(row.time);
+            y.push_back(1 / std::sqrt(row.kinetic_energy));  // T^(-1/2) up to a constant
         }
     if (t.size() < 3) return std::nan("");
     const auto mt = mean_and_error(t).mean, my = mean_and_error(y).mean;

@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 
+#include "check_table.h"
 #include "observables.h"
 #include "statistics.h"
 #include "statistics_bias_model.h"
@@ -151,9 +152,8 @@ Comparisons compare_with_reference(const Suite& suite, const std::vector<CaseRes
         const Tolerances& tol = tolerances.at(spec.backend);
         const Group* ref = reference_group(reference_key(spec));
         const bool left_out_case = g.cases.front()->status == RunStatus::left_out;
-        const std::vector<std::string> names = entry.comparison == Comparison::trajectory
-            ? std::vector<std::string>{"trajectory_error"}
-            : std::vector<std::string>{"pressure", "collision_rate", "speed_distribution"};
+        const std::vector<std::string> names =
+            check_names(entry.comparison == Comparison::trajectory ? CheckKind::trajectory : CheckKind::statistics);
         std::string skip;
         if (left_out_case) skip = "case left out: backend cannot run this scene";
         else if (!ref) skip = "the reference backend '" + suite.reference + "' is not part of this run";

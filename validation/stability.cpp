@@ -27,12 +27,15 @@ const char* to_string(Outcome o) {
 }
 
 double energy_growth(const MetricSeries& m, bool total) {
-    const auto& e = total ? m.total_energy : m.kinetic_energy;
-    if (e.empty()) return 0;
-    double scale = m.kinetic_energy.front();
-    if (!(scale > 0)) scale = *std::max_element(m.kinetic_energy.begin(), m.kinetic_energy.end());
+    if (m.empty()) return 0;
+    auto energy = [total](const Metrics& row) { return total ? row.total_energy() : row.kinetic_energy; };
+    double scale = m.front().kinetic_energy;
+    if (!(scale > 0))
+        scale = std::max_element(m.begin(), m.end(), [](const Metrics& a, const Metrics& b) {
+                    return a.kinetic_energy < b.kinetic_energy;
+                })->kinetic_energy;
     double rise = 0;
-    for (double x : e) rise = std::max(rise, x - e.front());  // NaN never wins; `nan` comes first
+    for (const Metrics& row : m) rise = std::max(rise, energy(row) - energy(m.front()));  // NaN never wins; `nan` comes first
     return scale > 0 ? rise / scale : rise;
 }
 
@@ -60,11 +63,10 @@ std::string text(double v) {
 // A disk with a NaN/Inf state, or a NaN/Inf metric (an energy overflowing double while every
 // disk is finite is no more stable than a NaN position).
 bool any_nonfinite(const MetricSeries& m) {
-    for (double x : m.nonfinite)
-        if (x > 0) return true;
-    for (const auto* series : {&m.kinetic_energy, &m.total_energy, &m.momentum_x, &m.momentum_y, &m.max_overlap})
-        for (double x : *series)
-            if (!std::isfinite(x)) return true;
+    for (const Metrics& row : m)
+        if (row.nonfinite > 0 || !std::isfinite(row.kinetic_energy) || !std::isfinite(row.total_energy()) ||
+            !std::isfinite(row.momentum_x) || !std::isfinite(row.momentum_y) || !std::isfinite(row.max_overlap))
+            return true;
     return false;
 }
 
@@ -102,7 +104,7 @@ Classification classify(const CaseResult& r, const CaseResult* reference, const 
     }
 
     double overlap = 0;
-    for (double x : r.series.max_overlap) overlap = std::max(overlap, x);
+    for (const Metrics& row : r.series) overlap = std::max(overlap, row.max_overlap);
     if (overlap > tol.max_overlap)
         return {Outcome::excessive_overlap,
                 "max relative overlap " + text(overlap) + " > tolerance " + text(tol.max_overlap)};

@@ -10,6 +10,7 @@
 
 #include "core/output_file.h"
 #include "core/provenance.h"
+#include "check_table.h"
 
 namespace collide::validation {
 namespace {
@@ -47,6 +48,27 @@ Json string_map(const std::map<std::string, std::string>& m) {
     Object o;
     for (const auto& [k, v] : m) o.text(k, v);
     return o.json();
+}
+
+const char* to_string(CheckKind kind) {
+    switch (kind) {
+        case CheckKind::case_check: return "case";
+        case CheckKind::trajectory: return "trajectory";
+        case CheckKind::statistics: return "statistics";
+        case CheckKind::stability: return "stability";
+    }
+    return "case";
+}
+
+// The check table (check_table.h), in its order: the report lays out its columns from it.
+Json check_definitions_json() {
+    return array(check_table, [](const CheckDefinition& c) {
+        Object o;
+        o.text("name", c.name).text("kind", to_string(c.kind)).text("measures", c.measures)
+            .text("passes_when", c.passes_when).text("tolerance_key", c.tolerance_key).text("applies", c.applies)
+            .text("computed_by", c.computed_by);
+        return o.json();
+    });
 }
 
 Json case_json(const CaseResult& r, const Classification* c) {
@@ -181,6 +203,7 @@ void write_summary_json(const Suite& suite, const SuiteOutcome& outcome, const s
         .field("execution", string_map(outcome.execution))
         .field("seeds", string_map(seeds)).field("scene_files", string_map(scene_files))
         .field("cases", cases_json(outcome))
+        .field("check_definitions", check_definitions_json())
         .field("checks", array(outcome.checks, check_json))
         .field("work_precision", array(outcome.work_precision, line_json))
         .field("physics", physics_json(outcome.physics));

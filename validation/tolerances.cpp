@@ -1,26 +1,27 @@
 #include "tolerances.h"
 
+#include <algorithm>
 #include <stdexcept>
+
+#include "check_table.h"
 
 namespace collide::validation {
 
+// The keys and the fields they set come from the check table: one key may bound several
+// checks (statistics_z: pressure and collision_rate).
 const std::vector<std::string>& tolerance_keys() {
-    static const std::vector<std::string> keys = {
-        "momentum_drift", "energy_drift", "max_overlap", "mean_overlap", "overlapping_pairs_per_disk",
-        "wall_penetration", "trajectory_error", "statistics_z", "speed_ks_p_value"};
+    static const std::vector<std::string> keys = [] {
+        std::vector<std::string> out;
+        for (const CheckDefinition& c : check_table)
+            if (c.tolerance && std::find(out.begin(), out.end(), c.tolerance_key) == out.end()) out.push_back(c.tolerance_key);
+        return out;
+    }();
     return keys;
 }
 
 double& tolerance_field(Tolerances& t, const std::string& key) {
-    if (key == "momentum_drift") return t.momentum_drift;
-    if (key == "energy_drift") return t.energy_drift;
-    if (key == "max_overlap") return t.max_overlap;
-    if (key == "mean_overlap") return t.mean_overlap;
-    if (key == "overlapping_pairs_per_disk") return t.overlapping_pairs_per_disk;
-    if (key == "wall_penetration") return t.wall_penetration;
-    if (key == "trajectory_error") return t.trajectory_error;
-    if (key == "statistics_z") return t.statistics_z;
-    if (key == "speed_ks_p_value") return t.speed_ks_p_value;
+    for (const CheckDefinition& c : check_table)
+        if (c.tolerance && key == c.tolerance_key) return t.*c.tolerance;
     std::string names;
     for (const auto& k : tolerance_keys()) names += (names.empty() ? "" : ", ") + k;
     throw std::invalid_argument("unknown tolerance '" + key + "'; expected one of: " + names);

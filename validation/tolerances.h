@@ -10,8 +10,8 @@
 
 namespace collide::validation {
 
-// One limit per check; every value is a bound on a dimensionless number (see the check list
-// in checks.h for what each one divides by).
+// One limit per [tolerances] key; every value is a bound on a dimensionless number. Which
+// check each bounds, and what it divides by: the check table (check_table.h).
 struct Tolerances {
     double momentum_drift = 1e-9;
     double energy_drift = 1e-9;
@@ -24,7 +24,7 @@ struct Tolerances {
     double speed_ks_p_value = 1e-3;   // two-sample Kolmogorov-Smirnov p-value must exceed this
 };
 
-// The names of the fields above, in order, as they appear in suite files.
+// The [tolerances] keys of suite files, in the check table's order (check_table.h).
 const std::vector<std::string>& tolerance_keys();
 double& tolerance_field(Tolerances& t, const std::string& key);  // throws on an unknown key
 double tolerance_value(const Tolerances& t, const std::string& key);

@@ -2,7 +2,7 @@
 // a dot per overlapping pair, one outline per disk of the comparison state, the legend and every
 // lit pixel of the HUD text. Each quad samples one cell of the atlas (a filled disk, a ring or a
 // solid square) in its own colour. The canvas draws the list either in a single
-// SDL_RenderGeometry call (as in ParticleBox; a quad is 4 vertices where a smooth triangle fan is
+// SDL_RenderGeometry call (a quad is 4 vertices where a smooth triangle fan is
 // 17 or more) or with its CPU rasteriser (software renderers): the same quads, the same atlas.
 #pragma once
 

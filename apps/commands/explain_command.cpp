@@ -14,6 +14,7 @@
 
 #include "core/progress_line.h"
 #include "apps/input_paths.h"
+#include "core/metrics.h"
 #include "commands.h"
 #include "validation/case_replay.h"
 #include "validation/case_result.h"
@@ -94,9 +95,7 @@ void require_same_path(Solver& solver, const validation::ReplayedCase& c, const 
     if (check > 0) solver.advance_to(std::round(check / dt) * dt);
     ParticleState<double> state;
     solver.read_state(state);
-    double k = 0;
-    for (std::size_t i = 0; i < state.size(); ++i)
-        if (!state.is_stone(i)) k += 0.5 * state.mass[i] * (state.vx[i] * state.vx[i] + state.vy[i] * state.vy[i]);
+    const double k = compute_disk_metrics(c.scene, state, check).kinetic_energy;  // as the run recorded it
     if (!(std::fabs(k - *recorded) <= 1e-9 * std::fabs(*recorded)))
         throw std::runtime_error("case " + c.spec.id + ": the rerun does not retrace the recorded run (kinetic energy " +
                                  std::to_string(k) + " at t = " + std::to_string(check) + ", recorded " +

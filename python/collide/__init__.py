@@ -34,7 +34,7 @@ from . import _collide
 
 __version__ = build_provenance().get("collide_version", "")
 
-__all__ = ["Scene", "SceneError", "Simulation", "SuiteError", "RunResult", "run", "validate", "export",
+__all__ = ["Scene", "SceneError", "Simulation", "SuiteError", "RunResult", "run", "read_run", "validate", "export",
            "backends", "build_provenance", "toml_from_dict"]
 
 
@@ -78,6 +78,20 @@ def run(scene, backend="event", out=None, frames=False, progress=True, **options
                                      bool(frames), bool(progress), **options))
     result["out"] = os.fspath(out) if out is not None else None
     return result
+
+
+def read_run(path, frames=False):
+    """Reads a run file (`collide run --out`, `run(out=...)`) through the same checked reader as
+    `collide render` and `collide report` (checksums, shapes, types, values; a damaged file
+    raises naming the file and the dataset). Returns a dict with
+
+    metrics      name -> NumPy array, one per column of docs/output-format.md's /metrics
+                 (int64 for the counts), and total_energy
+    particles    radius, mass, inv_mass
+    attributes   the root attributes: provenance, scene_text, seed, ...
+    has_frames   whether the file holds frames
+    With `frames=True` also frame_times (T,), positions and velocities (T, N, 2)."""
+    return _collide._read_run(os.fspath(path), bool(frames))
 
 
 def validate(suite, out="results", jobs=None, resume=False):

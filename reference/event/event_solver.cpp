@@ -7,6 +7,8 @@
 #include <stdexcept>
 
 #include "core/disk_overlap.h"
+#include "core/scene_features.h"
+#include "core/metrics.h"
 #include "core/representability.h"
 #include "core/target_time.h"
 #include "physics/collision_rule.h"
@@ -43,11 +45,12 @@ auto parse_whole(const std::string& text, Parse parse) -> std::optional<decltype
 }  // namespace
 
 std::optional<std::string> EventSolver::supports(const Scene& scene) {
-    if (scene.has_friction())
+    const SceneFeatures f = scene_features(scene);
+    if (f.friction)
         return "friction: hard disks of the event-driven model are smooth (no tangential impulse)";
-    if (scene.has_damping())
+    if (f.damping)
         return "damping: a velocity-dependent drag is not free flight between events";
-    if (scene.has_gravity() && scene_has_stones(scene))
+    if (f.gravity && f.stones)
         return "gravity with stones: a falling disk moves on a parabola relative to a fixed stone, "
                "so their collision time is a quartic root, which this solver does not compute";
     return std::nullopt;
@@ -555,7 +558,7 @@ void EventSolver::read_state(ParticleState<double>& out) const {
 double EventSolver::kinetic_energy_now() const {
     CompensatedSum k;
     for (std::size_t i = 0; i < state_.size(); ++i)
-        if (!state_.is_stone(i)) k.add(0.5 * state_.mass[i] * (disks_[i].vx * disks_[i].vx + disks_[i].vy * disks_[i].vy));
+        if (!state_.is_stone(i)) k.add(disk_kinetic_energy(state_.mass[i], disks_[i].vx, disks_[i].vy));
     return k.value();
 }
 

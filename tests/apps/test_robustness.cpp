@@ -143,7 +143,7 @@ TEST(Robustness, RunFailsWhenTheKineticEnergyOverflows) {
     const std::string scene = edited_scene(dir, "fast.toml", {{"vx = 1.0", "vx = 1e200"}, {"vx = -1.0", "vx = -1e200"}});
     const auto result = run_collide({"run", scene, "--backend", "step"}, dir);
     EXPECT_EQ(result.exit_code, 1);
-    // Refused before the start (docs/refusals.md), no longer found as a NaN/Inf metric at t = 0.
+    // Refused before the start (docs/refusals.md), not found later as a NaN/Inf metric at t = 0.
     EXPECT_TRUE(contains(result.err, "step computes in double: squared relative speed |v_i - v_j|^2 (up to (2 |v|)^2) "
                                      "= 4e+400 for disk 0 overflows double's largest number")) << result.err;
     EXPECT_FALSE(contains(result.out, "nan")) << result.out;

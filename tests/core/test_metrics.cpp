@@ -24,6 +24,14 @@ TEST(Metrics, MomentumAndEnergyByHand) {
     EXPECT_EQ(m.nonfinite, 0);
 }
 
+TEST(Metrics, KineticEnergyIsTheSumOfEachMobileDisks) {
+    EXPECT_EQ(disk_kinetic_energy(2, 3, 4), 25.0);  // m |v|^2 / 2 = 2 * 25 / 2
+    const Scene scene = test::box_scene(10, 10);
+    // The second disk is a stone: it moves, but carries no kinetic energy of the budget.
+    const auto s = test::make_state({{1, 1, 3, 4, 0.5, 2}, {5, 5, 1, 0, 0.5, 7, true}, {8, 8, -1, 2, 0.5, 3}});
+    EXPECT_EQ(compute_disk_metrics(scene, s, 0).kinetic_energy, disk_kinetic_energy(2, 3, 4) + disk_kinetic_energy(3, -1, 2));
+}
+
 TEST(Metrics, GravitationalPotentialEnergy) {
     Scene scene = test::box_scene(10, 10);
     scene.physics.gravity_y = -9.81;

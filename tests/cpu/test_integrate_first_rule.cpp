@@ -1,4 +1,4 @@
-// The integrate-first rule (ParticleBox) on cases with exact answers, run on every stepped
+// The integrate-first rule on cases with exact answers, run on every stepped
 // backend that implements the shared contact law (`step` in double, `cpu` in float).
 // Expected values come from the contact law's physics (physics/contact_law.cl.h): for an impact
 // with normal n and relative velocity u = v_1 - v_2, u_n = u.n < 0,
@@ -111,7 +111,7 @@ TEST_P(IntegrateFirstRule, FrictionReducesTangentialSlidingAndNeverReversesIt) {
 
 TEST_P(IntegrateFirstRule, StonesStayPutUnderALoad) {
     // A floor of 10 touching stones across a box 10 wide carries a pile of 30 disks falling
-    // under gravity with ParticleBox's material (e = 0.4, mu = 0.1) for 3 s.
+    // under gravity with a granular material (e = 0.4, mu = 0.1) for 3 s.
     Scene scene = rule_scene(0.4, 0.1);
     scene.world = World{0, 0, 10, 20, Boundary::reflect};
     scene.physics.gravity_y = -9.81;

@@ -74,7 +74,7 @@ TEST(Applicability, GravityChecksTotalEnergyInstead) {
 
 TEST(Applicability, PressureNeedsOneDiameter) {
     auto f = periodic_elastic();
-    f.monodisperse = false;
+    f.uniform_radius = false;
     EXPECT_TRUE(pressure_left_out(f));
 }
 
@@ -90,7 +90,7 @@ TEST(Applicability, FeaturesAreReadFromSceneAndState) {
     EXPECT_TRUE(f.gravity);
     EXPECT_TRUE(f.stones);
     EXPECT_TRUE(f.moving_stones);
-    EXPECT_FALSE(f.monodisperse);
+    EXPECT_FALSE(f.uniform_radius);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 
 #include "core/crc32.h"
 #include "tests/support/scratch_directory.h"
+#include "core/run_schema.h"
 #include "validation/case_result.h"
 
 namespace collide::validation {
@@ -26,10 +27,15 @@ CaseResult sample() {
     r.diagnostic = "NaN at t = 0.5";
     r.disks = 2;
     r.steps = 750;
-    r.series.time = {0, 0.5};
-    r.series.kinetic_energy = r.series.total_energy = r.series.momentum_x = r.series.momentum_y = {1, 1};
-    r.series.max_overlap = r.series.mean_overlap = r.series.overlapping_pairs = {0, 0};
-    r.series.wall_penetration = r.series.nonfinite = {0, 0};
+    for (double t : {0.0, 0.5}) {
+        Metrics m;
+        m.time = t;
+        m.kinetic_energy = m.momentum_x = m.momentum_y = 1;
+        m.potential_energy = -0.25;
+        m.overlapping_pairs = 3;
+        m.max_wall_penetration = 0.125;
+        r.series.push_back(m);
+    }
     r.initial.x = {1, 2};
     r.provenance["rank"] = "0";
     return r;
@@ -70,7 +76,14 @@ TEST(CaseRecord, ReadsBackAsWritten) {
     EXPECT_EQ(r.status, RunStatus::error);
     EXPECT_EQ(r.diagnostic, "NaN at t = 0.5");
     EXPECT_EQ(r.steps, 750);
-    EXPECT_EQ(r.series.time, (std::vector<double>{0, 0.5}));
+    ASSERT_EQ(r.series.size(), 2u);
+    EXPECT_EQ(r.series[1].time, 0.5);
+    // Every column of the run schema comes back under its own name.
+    for (const MetricColumn& column : metric_columns)
+        EXPECT_EQ(column.value(r.series[1]), column.value(sample().series[1])) << column.name;
+    EXPECT_EQ(r.series[1].potential_energy, -0.25);
+    EXPECT_EQ(r.series[1].overlapping_pairs, 3);
+    EXPECT_EQ(r.series[1].max_wall_penetration, 0.125);
     EXPECT_EQ(r.provenance.at("rank"), "0");
 }
 

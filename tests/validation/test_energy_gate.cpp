@@ -36,9 +36,7 @@ CheckResult energy_check_of(const Scene& declared, const Scene& solver_scene) {
     CaseResult r;
     RunOptions options;
     options.on_state = [&](const ParticleState<double>&, const Metrics& m) {
-        r.series.time.push_back(m.time);
-        r.series.kinetic_energy.push_back(m.kinetic_energy);
-        r.series.total_energy.push_back(m.total_energy());
+        r.series.push_back(m);
     };
     const RunResult run = run_scene(solver_scene, solver, initial, options);
     r.spec.id = "energy_gate";

@@ -79,8 +79,12 @@ TEST(PhysicsRows, VirialCompressibilityAndRatesByHand) {
     r.disks = 10;
     r.duration = 4;
     r.contacts = 300;
-    r.series.time = {0, 1, 2, 3, 4};
-    r.series.kinetic_energy = {5, 4, 3, 2, 1};  // K0 = 5 sets kT, whatever K does later
+    for (int k = 0; k <= 4; ++k) {  // K0 = 5 sets kT, whatever K does later
+        Metrics m;
+        m.time = k;
+        m.kinetic_energy = 5 - k;
+        r.series.push_back(m);
+    }
     r.counters = {{"virial_sum", 100.0}, {"virial_sum_at_half", 40.0}, {"contacts_at_half", 100.0}, {"time_at_half", 2.0}};
     // Z = 1 + (100 - 40) / (2 * 2 * 5) = 4; nu = 2 * (300 - 100) / (10 * 2) = 20.
     EXPECT_DOUBLE_EQ(virial_compressibility(r), 4.0);
@@ -90,8 +94,10 @@ TEST(PhysicsRows, VirialCompressibilityAndRatesByHand) {
 TEST(PhysicsRows, HaffFitRecoversTheCoolingTime) {
     CaseResult r;
     for (int i = 0; i <= 20; ++i) {
-        r.series.time.push_back(i);
-        r.series.kinetic_energy.push_back(100.0 / std::pow(1 + i / 8.0, 2));  // T0 / (1 + t/tau)^2, tau = 8
+        Metrics m;
+        m.time = i;
+        m.kinetic_energy = 100.0 / std::pow(1 + i / 8.0, 2);  // T0 / (1 + t/tau)^2, tau = 8
+        r.series.push_back(m);
     }
     EXPECT_NEAR(haff_cooling_time(r, 20), 8.0, 1e-9);
     EXPECT_TRUE(std::isnan(haff_cooling_time(r, 1)));  // two points only

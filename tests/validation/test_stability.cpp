@@ -16,12 +16,10 @@ CaseResult pair_run(std::vector<double> x0, double offset = 0) {
     for (std::size_t k = 0; k < x0.size(); ++k) {
         r.trajectory_time.push_back(double(k));
         r.trajectory.push_back(Snapshot{{x0[k], 5.0}, {2.0 + offset, 2.0}, {0, 0}, {0, 0}, {0.5, 0.5}});
-        MetricSeries& m = r.series;
-        m.time.push_back(double(k));
-        m.kinetic_energy.push_back(1.0);
-        m.total_energy.push_back(1.0);
-        m.max_overlap.push_back(0.0);
-        m.nonfinite.push_back(0.0);
+        Metrics m;
+        m.time = double(k);
+        m.kinetic_energy = 1.0;
+        r.series.push_back(m);
     }
     return r;
 }
@@ -60,9 +58,9 @@ TEST(Stability, OutcomesFollowTheirPrecedence) {
     tol.energy_drift = 0.02;
     // Every fault at once, then remove the most severe one at a time.
     CaseResult r = kPassThrough;
-    r.series.max_overlap[2] = 0.9;
-    r.series.kinetic_energy[3] = r.series.total_energy[3] = 2.0;
-    r.series.nonfinite[3] = 1;
+    r.series[2].max_overlap = 0.9;
+    r.series[3].kinetic_energy = 2.0;
+    r.series[3].nonfinite = 1;
     r.status = RunStatus::crashed;
     EXPECT_EQ(classify(r, &kBounce, walls(), tol).outcome, Outcome::crash);
     r.status = RunStatus::timed_out;
@@ -71,15 +69,15 @@ TEST(Stability, OutcomesFollowTheirPrecedence) {
     r.diagnostic = "step: 1 disk(s) with NaN/Inf state at t = 3";
     EXPECT_EQ(classify(r, &kBounce, walls(), tol).outcome, Outcome::nan);
     r.diagnostic = "solver gave up";
-    r.series.nonfinite[3] = 0;
+    r.series[3].nonfinite = 0;
     EXPECT_EQ(classify(r, &kBounce, walls(), tol).outcome, Outcome::crash) << "a solver that throws is a crash";
     r.status = RunStatus::completed;
     EXPECT_EQ(classify(r, &kBounce, walls(), tol).outcome, Outcome::tunnelling);
     EXPECT_EQ(classify(r, nullptr, walls(), tol).outcome, Outcome::excessive_overlap)
         << "without a reference, tunnelling cannot be judged";
-    r.series.max_overlap[2] = 0.1;
+    r.series[2].max_overlap = 0.1;
     EXPECT_EQ(classify(r, nullptr, walls(), tol).outcome, Outcome::energy_growth);
-    r.series.kinetic_energy[3] = r.series.total_energy[3] = 1.01;
+    r.series[3].kinetic_energy = 1.01;
     const auto stable = classify(r, nullptr, walls(), tol);
     EXPECT_EQ(stable.outcome, Outcome::stable);
     EXPECT_NE(stable.reason.find("tunnelling not evaluated"), std::string::npos) << stable.reason;
@@ -88,7 +86,7 @@ TEST(Stability, OutcomesFollowTheirPrecedence) {
 TEST(Stability, EnergyGrowthOnlyWherePhysicsForbidsIt) {
     Tolerances tol;
     CaseResult r = kBounce;
-    r.series.kinetic_energy[2] = r.series.total_energy[2] = 1.5;
+    r.series[2].kinetic_energy = 1.5;
     EXPECT_EQ(classify(r, nullptr, walls(), tol).outcome, Outcome::energy_growth);
     SceneFeatures pushed = walls();
     pushed.moving_stones = true;  // a moving stone does work on the disks
@@ -96,7 +94,7 @@ TEST(Stability, EnergyGrowthOnlyWherePhysicsForbidsIt) {
     // Under gravity the total energy counts: kinetic energy may rise as a disk falls.
     SceneFeatures falling = walls();
     falling.gravity = true;
-    r.series.total_energy[2] = 1.0;
+    r.series[2].potential_energy = -0.5;  // total energy 1.0: it did not rise
     EXPECT_EQ(classify(r, nullptr, falling, tol).outcome, Outcome::stable);
     EXPECT_DOUBLE_EQ(energy_growth(r.series, false), 0.5);
 }
@@ -113,9 +111,9 @@ CaseResult moved_by(double moved) {
     r.initial = Snapshot{{0.0, 10.0, 20.0}, {1.0, 1.0, 1.0}, {1, 1, 1}, {0, 0, 0}, {0.5, 0.5, 0.5}};
     r.final_state = r.initial;
     for (double& x : r.final_state.x) x += moved;
-    r.series.time = {0.0, 1.0};
-    r.series.kinetic_energy = r.series.total_energy = {1.0, 1.0};
-    r.series.max_overlap = r.series.nonfinite = {0.0, 0.0};
+    r.series.resize(2);
+    r.series[0].kinetic_energy = r.series[1].kinetic_energy = 1.0;
+    r.series[1].time = 1.0;
     return r;
 }
 
@@ -137,7 +135,7 @@ TEST(Stability, StalledWhenTheDisksBarelyMoveWhereTheReferenceMovesThem) {
     EXPECT_EQ(classify(moved_by(0.0), nullptr, walls(), tol).outcome, Outcome::stable);
     // NaN is more severe than a stall.
     CaseResult broken = moved_by(0.0);
-    broken.series.nonfinite[1] = 1;
+    broken.series[1].nonfinite = 1;
     EXPECT_EQ(classify(broken, &reference, walls(), tol).outcome, Outcome::nan);
 }
 

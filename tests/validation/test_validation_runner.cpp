@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "test_backends.h"
+#include "validation/check_table.h"
 #include "validation/suite_runner.h"
 
 namespace collide::test {
@@ -120,7 +121,19 @@ TEST(ValidationRunner, WritesSummaryAndJUnitFiles) {
     text << junit.rdbuf();
     EXPECT_NE(text.str().find("<failure message=\"relative kinetic-energy drift"), std::string::npos);
     EXPECT_NE(text.str().find("<skipped"), std::string::npos);
-    EXPECT_TRUE(std::filesystem::exists(dir + "/summary.json"));
+    ASSERT_TRUE(std::filesystem::exists(dir + "/summary.json"));
+    // The check table's order and metadata, for the report (check_table.h).
+    std::ifstream summary_file(dir + "/summary.json");
+    std::stringstream summary;
+    summary << summary_file.rdbuf();
+    std::size_t at = summary.str().find("\"check_definitions\"");
+    ASSERT_NE(at, std::string::npos);
+    for (const validation::CheckDefinition& c : validation::check_table) {
+        at = summary.str().find(std::string("\"name\": \"") + c.name + "\"", at);
+        ASSERT_NE(at, std::string::npos) << c.name << " missing, or out of the table's order";
+        const std::size_t key = summary.str().find(std::string("\"tolerance_key\": \"") + c.tolerance_key + "\"", at);
+        EXPECT_NE(key, std::string::npos) << c.name;
+    }
 }
 
 TEST(ValidationRunner, UnknownBackendIsAnErrorNamingTheSuite) {
