@@ -39,6 +39,7 @@ class Lab:
         self.collide = collide
         self.scratch = pathlib.Path(scratch)
         self.count = 0
+        self.bench_sizes = None
 
     def scene(self, name, **changes):
         """The scene file `name` with some top-level-table keys replaced (e.g. dt=1e-2)."""
@@ -475,19 +476,25 @@ def replicates(lab, out):
 # --- Chapter 5: making it fast ------------------------------------------------------------
 
 def speed_ladder(lab, out):
+    # `collide bench event` times both exact solvers; --quick (the test's default) runs N = 1e3
+    # and 1e4, the course's figure N = 1e3..1e5 (--bench-sizes 1000 10000 100000).
     prefix = lab.scratch / "bench"
-    command = [lab.collide, "bench", "event", "--quick", "--out", str(prefix)]
+    sizes = ["--sizes", *map(str, lab.bench_sizes)] if lab.bench_sizes else ["--quick"]
+    command = [lab.collide, "bench", "event", *sizes, "--out", str(prefix)]
     done = subprocess.run(command, capture_output=True, text=True)
     if done.returncode != 0:
         raise SystemExit(f"make_figures: {' '.join(command)} failed:\n{done.stderr}")
     rows = json.loads((lab.scratch / "bench-event.json").read_text())["rows"]
-    fig, ax = plt.subplots(figsize=(6, 3.2))
-    for phi in sorted({r["area_fraction"] for r in rows}):
-        pts = sorted((r["n"], r["ns_per_collision"]) for r in rows if r["area_fraction"] == phi)
-        ax.semilogx(*zip(*pts), "o-", label=f"area fraction {phi:g}")
-    ax.set_ylim(bottom=0)
-    finish(fig, ax, out, "ch5_event_ladder",
-           "disks N (count)", "time per collision (ns)", "event: time per collision (collide bench event --quick)")
+    fig, ax = plt.subplots(figsize=(6, 3.4))
+    for k, eta in enumerate(sorted({r["area_fraction"] for r in rows})):
+        for backend, style in (("event", "o-"), ("event-plain", "s:")):
+            pts = sorted((r["n"], r["cpu_ns_per_collision"]) for r in rows
+                         if r["area_fraction"] == eta and r["backend"] == backend)
+            if pts:
+                ax.loglog(*zip(*pts), style, color=f"C{k}", label=f"{backend}, η = {eta:g}")
+    ax.legend(fontsize=7, ncol=2)
+    finish(fig, ax, out, "ch5_event_ladder", "disks N (count)", "processor time per collision (ns)",
+           "collide bench event: the exact solvers' cost per collision", legend=False)
 
 
 def threads(lab, out):
@@ -516,6 +523,8 @@ def main():
     parser.add_argument("--collide", default=str(ROOT / "build" / "release" / "collide"))
     parser.add_argument("--out", default=str(ROOT / "docs" / "figures"))
     parser.add_argument("--only", nargs="*", choices=sorted(FIGURES), help="make only these figures")
+    parser.add_argument("--bench-sizes", nargs="*", type=int,
+                        help="disk counts of the event ladder (default: collide bench event --quick)")
     args = parser.parse_args()
     out = pathlib.Path(args.out)
     try:
@@ -524,6 +533,7 @@ def main():
         safe_output.make_output_directory(out)
         with tempfile.TemporaryDirectory(prefix="collide-figures-") as scratch:
             lab = Lab(args.collide, scratch)
+            lab.bench_sizes = args.bench_sizes
             for name in args.only or FIGURES:
                 FIGURES[name](lab, out)
     except safe_output.OutputPathError as e:
