@@ -9,15 +9,22 @@
     python3 docs/course/lab.py settings RUN.h5...   the backend's recorded settings (provenance)
     python3 docs/course/lab.py checks SUMMARY.json SCENE BACKEND   one case group's checks
     python3 docs/course/lab.py sweep SUMMARY.json SCENE BACKEND    its error at each dt
+    python3 docs/course/lab.py check EXERCISE FILE.py  checks the code a student wrote for a
+                                        coding exercise (galperin, root, haff, tunnel, blocks,
+                                        counting_sort); exit status 0 when it is right
 
 Each reads the HDF5 layout of docs/output-format.md with h5py; nothing here simulates.
 """
 import argparse
 import json
+import pathlib
 import sys
 
 import h5py
 import numpy as np
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+import lab_check  # noqa: E402  (the coding exercises' checkers)
 
 
 def velocities(run):
@@ -91,9 +98,13 @@ def sweep(summary, scene, backend):
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("what", choices=["velocities", "counters", "energy", "error", "same", "settings",
-                                         "checks", "sweep"])
+                                         "checks", "sweep", "check"])
     parser.add_argument("files", nargs="+")
     args = parser.parse_args()
+    if args.what == "check":
+        if len(args.files) != 2:
+            parser.error(f"check needs EXERCISE FILE.py (exercises: {', '.join(lab_check.EXERCISES)})")
+        sys.exit(lab_check.check(*args.files))
     pairs = {"error": error, "same": same}
     if args.what in pairs:
         if len(args.files) != 2:

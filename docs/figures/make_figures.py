@@ -39,6 +39,7 @@ class Lab:
         self.collide = collide
         self.scratch = pathlib.Path(scratch)
         self.count = 0
+        self.bench_sizes = None
 
     def scene(self, name, **changes):
         """The scene file `name` with some top-level-table keys replaced (e.g. dt=1e-2)."""
@@ -65,23 +66,52 @@ class Lab:
 
 
 def finish(fig, ax, out, name, xlabel, ylabel, title, legend=True, legend_loc=None):
-    """Labels the axes, writes out/NAME.png and closes the figure."""
+    """Labels the axes, writes out/NAME.png (150 dpi) and closes the figure. Every axis's labels
+    go into the PNG's "axes" text as JSON: tests/docs/check_course.py requires a unit in
+    brackets at the end of each (categorical axes, marked `ax.categorical = "x"`, excepted, and
+    an axis shared with a labelled one may stay blank) and a
+    colour bar wherever colour encodes a value (`ax.colour_value = True`)."""
     if xlabel:
         ax.set_xlabel(xlabel)
     if ylabel:
         ax.set_ylabel(ylabel)
-    ax.set_title(title)
+    ax.set_title(title, fontsize=10)
     if legend:
         ax.legend(loc=legend_loc)
     fig.tight_layout()
+    axes = [{"xlabel": a.get_xlabel(), "ylabel": a.get_ylabel(),
+             "xlabel_categorical": "x" in getattr(a, "categorical", ""),
+             "ylabel_categorical": "y" in getattr(a, "categorical", ""),
+             "xlabel_shared": len(a.get_shared_x_axes().get_siblings(a)) > 1,
+             "ylabel_shared": len(a.get_shared_y_axes().get_siblings(a)) > 1,
+             "colour_encodes_value": getattr(a, "colour_value", False),
+             "colorbar": getattr(a, "colorbar_label", None)} for a in fig.axes]
     png = io.BytesIO()
-    fig.savefig(png, format="png", dpi=110)
+    fig.savefig(png, format="png", dpi=150, metadata={"axes": json.dumps(axes)})
     safe_output.write_bytes(out / f"{name}.png", png.getvalue())
     plt.close(fig)
     print(f"wrote {out / name}.png")
 
 
+def colour_bar(fig, mappable, ax, label):
+    """A colour bar for `ax`, whose colours encode the value named by `label` (with its unit)."""
+    bar = fig.colorbar(mappable, ax=ax)
+    bar.set_label(label)
+    bar.ax.categorical = "x"
+    ax.colour_value, ax.colorbar_label = True, label
+    return bar
+
+
+TIME = r"time ($\sigma\sqrt{m/kT}$)"
+SPEED = r"speed ($\sqrt{kT/m}$)"
+LENGTH = r"($\sigma$)"
+
+
 # --- Chapter 1: one collision -------------------------------------------------------------
+
+FEW_TIME = r"time ($\sigma/v_0$)"      # few-body scenes: v0 = 1, the striker's initial speed
+FEW_SPEED = r"($v_0$)"
+
 
 def head_on_mass_ratio(lab, out):
     f = lab.run(SCENES / "head_on_mass_ratio_10.toml", "event", frames=True)
@@ -93,89 +123,226 @@ def head_on_mass_ratio(lab, out):
         ax.axhline(value, color="grey", lw=0.6, ls=":")
         ax.text(t[-1], value, f" {text}", va="center", fontsize=8)
     finish(fig, ax, out, "ch1_head_on_mass_ratio",
-           "time", "velocity $v_x$", "head_on_mass_ratio_10 on event", legend_loc="center left")
+           FEW_TIME, r"velocity $v_x$ " + FEW_SPEED, "head_on_mass_ratio_10 on event", legend_loc="center left")
 
 
 def glancing(lab, out):
     f = lab.run(SCENES / "glancing.toml", "event", frames=True)
-    x = f["frames/position"][:]
-    fig, ax = plt.subplots(figsize=(6, 3.2))
+    t, x, v = f["frames/time"][:], f["frames/position"][:], f["frames/velocity"][:]
+    fig, ax = plt.subplots(figsize=(6, 3.4))
     for i, label in enumerate(("striker", "target")):
         ax.plot(x[:, i, 0], x[:, i, 1], marker=".", ms=3, label=label)
-        ax.add_patch(plt.Circle(x[0, i], 0.5, fill=False, color=f"C{i}", lw=0.8))
+    # The contact: the first frame after the velocities change, moved back to the contact time.
+    k = int(np.argmax(np.any(v[1:] != v[:-1], axis=(1, 2))))
+    u = v[k, 0] - v[k, 1]
+    dx = x[k, 0] - x[k, 1]
+    b, c = dx @ u, dx @ dx - 1.0
+    tc = c / (-b + np.sqrt(b * b - (u @ u) * c))          # the stable root of chapter 2
+    contact = x[k] + v[k] * tc
+    for i in range(2):
+        ax.add_patch(plt.Circle(contact[i], 0.5, fill=False, color=f"C{i}", lw=0.8))
+    n = (contact[0] - contact[1]) / np.linalg.norm(contact[0] - contact[1])
+    ends = np.array([contact[1] - 2.5 * n, contact[1] + 3.5 * n])
+    ax.plot(ends[:, 0], ends[:, 1], "k--", lw=0.7, label="line of centres n")
+    after = v[k + 1]
+    for i in range(2):   # the velocities after the collision, from the contact points
+        ax.annotate("", contact[i] + 1.8 * after[i] / np.linalg.norm(after[i]), contact[i],
+                    arrowprops=dict(arrowstyle="->", color=f"C{i}", lw=1.2))
+    corner = contact[0] + 0.5 * (after[0] / np.linalg.norm(after[0]) + after[1] / np.linalg.norm(after[1]))
+    ax.plot(*zip(contact[0] + 0.5 * after[0] / np.linalg.norm(after[0]), corner,
+                 contact[0] + 0.5 * after[1] / np.linalg.norm(after[1])), "k-", lw=0.6)
+    ax.text(*(corner + 0.15), "90°", fontsize=8)
     ax.set_aspect("equal")
     ax.set_xlim(0, 10)
     ax.set_ylim(0, 5)
-    finish(fig, ax, out, "ch1_glancing", None, None, "glancing on event: the disks leave at a right angle",
+    finish(fig, ax, out, "ch1_glancing", r"x ($\sigma$)", r"y ($\sigma$)",
+           f"glancing on event: contact at t = {t[k] + tc:.3f}, then a right angle",
            legend_loc="upper left")
 
 
 def pi_circle(lab, out):
-    # Output every 0.002 time units, so almost every state between two collisions is seen.
-    f = lab.run(lab.scene("stiff/pi_billiard_k2.toml", output_interval="0.002", duration="12.0"),
-                "event", frames=True)
+    # Mass ratio 100 (31 collisions): the chords, slope -0.1, differ visibly from the wall jumps.
+    scene = lab.scene("stiff/pi_billiard_k2.toml", output_interval="0.002")
+    scene.write_text(scene.read_text().replace("mass = 10000.0", "mass = 100.0"))
+    f = lab.run(scene, "event", frames=True)
     v = f["frames/velocity"][:, :, 0]
     m = f["particles/mass"][:]
     a, b = np.sqrt(m[0]) * v[:, 0], np.sqrt(m[1]) * v[:, 1]
     keep = np.r_[True, (np.abs(np.diff(a)) + np.abs(np.diff(b))) > 1e-12]
-    fig, ax = plt.subplots(figsize=(4.6, 4.6))
-    r = np.hypot(a[0], b[0])
+    a, b = a[keep], b[keep]
+    r, theta = np.hypot(a[0], b[0]), np.arctan(np.sqrt(m[0] / m[1]))
+    fig, ax = plt.subplots(figsize=(5.6, 6.4))
     phi = np.linspace(0, 2 * np.pi, 400)
     ax.plot(r * np.cos(phi), r * np.sin(phi), color="grey", lw=0.6)
-    ax.plot(a[keep], b[keep], lw=0.5, marker=".", ms=2)
+    ax.plot([0, 0], [-1.15 * r, 1.15 * r], "k--", lw=0.8, label="mirror of wall collisions (a = 0)")
+    mirror = 1.15 * r * np.array([np.sin(theta), np.cos(theta)])
+    ax.plot([-mirror[0], mirror[0]], [-mirror[1], mirror[1]], "k:", lw=1.0,
+            label=r"mirror of pair collisions, $\theta$ from the vertical")
+    ax.plot(a, b, lw=0.7, color="C0")
+    ax.plot(a, b, ".", ms=4, color="C0", label=f"states between the {len(a) - 1} collisions")
+    ax.plot(a[0], b[0], "o", color="C3", ms=5, label="start")
+    # 2 theta: from the start to the state after one pair and one wall collision.
+    start, turned = np.arctan2(b[0], a[0]), np.arctan2(b[2], a[2])
+    arc = np.linspace(start, turned, 30)
+    ax.plot(0.8 * r * np.cos(arc), 0.8 * r * np.sin(arc), color="C3", lw=1.5)
+    ax.plot([0, a[0]], [0, b[0]], color="C3", lw=0.5)
+    ax.plot([0, a[2]], [0, b[2]], color="C3", lw=0.5)
+    ax.text(*(0.62 * r * np.array([np.cos(arc[15]), np.sin(arc[15])])), r"$2\theta$", color="C3", ha="center")
     ax.set_aspect("equal")
-    finish(fig, ax, out, "ch1_pi_circle",
-           r"$\sqrt{m_1}\,v_1$", r"$\sqrt{m_2}\,v_2$", "pi_billiard_k2: states on the energy circle", legend=False)
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.13), fontsize=7, ncol=2)
+    finish(fig, ax, out, "ch1_pi_circle", r"$a = \sqrt{m_1}\,v_1$ ($\sqrt{m_1}\,v_0$)",
+           r"$b = \sqrt{m_2}\,v_2$ ($\sqrt{m_1}\,v_0$)", "Galperin's billiard at m2/m1 = 100 on event",
+           legend=False)
 
 
 # --- Chapter 2: many disks, exactly -------------------------------------------------------
 
+def rayleigh(s, kT):
+    """The 2-D Maxwell-Boltzmann speed density for m = 1."""
+    return s / kT * np.exp(-s**2 / (2 * kT))
+
+
 def maxwell(lab, out):
-    f = lab.run(lab.scene("box_gas_1000.toml", duration="5.0"), "event", frames=True)
-    v, m = f["frames/velocity"][-1], f["particles/mass"][:]
-    speed = np.hypot(v[:, 0], v[:, 1])
-    kT = np.mean(0.5 * m * speed**2)  # 2D equipartition: <m v^2 / 2> = kT
-    s = np.linspace(0, speed.max() * 1.05, 200)
-    fig, ax = plt.subplots(figsize=(6, 3.2))
-    ax.hist(speed, bins=30, density=True, alpha=0.6, label="event, t = 5 (1000 disks)")
-    ax.plot(s, s / kT * np.exp(-s**2 / (2 * kT)), label=r"$f(v) = (v/kT)\,e^{-v^2/2kT}$, m = 1")
-    finish(fig, ax, out, "ch2_maxwell",
-           "speed", "probability density", "box_gas_1000: Maxwell-Boltzmann speeds in 2D")
+    # physics/maxwell_relaxation: every disk starts at speed 1; kT = 1/2 is fixed by the energy.
+    f = lab.run(SCENES / "physics/maxwell_relaxation.toml", "event", frames=True)
+    t, v = f["frames/time"][:], f["frames/velocity"][:]
+    speed = np.hypot(v[..., 0], v[..., 1])
+    kT = float(np.mean(0.5 * speed[0] ** 2))
+    s = np.linspace(0, 3.5 * np.sqrt(kT), 200)
+    bins = np.linspace(0, 3.5 * np.sqrt(kT), 36)
+    fig, ax = plt.subplots(figsize=(6, 3.4))
+    for when, colour in ((0.5, "C1"), (1.5, "C2"), (10.0, "C0")):
+        k = int(np.argmin(np.abs(t - when)))
+        ax.hist(speed[k], bins=bins, density=True, histtype="step", color=colour, lw=1.2,
+                label=f"event, t = {t[k]:g}")
+    ax.axvline(1.0, color="C3", lw=1.0, ls="--", label="t = 0: every disk at speed 1")
+    ax.plot(s, rayleigh(s, kT), "k", lw=1.0, label=r"$f(v) = (mv/kT)\,e^{-mv^2/2kT}$, kT = 1/2")
+    finish(fig, ax, out, "ch2_maxwell", r"speed ($\sigma\,/\,$time unit; kT = 1/2, m = 1)",
+           "probability density (time unit / $\\sigma$)", "maxwell_relaxation: one speed relaxes to Maxwell-Boltzmann",
+           legend_loc="upper right")
+
+
+def kolafa_rottner(eta):
+    """Z of the hard-disk fluid, Kolafa & Rottner (2006), from data/references."""
+    import tomllib
+    terms = tomllib.loads((ROOT / "data/references/kolafa_rottner_2006.toml").read_text())["terms"]
+    return sum(t["coefficient"] * eta ** t["eta_power"] / (1 - eta) ** t["one_minus_eta_power"] for t in terms)
 
 
 def equation_of_state(lab, out):
-    # 400 disks of radius 0.5 in a periodic square box of side L: area fraction 400 pi 0.25 / L^2.
+    # 400 disks of radius 0.5 in a periodic square box of side L: eta = 400 pi 0.25 / L^2. The
+    # first time unit is left out (equilibration from the random placement); Z is averaged over
+    # four blocks of the rest, each with its own kT, and the error bar is their standard error.
     fractions = [0.05, 0.15, 0.25, 0.35, 0.45, 0.5]
-    z = []
-    for phi in fractions:
-        side = np.sqrt(400 * np.pi * 0.25 / phi)
-        scene = lab.scene("periodic_gas.toml", box=f"[0.0, 0.0, {side:.6f}, {side:.6f}]",
-                          count="400", duration="4.0")
-        f = lab.run(scene, "event")
-        pressure = float(f["stats/counters"].attrs["pressure"])
-        kT = float(np.mean(f["metrics/kinetic_energy"][:])) / 400  # 2D: K = N kT
-        z.append(pressure * side**2 / (400 * kT))
-    p = np.linspace(0, 0.6, 200)
-    fig, ax = plt.subplots(figsize=(6, 3.2))
-    ax.plot(p, (1 + p**2 / 8) / (1 - p) ** 2, label="Henderson (1975)")
-    ax.plot(fractions, z, "o", label="event, 400 disks, t = 4")
-    finish(fig, ax, out, "ch2_equation_of_state",
-           "area fraction", "Z = PA / NkT", "Hard-disk equation of state from the collision virial")
+    z, se = [], []
+    for eta in fractions:
+        side = np.sqrt(400 * np.pi * 0.25 / eta)
+        blocks = []
+        for k in range(5):
+            f = lab.run(lab.scene("periodic_gas.toml", box=f"[0.0, 0.0, {side:.6f}, {side:.6f}]",
+                                  count="400", duration=f"{1.0 + k:g}"), "event")
+            c = f["stats/counters"].attrs
+            blocks.append((float(c["virial_sum"]), float(c["kinetic_integral"]), float(c["simulated_time"])))
+        zs = []
+        for (w0, k0, t0), (w1, k1, t1) in zip(blocks, blocks[1:]):
+            kT_mean = (k1 - k0) / (t1 - t0)           # <K> over the block, = N kT in 2-D
+            zs.append(1 + (w1 - w0) / (2 * (t1 - t0)) / kT_mean)
+        z.append(np.mean(zs))
+        se.append(np.std(zs, ddof=1) / np.sqrt(len(zs)))
+    p = np.linspace(0, 0.75, 300)
+    fig, ax = plt.subplots(figsize=(6, 3.6))
+    ax.axvspan(0.700, 0.716, color="C4", alpha=0.25, label="liquid-hexatic coexistence (Bernard & Krauth 2011)")
+    ax.axvspan(0.716, 0.75, color="C7", alpha=0.15, label="hexatic, then solid from 0.72")
+    ax.plot(p[p < 0.72], ((1 + p**2 / 8) / (1 - p) ** 2)[p < 0.72], label="Henderson (1975)")
+    fluid = p[p <= 0.70]
+    ax.plot(fluid, kolafa_rottner(fluid), "--", label="Kolafa & Rottner (2006), fluid")
+    ax.errorbar(fractions, z, yerr=se, fmt="o", ms=4, capsize=2, color="k",
+                label="event, 400 disks, 4 blocks of 1 after 1 of equilibration")
+    ax.set_ylim(0, 14)
+    ax.set_xlim(0, 0.75)
+    finish(fig, ax, out, "ch2_equation_of_state", r"area fraction $\eta$ (dimensionless)",
+           "Z = PA / NkT (dimensionless)", "Hard-disk equation of state from the collision virial",
+           legend_loc="upper left")
 
 
 def snapshot(lab, out):
     f = lab.run(SCENES / "box_gas_1000.toml", "event", frames=True)
     x, r = f["frames/position"][-1], f["particles/radius"][:]
     v = f["frames/velocity"][-1]
-    fig, ax = plt.subplots(figsize=(4.6, 4.6))
+    fig, ax = plt.subplots(figsize=(5.4, 4.6))
     speed = np.hypot(v[:, 0], v[:, 1])
-    colours = plt.cm.viridis(speed / speed.max())
+    norm = matplotlib.colors.Normalize(0, speed.max())
+    colours = plt.cm.viridis(norm(speed))
     for i in range(len(r)):
         ax.add_patch(plt.Circle(x[i], r[i], color=colours[i], lw=0))
     ax.set_xlim(0, 50)
     ax.set_ylim(0, 50)
     ax.set_aspect("equal")
-    finish(fig, ax, out, "ch2_snapshot", None, None, "box_gas_1000 at t = 10 (colour: speed)", legend=False)
+    colour_bar(fig, plt.cm.ScalarMappable(norm=norm, cmap="viridis"), ax, SPEED)
+    finish(fig, ax, out, "ch2_snapshot", r"x ($\sigma$)", r"y ($\sigma$)", "box_gas_1000 at t = 10",
+           legend=False)
+
+
+def list_scene(x, v, box, duration, interval):
+    """A scene of the disks at positions x and velocities v (radius 0.5, mass 1), digits exact."""
+    disks = ",\n".join(f"  {{ x = {p[0]!r}, y = {p[1]!r}, vx = {q[0]!r}, vy = {q[1]!r}, radius = 0.5, mass = 1.0 }}"
+                       for p, q in zip(x, v))
+    return (f'description = "box_gas_1000 written out disk by disk"\nseed = 1\n\n[world]\nbox = {box}\n'
+            f'boundary = "reflect"\n\n[run]\nduration = {duration}\noutput_interval = {interval}\ndt = 1e-3\n\n'
+            f'[[particles]]\nkind = "list"\ndisks = [\n{disks} ]\n')
+
+
+def chaos(lab, out):
+    # Two event runs of box_gas_1000 whose initial states differ by 1e-12 in one coordinate.
+    start = lab.run(SCENES / "box_gas_1000.toml", "event", frames=True)
+    x, v = start["frames/position"][0], start["frames/velocity"][0]
+    runs = []
+    for shift in (0.0, 1e-12):
+        moved = x.copy()
+        moved[0, 0] += shift
+        lab.count += 1
+        scene = lab.scratch / f"chaos{lab.count}.toml"
+        scene.write_text(list_scene(moved, v, "[0.0, 0.0, 50.0, 50.0]", "10.0", "0.05"))
+        runs.append(lab.run(scene, "event", frames=True))
+    t = runs[0]["frames/time"][:]
+    separation = np.sqrt(sum(np.sum((runs[0][k][:] - runs[1][k][:]) ** 2, axis=(1, 2))
+                             for k in ("frames/position", "frames/velocity")))
+    fit = (separation > 1e-11) & (separation < 1e-2)
+    slope, intercept = np.polyfit(t[fit], np.log(separation[fit]), 1)
+    rate = float(start["stats/counters"].attrs["collision_rate"])
+    fig, ax = plt.subplots(figsize=(6, 3.4))
+    ax.semilogy(t, separation, label="phase-space distance of the two runs")
+    ax.semilogy(t[fit], np.exp(intercept + slope * t[fit]), "k--",
+                label=rf"$e^{{\lambda t}}$, $\lambda$ = {slope:.2f} per time unit = {slope / rate:.2f} per collision")
+    ax.axhline(1e-12, color="grey", lw=0.6, ls=":")
+    finish(fig, ax, out, "ch2_chaos", TIME, r"distance in phase space ($\sigma$, $\sqrt{kT/m}$)",
+           "box_gas_1000 on event: a 1e-12 shift grows exponentially", legend_loc="upper left")
+    print(f"chaos: lambda = {slope:.3f} per time unit, {slope / rate:.3f} per collision (rate {rate})")
+
+
+def enskog_rate(density, eta, kT):
+    """Collisions per disk per time unit (sigma = m = 1): nu = 2 rho sigma g(sigma) sqrt(pi kT / m),
+    g(sigma) from Kolafa-Rottner through the contact theorem Z = 1 + 2 eta g(sigma)."""
+    g = (kolafa_rottner(eta) - 1) / (2 * eta)
+    return 2 * density * g * np.sqrt(np.pi * kT)
+
+
+def haff(lab, out):
+    f = lab.run(SCENES / "physics/haff_cooling.toml", "event")
+    t, K = f["metrics/time"][:], f["metrics/kinetic_energy"][:]
+    n, side, e = 1000, 88.6226925452758, 0.9
+    T = K / n
+    density = n / side**2
+    tau = 4 / ((1 - e**2) * enskog_rate(density, density * np.pi / 4, T[0]))
+    fig, (ax, res) = plt.subplots(2, 1, figsize=(6, 4.4), sharex=True, gridspec_kw={"height_ratios": [2, 1]})
+    ax.plot(t, T / T[0], "o", ms=3, label="event, haff_cooling (1000 disks, e = 0.9, η = 0.1)")
+    ax.plot(t, 1 / (1 + t / tau) ** 2, "k", lw=1, label=rf"Haff: $1/(1 + t/\tau)^2$, $\tau$ = {tau:.1f} (Enskog)")
+    ax.set_ylabel(r"$T(t)/T_0$ (dimensionless)")
+    ax.legend()
+    ax.set_title("A granular gas cooling: Haff's law")
+    res.plot(t, (T / T[0]) * (1 + t / tau) ** 2 - 1, "o-", ms=3)
+    res.axhline(0, color="k", lw=0.6)
+    finish(fig, res, out, "ch2_haff", TIME, "T / Haff − 1 (dimensionless)", "", legend=False)
 
 
 # --- Chapter 3: many disks, stepped -------------------------------------------------------
@@ -215,19 +382,26 @@ def convergence(lab, out):
     ax.loglog(steps, np.array(steps) * 0.3, "k:", lw=0.8, label="slope 1")
     ax.set_xscale("log")
     ax.set_yscale("log")
-    finish(fig, ax, out, "ch3_convergence",
-           "dt", "mean position error at t = 5", "glancing: stepped rules against event (6 collision phases)")
+    finish(fig, ax, out, "ch3_convergence", r"dt ($\sigma/v_0$)", r"mean position error at t = 5 ($\sigma$)",
+           "glancing: stepped rules against event (6 collision phases)")
 
 
 def cradle(lab, out):
-    fig, ax = plt.subplots(figsize=(6, 3.2))
+    fig, ax = plt.subplots(figsize=(6, 3.4))
+    exact = None
     for backend, dt in (("event", "1e-3"), ("step", "1e-1"), ("step", "2e-2")):
         f = lab.run(lab.scene("stiff/newtons_cradle.toml", dt=dt), backend, frames=True)
-        label = backend if backend == "event" else f"{backend}, dt = {dt}"
-        ax.plot(f["frames/time"][:], f["frames/position"][:, 5, 0], label=label)
+        t, x = f["frames/time"][:], f["frames/position"][:, 5, 0]
+        if exact is None:
+            exact = x
+            label = "event"
+        else:   # the lasting lag: how far behind event the far disk ends, over its final speed
+            lag = (exact[-1] - x[-1]) / f["frames/velocity"][-1, 5, 0]
+            label = f"{backend}, dt = {dt}: ends {lag:.2g} behind"
+        ax.plot(t, x, label=label)
     ax.set_xlim(0.5, 3)
-    finish(fig, ax, out, "ch3_cradle",
-           "time", "x of the far disk", "newtons_cradle: the impulse crosses one contact per step")
+    finish(fig, ax, out, "ch3_cradle", FEW_TIME, r"x of the far disk ($\sigma$)",
+           "newtons_cradle: the impulse crosses one contact per step")
 
 
 def energy_crowd(lab, out):
@@ -237,33 +411,49 @@ def energy_crowd(lab, out):
         t, k = f["metrics/time"][:], f["metrics/kinetic_energy"][:]
         label = backend if backend == "event" else f"{backend}, dt = {dt}"
         ax.plot(t, (k - k[0]) / k[0], label=label)
-    finish(fig, ax, out, "ch3_energy_crowd",
-           "time", "relative kinetic energy change", "box_gas_1000 at e = 1: energy lost in multi-contact steps")
+    finish(fig, ax, out, "ch3_energy_crowd", TIME, r"$(K - K_0)/K_0$ (dimensionless)",
+           "box_gas_1000 at e = 1: energy lost in multi-contact steps")
 
 
 # --- Chapter 4: validating a solver -------------------------------------------------------
 
 def work_precision(lab, out):
-    fig, ax = plt.subplots(figsize=(6, 3.4))
+    steps = (1e-2, 5e-3, 2e-3, 1e-3, 5e-4, 2.5e-4)
+    fig, (by_dt, by_time) = plt.subplots(1, 2, figsize=(8, 3.4), sharey=True)
     for backend in ("step", "cpu"):
-        points = [phase_mean_error(lab, "head_on_equal.toml", (3.0, 1.0), backend, dt)
-                  for dt in (1e-2, 5e-3, 2e-3, 1e-3, 5e-4, 2.5e-4)]
-        ax.errorbar([p[2] for p in points], [p[0] for p in points], yerr=[p[1] for p in points],
-                    fmt="o-", capsize=2, label=backend)
-    ax.set_xscale("log")
-    ax.set_yscale("log")
-    finish(fig, ax, out, "ch4_work_precision",
-           "solver time per run (s)", "mean position error at the end",
-           "head_on_equal: error against run time (6 collision phases)")
+        points = [phase_mean_error(lab, "head_on_equal.toml", (3.0, 1.0), backend, dt) for dt in steps]
+        error, se = [p[0] for p in points], [p[1] for p in points]
+        by_dt.errorbar(steps, error, yerr=se, fmt="o-", capsize=2, label=backend)
+        by_time.errorbar([p[2] for p in points], error, yerr=se, fmt="o-", capsize=2, label=backend)
+    by_dt.loglog(steps, np.array(steps) * 1.8, "k:", lw=0.8, label="slope 1: order p = 1")
+    for ax in (by_dt, by_time):
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+    by_dt.set_xlabel(r"dt ($\sigma/v_0$)")
+    by_dt.set_ylabel(r"mean position error at the end ($\sigma$)")
+    by_dt.set_title("against dt: slope = order p", fontsize=10)
+    by_dt.legend()
+    finish(fig, by_time, out, "ch4_work_precision", "solver time per run (s)", None,
+           "against run time: slope −p only if time ∝ 1/dt")
+
 
 
 def overlap_series(lab, out):
-    fig, ax = plt.subplots(figsize=(6, 3.2))
+    # Largest overlap at each output time against one step's approach |u| dt / sigma, |u| the
+    # mean relative speed of a Maxwell gas, sqrt(pi kT / m) (kT = 1 here).
+    dt = 1e-3
+    predicted = np.sqrt(np.pi) * dt
+    fig, ax = plt.subplots(figsize=(6, 3.4))
+    bins = np.logspace(-5, -1, 41)
     for backend in ("step", "cpu", "box2d"):
-        f = lab.run(lab.scene("box_gas_1000.toml", duration="4.0"), backend)
-        ax.semilogy(f["metrics/time"][:], np.maximum(f["metrics/max_overlap"][:], 1e-9), label=backend)
-    finish(fig, ax, out, "ch4_overlap",
-           "time", "largest overlap / contact distance", "box_gas_1000: overlap statistics at the output times")
+        f = lab.run(lab.scene("box_gas_1000.toml", duration="4.0", output_interval="0.02"), backend)
+        depth = f["metrics/max_overlap"][:]
+        ax.hist(depth[depth > 0], bins=bins, histtype="step", lw=1.2,
+                label=f"{backend} ({np.sum(depth == 0)} of {depth.size} times without overlap)")
+    ax.axvline(predicted, color="k", ls="--", lw=0.8, label=r"$\langle|u|\rangle\,dt/\sigma$ = one step's approach")
+    ax.set_xscale("log")
+    finish(fig, ax, out, "ch4_overlap", r"largest overlap / contact distance (dimensionless)",
+           "output times (count)", "box_gas_1000, dt = 1e-3: overlap depths")
 
 
 def replicates(lab, out):
@@ -274,28 +464,37 @@ def replicates(lab, out):
         z.append(float(f["stats/counters"].attrs["pressure"]))
     z = np.array(z)
     fig, ax = plt.subplots(figsize=(6, 3.0))
-    ax.plot(range(1, 6), z, "o")
+    names = [f"seed {s}" for s in range(1, 6)]
+    ax.plot(names, z, "o")
     mean, se = z.mean(), z.std(ddof=1) / np.sqrt(len(z))
     ax.axhspan(mean - se, mean + se, alpha=0.2, label=f"mean ± SE = {mean:.4f} ± {se:.4f}")
-    finish(fig, ax, out, "ch4_replicates", "seed", "pressure", "periodic_gas on event, five replicates")
+    ax.categorical = "x"
+    finish(fig, ax, out, "ch4_replicates", "scene seed (a category, not a scale)", r"pressure ($kT/\sigma^2$)",
+           "periodic_gas on event, five replicates of 2 time units")
 
 
 # --- Chapter 5: making it fast ------------------------------------------------------------
 
 def speed_ladder(lab, out):
+    # `collide bench event` times both exact solvers; --quick (the test's default) runs N = 1e3
+    # and 1e4, the course's figure N = 1e3..1e5 (--bench-sizes 1000 10000 100000).
     prefix = lab.scratch / "bench"
-    command = [lab.collide, "bench", "event", "--quick", "--out", str(prefix)]
+    sizes = ["--sizes", *map(str, lab.bench_sizes)] if lab.bench_sizes else ["--quick"]
+    command = [lab.collide, "bench", "event", *sizes, "--out", str(prefix)]
     done = subprocess.run(command, capture_output=True, text=True)
     if done.returncode != 0:
         raise SystemExit(f"make_figures: {' '.join(command)} failed:\n{done.stderr}")
     rows = json.loads((lab.scratch / "bench-event.json").read_text())["rows"]
-    fig, ax = plt.subplots(figsize=(6, 3.2))
-    for phi in sorted({r["area_fraction"] for r in rows}):
-        pts = sorted((r["n"], r["ns_per_collision"]) for r in rows if r["area_fraction"] == phi)
-        ax.semilogx(*zip(*pts), "o-", label=f"area fraction {phi:g}")
-    ax.set_ylim(bottom=0)
-    finish(fig, ax, out, "ch5_event_ladder",
-           "disks N", "ns per collision", "event: time per collision (collide bench event --quick)")
+    fig, ax = plt.subplots(figsize=(6, 3.4))
+    for k, eta in enumerate(sorted({r["area_fraction"] for r in rows})):
+        for backend, style in (("event", "o-"), ("event-plain", "s:")):
+            pts = sorted((r["n"], r["cpu_ns_per_collision"]) for r in rows
+                         if r["area_fraction"] == eta and r["backend"] == backend)
+            if pts:
+                ax.loglog(*zip(*pts), style, color=f"C{k}", label=f"{backend}, η = {eta:g}")
+    ax.legend(fontsize=7, ncol=2)
+    finish(fig, ax, out, "ch5_event_ladder", "disks N (count)", "processor time per collision (ns)",
+           "collide bench event: the exact solvers' cost per collision", legend=False)
 
 
 def threads(lab, out):
@@ -308,13 +507,14 @@ def threads(lab, out):
         rates.append(1000 * int(f["stats"].attrs["steps"]) / seconds)
         names.append(backend + (f", {extra[1]} thread{'s' if extra[1] != '1' else ''}" if extra else ""))
     ax.barh(names, rates)
+    ax.categorical = "y"
     finish(fig, ax, out, "ch5_threads",
-           "particle-steps per second", None, "box_gas_1000, 2000 steps: step (double) and cpu (float)",
+           "throughput (particle-steps per second)", None, "box_gas_1000, 2000 steps: step (double) and cpu (float)",
            legend=False)
 
 
 FIGURES = {f.__name__: f for f in (head_on_mass_ratio, glancing, pi_circle, maxwell, equation_of_state,
-                                    snapshot, convergence, cradle, energy_crowd, work_precision,
+                                    snapshot, chaos, haff, convergence, cradle, energy_crowd, work_precision,
                                     overlap_series, replicates, speed_ladder, threads)}
 
 
@@ -323,6 +523,8 @@ def main():
     parser.add_argument("--collide", default=str(ROOT / "build" / "release" / "collide"))
     parser.add_argument("--out", default=str(ROOT / "docs" / "figures"))
     parser.add_argument("--only", nargs="*", choices=sorted(FIGURES), help="make only these figures")
+    parser.add_argument("--bench-sizes", nargs="*", type=int,
+                        help="disk counts of the event ladder (default: collide bench event --quick)")
     args = parser.parse_args()
     out = pathlib.Path(args.out)
     try:
@@ -331,6 +533,7 @@ def main():
         safe_output.make_output_directory(out)
         with tempfile.TemporaryDirectory(prefix="collide-figures-") as scratch:
             lab = Lab(args.collide, scratch)
+            lab.bench_sizes = args.bench_sizes
             for name in args.only or FIGURES:
                 FIGURES[name](lab, out)
     except safe_output.OutputPathError as e:

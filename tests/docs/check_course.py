@@ -5,11 +5,20 @@
                                         <!-- expect: TEXT --> line must appear in the output
     check_course.py links               every image and relative link of docs/ resolves, and every
                                         quoted line range (<!-- quote PATH:A-B -->) matches its file
-    check_course.py figures COLLIDE     docs/figures/make_figures.py runs on the library scenes
+    check_course.py figures COLLIDE     docs/figures/make_figures.py runs on the library scenes,
+                                        every axis of every figure is labelled with a unit, >= 150 dpi
+    check_course.py lab                 every coding exercise's worked solution passes
+                                        `lab.py check` and a typical wrong answer
+                                        (tests/docs/wrong_answers/) is rejected
+    check_course.py facts COLLIDE       statements of the text measured against runs: the collision
+                                        virial, Galperin's circle, the Newton's-cradle lag, and what
+                                        a slope in log-log gives
 
-An exercise is a "### Exercise" section of a chapter (docs/course/*.md): its first ```sh block
-is the command a student runs, with `collide` meaning the built program, in a scratch folder
-that sees the repository's data/ and docs/.
+An exercise is a "### Exercise" section of a chapter (docs/course/[1-9]-*.md): its first ```sh
+block is the command a student runs, with `collide` meaning the built program, in a scratch
+folder that sees the repository's data/ and docs/. A coding exercise also holds its worked
+solution as `<!-- solution: FILE -->` and a ```python block, written to FILE in the scratch folder
+before the commands run (its commands call `python3 docs/course/lab.py check NAME FILE`).
 """
 import os
 import pathlib
@@ -18,20 +27,32 @@ import subprocess
 import sys
 import tempfile
 
+import h5py
+import numpy as np
+
 ROOT = pathlib.Path(__file__).resolve().parents[2]
+SCENES = ROOT / "data" / "scenes"
 COURSE = ROOT / "docs" / "course"
 MIN_EXERCISES = 3
+MIN_CODING_EXERCISES = 5
+# The page every chapter assumes read: install, PATH, scratch folder, units, notation.
+BEFORE_YOU_START = COURSE / "0-before-you-start.md"
 
 
 def chapters():
-    pages = sorted(COURSE.glob("[0-9]-*.md"))
+    pages = sorted(COURSE.glob("[1-9]-*.md"))
     if len(pages) != 5:
         sys.exit(f"expected five chapter pages in {COURSE}, found {[p.name for p in pages]}")
+    if not BEFORE_YOU_START.exists():
+        sys.exit(f"{BEFORE_YOU_START} is missing (install, PATH, scratch folder, units, notation)")
     return pages
 
 
+SOLUTION = re.compile(r"<!-- solution: (\S+) -->\n```python\n(.*?)```", re.S)
+
+
 def exercises(page):
-    """(title, commands, expected lines) of every exercise on a chapter page."""
+    """(title, commands, expected lines, solution files) of every exercise on a chapter page."""
     found = []
     for section in re.split(r"(?m)^### ", page.read_text())[1:]:
         if not section.startswith("Exercise"):
@@ -41,7 +62,19 @@ def exercises(page):
         expects = re.findall(r"<!-- expect: (.*?) -->", section)
         if not block or not expects:
             sys.exit(f"{page.name}: '{title}' needs a ```sh block and at least one <!-- expect: --> line")
-        found.append((title, block.group(1), expects))
+        found.append((title, block.group(1), expects, dict(SOLUTION.findall(section))))
+    return found
+
+
+def coding_exercises():
+    """{lab.py check NAME: (page, worked solution)} over the chapters."""
+    found = {}
+    for page in chapters():
+        for title, commands, _, solutions in exercises(page):
+            for name, file in re.findall(r"lab\.py check (\S+) (\S+)", commands):
+                if file not in solutions:
+                    sys.exit(f"{page.name}: '{title}' checks {file} but has no <!-- solution: {file} --> block")
+                found[name] = (page, solutions[file])
     return found
 
 
@@ -63,11 +96,13 @@ def check_exercises(collide):
         items = exercises(page)
         if len(items) < MIN_EXERCISES:
             failures.append(f"{page.name}: {len(items)} exercises, at least {MIN_EXERCISES} wanted")
-        for title, commands, expects in items:
+        for title, commands, expects, solutions in items:
             count += 1
             with tempfile.TemporaryDirectory(prefix="collide-exercise-") as scratch:
                 scratch = pathlib.Path(scratch)
                 env = scratch_environment(collide, scratch)
+                for file, code in solutions.items():
+                    (scratch / file).write_text(code)
                 done = subprocess.run(["bash", "-euo", "pipefail", "-c", commands], cwd=scratch, env=env,
                                       capture_output=True, text=True, timeout=600)
             if done.returncode != 0:
@@ -123,14 +158,200 @@ def check_figures(collide):
         done = subprocess.run(["/usr/bin/python3", str(ROOT / "docs/figures/make_figures.py"),
                                "--collide", collide, "--out", out], capture_output=True, text=True)
         made = sorted(p.name for p in pathlib.Path(out).glob("*.png"))
-    if done.returncode != 0:
-        return [f"make_figures.py exited {done.returncode}:\n{done.stderr[-3000:]}"]
+        failures = [] if done.returncode == 0 else [f"make_figures.py exited {done.returncode}:\n{done.stderr[-3000:]}"]
+        failures += [f"{name}: {problem}" for name in made for problem in figure_problems(pathlib.Path(out) / name)]
     linked = set()
     for page in chapters():
         linked |= set(re.findall(r"\(\.\./figures/([^)]+\.png)\)", page.read_text()))
     missing = sorted(linked - set(made))
     print(f"{len(made)} figures made")
-    return [f"figures linked by the course but not made by make_figures.py: {missing}"] if missing else []
+    return failures + ([f"figures linked by the course but not made by make_figures.py: {missing}"] if missing else [])
+
+
+def figure_problems(png):
+    """An axis without a unit, a colour scale without a colour bar, or fewer than 150 dpi.
+    make_figures.py records every axis's labels in the PNG's "axes" text (JSON)."""
+    import json
+    from PIL import Image
+    with Image.open(png) as image:
+        dpi, text = image.info.get("dpi", (0, 0)), image.text
+    problems = [] if min(dpi) >= 149.5 else [f"{min(dpi):.0f} dpi, 150 wanted"]
+    if "axes" not in text:
+        return problems + ["no axis labels recorded (make_figures.finish writes them)"]
+    axes = json.loads(text["axes"])
+    for axis in axes:
+        for which in ("xlabel", "ylabel"):
+            label = axis[which]
+            if axis.get(f"{which}_categorical"):
+                continue  # categories (backends, seeds) carry no unit
+            if not label and axis.get(f"{which}_shared") and any(a[which] for a in axes if a is not axis):
+                continue  # a panel sharing a labelled panel's axis
+            if not re.search(r"\([^()]*\)\s*$", label or ""):
+                problems.append(f"{which} {label!r} gives no unit in brackets at its end")
+        if axis.get("colour_encodes_value") and not axis.get("colorbar"):
+            problems.append("colour encodes a value but there is no colour bar")
+    return problems
+
+
+# --- Statements of the text, measured ---------------------------------------------------------
+
+def run(collide, scene_text, backend, scratch, name, frames=True):
+    scene = scratch / f"{name}.toml"
+    scene.write_text(scene_text)
+    out = scratch / f"{name}.h5"
+    command = [collide, "run", str(scene), "--backend", backend, "--out", str(out)] + (["--frames"] if frames else [])
+    subprocess.run(command, check=True, capture_output=True)
+    return h5py.File(out, "r")
+
+
+def set_key(text, key, value):
+    return re.sub(rf"(?m)^{key}\s*=.*$", f"{key} = {value}", text, count=1)
+
+
+def close(stated, measured, relative):
+    return abs(stated - measured) <= relative * abs(measured)
+
+
+def fact_virial(collide, scratch):
+    """Chapter 2's worked virial example (head_on_equal in a periodic box, one collision) against
+    the run: the virial m_i dv_i . d of the collision from the frames, and the code's pressure."""
+    page = (COURSE / "2-many-disks-exactly.md").read_text()
+    w = re.search(r"collision virial W = m_i Δ\*\*v\*\*_i · \*\*d\*\* = ([\d.]+)", page)
+    p = re.search(r"the run prints `pressure ([\d.]+)`", page)
+    if not w or not p:
+        return ["2-many-disks-exactly.md: no worked virial example (\"collision virial W = m_i Δ**v**_i · "
+                "**d** = ...\" and \"the run prints `pressure ...`\")"]
+    text = (ROOT / "data/scenes/head_on_equal.toml").read_text().replace('"reflect"', '"periodic"')
+    f = run(collide, text, "event", scratch, "virial")
+    t, x, v = f["frames/time"][:], f["frames/position"][:], f["frames/velocity"][:]
+    m = f["particles/mass"][:]
+    k = int(np.argmax(np.any(v[1:] != v[:-1], axis=(1, 2))))  # the frame interval with the collision
+    dv = v[k + 1, 0] - v[k, 0]
+    tc = 1.5  # the scene's collision time; positions at contact from the free flight before it
+    d = (x[k, 0] + v[k, 0] * (tc - t[k])) - (x[k, 1] + v[k, 1] * (tc - t[k]))
+    virial = m[0] * float(dv @ d)
+    counters = f["stats/counters"].attrs
+    failures = []
+    if not close(float(w.group(1)), virial, 1e-6):
+        failures.append(f"2-many-disks-exactly.md: the page's collision virial W = {w.group(1)}, the run's "
+                        f"m_i Δv_i · d = {virial:.6g}")
+    if not close(float(p.group(1)), float(counters["pressure"]), 1e-5):
+        failures.append(f"2-many-disks-exactly.md: the page's pressure {p.group(1)}, the run's {float(counters['pressure']):.6g}")
+    area, duration = 40.0, float(counters["simulated_time"])
+    by_formula = (float(counters["kinetic_integral"]) / duration + virial / (2 * duration)) / area
+    if not close(float(p.group(1)), by_formula, 1e-5):
+        failures.append(f"2-many-disks-exactly.md: P A = <K> + W/(2t) with the run's W gives {by_formula:.6g}, "
+                        f"not the page's {p.group(1)}")
+    return failures
+
+
+def fact_galperin(collide, scratch):
+    """Chapter 1's circle: with a = sqrt(m1) v1 on the horizontal axis, a wall collision only
+    flips a (a horizontal jump) and a pair collision moves along a line of slope -sqrt(m1/m2)."""
+    # Mass ratio 100 (31 collisions) and frames every 0.002: one collision per frame interval.
+    text = (SCENES / "stiff/pi_billiard_k2.toml").read_text().replace("mass = 10000.0", "mass = 100.0")
+    f = run(collide, set_key(text, "output_interval", "0.002"), "event", scratch, "pi")
+    v, m = f["frames/velocity"][:, :, 0], f["particles/mass"][:]
+    a, b = np.sqrt(m[0]) * v[:, 0], np.sqrt(m[1]) * v[:, 1]
+    da, db = np.diff(a), np.diff(b)
+    jumps = np.abs(da) + np.abs(db) > 1e-12
+    wall = jumps & (np.abs(db) < 1e-12)
+    pair = jumps & ~wall
+    if wall.sum() != 15 or pair.sum() != 16:
+        return [f"pi billiard at mass ratio 100: {wall.sum()} wall and {pair.sum()} pair jumps seen, 15 and 16 "
+                "expected (31 collisions)"]
+    failures = []
+    if not np.allclose(a[1:][wall], -a[:-1][wall]):
+        failures.append("pi_billiard_k2: a wall collision does more than flip a")
+    slopes = db[pair] / da[pair]
+    if not np.allclose(slopes, -np.sqrt(m[0] / m[1]), rtol=1e-6):
+        failures.append(f"pi_billiard_k2: pair chords have slopes {slopes[:3]}, not -sqrt(m1/m2)")
+    page = (COURSE / "1-one-collision.md").read_text()
+    said = re.findall(r"[Ww]all collision[^.]*?\b(horizontal|vertical)\b", page)
+    said += re.findall(r"\b(horizontal|vertical)[^.]{0,30}\(wall", page)
+    if not said or any(word != "horizontal" for word in said):
+        failures.append(f"1-one-collision.md: the run's wall collisions are horizontal jumps (b = sqrt(m2) v2 "
+                        f"unchanged, a on the horizontal axis); the page says {said or 'nothing'}")
+    if "−√(m₁/m₂)" not in page:
+        failures.append("1-one-collision.md: the slope of the pair chords, −√(m₁/m₂), is not stated")
+    return failures
+
+
+def fact_cradle(collide, scratch):
+    """Chapter 3's caption: the lasting lag of the far disk of Newton's cradle behind `event` at
+    the end of the run, at dt = 0.1 and 0.02, read from the run files."""
+    page = (COURSE / "3-many-disks-stepped.md").read_text()
+    said = re.search(r"lasting lag[^0-9]*([\d.]+) at dt = 0\.1[^0-9]*([\d.]+) at dt = 0\.02", page)
+    if not said:
+        return ["3-many-disks-stepped.md: the cradle caption states no lasting lag "
+                "(\"lasting lag ... X at dt = 0.1 ... Y at dt = 0.02\")"]
+    text = (SCENES / "stiff/newtons_cradle.toml").read_text()
+    exact = run(collide, text, "event", scratch, "cradle_event")["frames/position"][-1, 5, 0]
+    failures = []
+    for stated, dt in zip(said.groups(), ("0.1", "0.02")):
+        f = run(collide, set_key(text, "dt", dt), "step", scratch, f"cradle_{dt}")
+        lag = (exact - f["frames/position"][-1, 5, 0]) / f["frames/velocity"][-1, 5, 0]
+        if not close(float(stated), lag, 0.05):
+            failures.append(f"3-many-disks-stepped.md: the caption's lag at dt = {dt} is {stated}, the run's "
+                            f"{lag:.3g}")
+    return failures
+
+
+def fact_slope():
+    """Chapter 4: a slope in log-log is the observed order only against dt (or the number of
+    steps); against run time it is -p only if the time is proportional to 1/dt. Every sentence
+    of the chapter that ties a slope to an order must say which axis it is on."""
+    page = (COURSE / "4-validating-a-solver.md").read_text()
+    sentences = re.split(r"(?<=[.:;])\s+", re.sub(r"\s+", " ", page))
+    failures = []
+    for sentence in sentences:
+        if "slope" in sentence and "order" in sentence and "dt" not in sentence:
+            failures.append(f"4-validating-a-solver.md: \"{sentence[:120]}\" ties a slope to the order "
+                            "without saying it is the slope against dt")
+        if re.search(r"slope", sentence) and re.search(r"run time|wall time", sentence) \
+                and not re.search(r"only if|only when|not", sentence):
+            failures.append(f"4-validating-a-solver.md: \"{sentence[:120]}\" reads an order off the "
+                            "error-against-run-time plot")
+    if not any("slope" in s and "dt" in s and "order" in s for s in sentences):
+        failures.append("4-validating-a-solver.md: no sentence says that the slope against dt is the order")
+    return failures
+
+
+def check_facts(collide):
+    with tempfile.TemporaryDirectory(prefix="collide-facts-") as scratch:
+        scratch = pathlib.Path(scratch)
+        failures = (fact_virial(collide, scratch) + fact_galperin(collide, scratch)
+                    + fact_cradle(collide, scratch) + fact_slope())
+    print("4 statements of the text measured")
+    return failures
+
+
+def check_lab():
+    """Every coding exercise: its worked solution is accepted, its wrong answer rejected."""
+    wrong_dir = ROOT / "tests/docs/wrong_answers"
+    found = coding_exercises()
+    failures = []
+    if len(found) < MIN_CODING_EXERCISES:
+        failures.append(f"{len(found)} coding exercises, at least {MIN_CODING_EXERCISES} wanted")
+    pages_with = {page.name for page, _ in found.values()}
+    failures += [f"{page.name}: no coding exercise (lab.py check)" for page in chapters() if page.name not in pages_with]
+    lab = ROOT / "docs/course/lab.py"
+    for name, (page, solution) in sorted(found.items()):
+        with tempfile.TemporaryDirectory(prefix="collide-lab-") as scratch:
+            right = pathlib.Path(scratch) / f"{name}.py"
+            right.write_text(solution)
+            done = subprocess.run(["/usr/bin/python3", str(lab), "check", name, str(right)], capture_output=True, text=True)
+        if done.returncode != 0 or f"{name}: right" not in done.stdout:
+            failures.append(f"{page.name}: the worked solution of '{name}' is not accepted:\n{done.stdout}{done.stderr}")
+        wrong = wrong_dir / f"{name}.py"
+        if not wrong.exists():
+            failures.append(f"'{name}' has no wrong answer in {wrong_dir} to prove its checker rejects one")
+            continue
+        done = subprocess.run(["/usr/bin/python3", str(lab), "check", name, str(wrong)], capture_output=True, text=True)
+        if done.returncode != 1 or f"{name}: wrong" not in done.stdout:
+            failures.append(f"the checker of '{name}' accepts the wrong answer {wrong.name}:\n{done.stdout}{done.stderr}")
+        print(f"{name}: solution accepted, wrong answer rejected ({done.stdout.strip()[:90]})")
+    return failures
 
 
 def main():
@@ -141,6 +362,10 @@ def main():
         failures = check_links() + check_quotes()
     elif what == "figures" and len(sys.argv) == 3:
         failures = check_figures(sys.argv[2])
+    elif what == "facts" and len(sys.argv) == 3:
+        failures = check_facts(sys.argv[2])
+    elif what == "lab":
+        failures = check_lab()
     else:
         sys.exit(__doc__)
     for failure in failures:
