@@ -8,7 +8,7 @@
 #include "core/scene_features.h"
 #include "cpu/feature_set.h"
 #include "opencl/step_params.h"
-#include "reference/event_solver.h"
+#include "reference/event/event_solver.h"
 #include "reference/plain_event_solver.h"
 #include "tests/support/test_scenes.h"
 #include "validation/applicability.h"
