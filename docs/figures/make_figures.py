@@ -229,40 +229,64 @@ def kolafa_rottner(eta):
     return sum(t["coefficient"] * eta ** t["eta_power"] / (1 - eta) ** t["one_minus_eta_power"] for t in terms)
 
 
+def block_z(lab, scene_at, durations):
+    """Z from the collision virial in the blocks between successive run lengths (the first one
+    left out as equilibration), each block divided by its own mean kinetic energy (= N kT in
+    2-D): the mean over the blocks and its standard error."""
+    counts = []
+    for duration in durations:
+        c = lab.run(scene_at(duration), "event")["stats/counters"].attrs
+        counts.append((float(c["virial_sum"]), float(c["kinetic_integral"]), float(c["simulated_time"])))
+    zs = [1 + (w1 - w0) / (2 * (t1 - t0)) / ((k1 - k0) / (t1 - t0))
+          for (w0, k0, t0), (w1, k1, t1) in zip(counts, counts[1:])]
+    return float(np.mean(zs)), float(np.std(zs, ddof=1) / np.sqrt(len(zs)))
+
+
+def crystal_scene(lab, eta, duration):
+    """400 disks on a 20 x 20 hexagonal lattice filling a periodic box at area fraction eta
+    (the lattice generator keeps a margin, so the disks are written out), kT = 1."""
+    spacing = np.sqrt(np.pi / np.sqrt(12) / eta)
+    width, height = 20 * spacing, 20 * spacing * np.sqrt(3) / 2
+    x = np.array([((c + 0.5 * (r % 2) + 0.25) * spacing, (r + 0.5) * spacing * np.sqrt(3) / 2)
+                  for r in range(20) for c in range(20)])
+    v = np.random.default_rng(1).normal(size=(400, 2))
+    v -= v.mean(axis=0)
+    lab.count += 1
+    path = lab.scratch / f"crystal{lab.count}.toml"
+    path.write_text(list_scene(x, v, f"[0.0, 0.0, {width!r}, {height!r}]", duration, "0.5", "periodic"))
+    return path
+
+
 def equation_of_state(lab, out):
-    # 400 disks of radius 0.5 in a periodic square box of side L: eta = 400 pi 0.25 / L^2. The
-    # first time unit is left out (equilibration from the random placement); Z is averaged over
-    # four blocks of the rest, each with its own kT, and the error bar is their standard error.
-    fractions = [0.05, 0.15, 0.25, 0.35, 0.45, 0.5]
-    z, se = [], []
-    for eta in fractions:
+    # Fluid: 400 disks placed at random in a periodic square box of side L, eta = 400 pi 0.25 / L^2,
+    # equilibrated for 1 time unit, four blocks of 1. Random placement cannot go past eta ~ 0.55,
+    # so the dense points start from a crystal: equilibrated for 2, three blocks of 2 (at 0.55 to
+    # 0.65 the crystal melts within the first; from 0.72 on it stays solid).
+    fluid, crystal = [0.05, 0.15, 0.25, 0.35, 0.45, 0.5], [0.55, 0.6, 0.65, 0.7, 0.72, 0.75]
+    z_fluid = []
+    for eta in fluid:
         side = np.sqrt(400 * np.pi * 0.25 / eta)
-        blocks = []
-        for k in range(5):
-            f = lab.run(lab.scene("periodic_gas.toml", box=f"[0.0, 0.0, {side:.6f}, {side:.6f}]",
-                                  count="400", duration=f"{1.0 + k:g}"), "event")
-            c = f["stats/counters"].attrs
-            blocks.append((float(c["virial_sum"]), float(c["kinetic_integral"]), float(c["simulated_time"])))
-        zs = []
-        for (w0, k0, t0), (w1, k1, t1) in zip(blocks, blocks[1:]):
-            kT_mean = (k1 - k0) / (t1 - t0)           # <K> over the block, = N kT in 2-D
-            zs.append(1 + (w1 - w0) / (2 * (t1 - t0)) / kT_mean)
-        z.append(np.mean(zs))
-        se.append(np.std(zs, ddof=1) / np.sqrt(len(zs)))
+        z_fluid.append(block_z(lab, lambda d: lab.scene("periodic_gas.toml", box=f"[0.0, 0.0, {side:.6f}, {side:.6f}]",
+                                                          count="400", duration=f"{d:g}"), [1, 2, 3, 4, 5]))
+    z_crystal = [block_z(lab, lambda d: crystal_scene(lab, eta, f"{d:g}"), [2, 4, 6, 8]) for eta in crystal]
     p = np.linspace(0, 0.75, 300)
-    fig, ax = plt.subplots(figsize=(6, 3.6))
+    fig, ax = plt.subplots(figsize=(6, 3.8))
     ax.axvspan(0.700, 0.716, color="C4", alpha=0.25, label="liquid-hexatic coexistence (Bernard & Krauth 2011)")
     ax.axvspan(0.716, 0.75, color="C7", alpha=0.15, label="hexatic, then solid from 0.72")
     ax.plot(p[p < 0.72], ((1 + p**2 / 8) / (1 - p) ** 2)[p < 0.72], label="Henderson (1975)")
-    fluid = p[p <= 0.70]
-    ax.plot(fluid, kolafa_rottner(fluid), "--", label="Kolafa & Rottner (2006), fluid")
-    ax.errorbar(fractions, z, yerr=se, fmt="o", ms=4, capsize=2, color="k",
-                label="event, 400 disks, 4 blocks of 1 after 1 of equilibration")
+    fluid_curve = p[p <= 0.70]
+    ax.plot(fluid_curve, kolafa_rottner(fluid_curve), "--", label="Kolafa & Rottner (2006), fluid")
+    ax.errorbar(fluid, [z for z, _ in z_fluid], yerr=[e for _, e in z_fluid], fmt="o", ms=4, capsize=2,
+                color="k", label="event, 400 disks placed at random")
+    ax.errorbar(crystal, [z for z, _ in z_crystal], yerr=[e for _, e in z_crystal], fmt="s", ms=4, capsize=2,
+                mfc="white", color="k", label="event, 400 disks started from a crystal")
     ax.set_ylim(0, 14)
-    ax.set_xlim(0, 0.75)
+    ax.set_xlim(0, 0.76)
     finish(fig, ax, out, "ch2_equation_of_state", r"area fraction $\eta$ (dimensionless)",
            "Z = PA / NkT (dimensionless)", "Hard-disk equation of state from the collision virial",
            legend_loc="upper left")
+    for eta, (z, e) in zip(fluid + crystal, z_fluid + z_crystal):
+        print(f"eos: eta {eta:g}: Z {z:.3f} +- {e:.3f} (Kolafa-Rottner {kolafa_rottner(eta):.3f})")
 
 
 def snapshot(lab, out):
@@ -283,12 +307,12 @@ def snapshot(lab, out):
            legend=False)
 
 
-def list_scene(x, v, box, duration, interval):
+def list_scene(x, v, box, duration, interval, boundary="reflect"):
     """A scene of the disks at positions x and velocities v (radius 0.5, mass 1), digits exact."""
     disks = ",\n".join(f"  {{ x = {p[0]!r}, y = {p[1]!r}, vx = {q[0]!r}, vy = {q[1]!r}, radius = 0.5, mass = 1.0 }}"
                        for p, q in zip(x, v))
-    return (f'description = "box_gas_1000 written out disk by disk"\nseed = 1\n\n[world]\nbox = {box}\n'
-            f'boundary = "reflect"\n\n[run]\nduration = {duration}\noutput_interval = {interval}\ndt = 1e-3\n\n'
+    return (f'description = "disks written out one by one"\nseed = 1\n\n[world]\nbox = {box}\n'
+            f'boundary = "{boundary}"\n\n[run]\nduration = {duration}\noutput_interval = {interval}\ndt = 1e-3\n\n'
             f'[[particles]]\nkind = "list"\ndisks = [\n{disks} ]\n')
 
 
