@@ -36,9 +36,10 @@ void execute(const CompareArgs& args) {
     }
     int status = 0;
     ::waitpid(pid, &status, 0);
-    if (WIFEXITED(status) && WEXITSTATUS(status) == 1) throw CLI::RuntimeError(1);  // a regression, listed above
+    // 1: a regression, listed above; 2: the directories cannot be compared, named above.
+    if (WIFEXITED(status) && (WEXITSTATUS(status) == 1 || WEXITSTATUS(status) == 2)) throw CLI::RuntimeError(WEXITSTATUS(status));
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-        throw std::runtime_error("no comparison: the directories cannot be compared (named above)");
+        throw std::runtime_error(std::string("the comparison failed (") + COLLIDE_PYTHON + " " + script + ")");
 }
 
 }  // namespace

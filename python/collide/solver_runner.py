@@ -89,6 +89,7 @@ def load_class(spec):
         module_spec = importlib.util.spec_from_file_location(name, path)
         if module_spec is None or not os.path.isfile(path):
             raise SystemExit("solver_runner: no such file %s" % path)
+        sys.path.insert(0, os.path.dirname(path))   # its sibling modules import as from a script
         module = importlib.util.module_from_spec(module_spec)
         sys.modules[name] = module
         module_spec.loader.exec_module(module)
