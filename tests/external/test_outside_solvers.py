@@ -197,3 +197,22 @@ class Edited(NumPyStepper):
     other.mkdir()
     collide("validate", tiny_suite(other, "", name="another"), "--out", other / "out", check=0)
     assert collide("compare", a / "out", other / "out").returncode == 2
+
+
+def test_the_walkthrough_of_your_solver_md_gives_a_report_with_the_solver(tmp_path):
+    """docs/your-solver.md's first section, as written: free_flight.py and mine.toml from its
+    code blocks (the scene paths pointed at this tree), then validate and report."""
+    import re
+    text = (ROOT / "docs" / "your-solver.md").read_text()
+    blocks = re.findall(r"```(?:python|toml)\n(.*?)```", text, re.S)
+    (tmp_path / "free_flight.py").write_text(next(b for b in blocks if b.startswith("# free_flight.py")))
+    suite = next(b for b in blocks if b.startswith("# mine.toml"))
+    suite = suite.replace("/path/to/collide", str(ROOT)).replace("seeds = [1, 2, 3]", "seeds = [1]")
+    (tmp_path / "mine.toml").write_text(suite)
+    out = tmp_path / "results"
+    collide("validate", tmp_path / "mine.toml", "--out", out, "--jobs", 2, check=1)
+    s = summary(out)
+    assert "trajectory_error" in failed(s, "free")          # as the page says
+    assert failed(s, "event") == set() and failed(s, "step") == set()
+    collide("report", out, check=0)
+    assert "free" in (out / "report" / "index.html").read_text()
