@@ -216,3 +216,18 @@ def test_the_walkthrough_of_your_solver_md_gives_a_report_with_the_solver(tmp_pa
     assert failed(s, "event") == set() and failed(s, "step") == set()
     collide("report", out, check=0)
     assert "free" in (out / "report" / "index.html").read_text()
+
+
+def test_a_refusal_leaves_the_scene_out_with_the_reason(tmp_path):
+    """The C client answers "refuse" to an integrate-first scene: the case is left out, as a
+    built-in backend's unsupported scene is, and the other scenes still run."""
+    path = tiny_suite(tmp_path, "")
+    path.write_text(path.read_text() + '\n[[scene]]\nname = "particle_box"\nduration = 0.16666666666666666\noutput_interval = 0.16666666666666666\n')
+    out = tmp_path / "out"
+    collide("validate", path, "--out", out, "--jobs", 2, "--solver", f"c={C_STEPPER}", check=0)
+    s = summary(out)
+    box = next(c for c in s["cases"] if c["backend"] == "c" and c["scene"] == "particle_box")
+    assert box["status"] == "left_out" and "only the collide-first order" in box["diagnostic"], box
+    run = next(c for c in s["checks"] if c["subject"] == box["id"] and c["check"] == "run")
+    assert run["status"] == "left_out"
+    assert all(c["status"] == "completed" for c in s["cases"] if c["backend"] == "c" and c["scene"] == "head_on_equal")
