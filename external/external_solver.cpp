@@ -330,11 +330,13 @@ private:
     }
 
     // SHA-256 of every word of the command that names a file ("numpy_stepper.py", "./a.out"),
-    // and of the Python class's file: which version of the program produced the result.
+    // or of a Python class's file: which version of the program produced the result.
     std::string file_hashes() const {
         std::vector<std::string> words;
         std::istringstream in(spec_.command);
-        for (std::string w; in >> w;) words.push_back(w);
+        // A class's command is the interpreter and collide's runner: its own file is what counts.
+        if (spec_.python_class.empty())
+            for (std::string w; in >> w;) words.push_back(w);
         if (!spec_.python_class.empty()) {
             const std::string module = spec_.python_class.substr(0, spec_.python_class.rfind(':'));
             std::string file = module;

@@ -17,20 +17,20 @@
 namespace collide::external {
 namespace {
 
-// In the child between fork and exec: only async-signal-safe calls.
-[[noreturn]] void exec_child(const std::string& command, const std::string& argument, const std::string& directory,
-                             const std::string& output_path, pid_t parent) {
+// In the child between fork and exec: only async-signal-safe calls (no allocation), so every
+// string is made before the fork.
+[[noreturn]] void exec_child(const char* script, const char* argument, const char* directory, const char* output_path,
+                             pid_t parent) {
     ::setpgid(0, 0);                      // its own group: the limit kills its children too
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);   // and it dies with the case process
     if (::getppid() != parent) ::_exit(125);  // the parent died before prctl took effect
     const int null_in = ::open("/dev/null", O_RDONLY);
-    const int out = ::open(output_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (null_in < 0 || out < 0 || ::chdir(directory.c_str()) != 0) ::_exit(126);
+    const int out = ::open(output_path, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (null_in < 0 || out < 0 || ::chdir(directory) != 0) ::_exit(126);
     ::dup2(null_in, 0);
     ::dup2(out, 1);
     ::dup2(out, 2);
-    const std::string script = command + " \"$1\"";
-    ::execl("/bin/sh", "sh", "-c", script.c_str(), "collide-solver", argument.c_str(), static_cast<char*>(nullptr));
+    ::execl("/bin/sh", "sh", "-c", script, "collide-solver", argument, static_cast<char*>(nullptr));
     ::_exit(127);
 }
 
@@ -49,11 +49,12 @@ std::string ProgramOutcome::describe(double limit_seconds) const {
 ProgramOutcome call_program(const std::string& command, const std::string& argument, const std::string& directory,
                             const std::string& output_path, double limit_seconds) {
     using Clock = std::chrono::steady_clock;
+    const std::string script = command + " \"$1\"";  // the request directory as the last argument
     const pid_t parent = ::getpid();
     const auto start = Clock::now();
     const pid_t pid = ::fork();
     if (pid < 0) throw std::runtime_error(std::string("fork failed: ") + std::strerror(errno));
-    if (pid == 0) exec_child(command, argument, directory, output_path, parent);
+    if (pid == 0) exec_child(script.c_str(), argument.c_str(), directory.c_str(), output_path.c_str(), parent);
     ::setpgid(pid, pid);  // also here, so the group exists before any kill below
     ProgramOutcome outcome;
     int status = 0;

@@ -52,14 +52,12 @@ TEST(SolverTables, RefuseEachMistakeWithItsPlace) {
 
 TEST(SolverTables, ANameTakenTwiceOrByABackendIsRefused) {
     Suite s = parse("[solver.mine]\ncommand = \"x\"\n");
-    external::ExternalSolverSpec again;
-    again.name = "mine";
-    again.command = "y";
-    again.origin = "--solver mine=y";
+    external::ExternalSolverSpec again = s.solvers.at(0);  // the same name once more
+    again.origin = std::string("--solver mine=y");
     EXPECT_THROW(add_solvers(s, {again}), SuiteError);
     Suite t = parse("[solver.step]\ncommand = \"x\"\n");
     BackendInfo step;
-    step.name = "step";
+    step.name = std::string("step");
     EXPECT_THROW(backends_with_solvers(t, {step}, {}), SuiteError);
 }
 
