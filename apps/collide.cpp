@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
     collide::cli::add_render_command(app);
     collide::cli::add_explain_command(app);
     collide::cli::add_export_command(app);
+    collide::cli::add_compare_command(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -83,7 +83,9 @@ RunResult run_scene(const Scene& scene, Solver& solver, const ParticleState<doub
     if (options.writer) options.writer->write_particles(initial);
     ParticleState<double> state;
     double last_finite_t = 0;  // the initial state is checked by the scene loader and the solver
-    for (double t : output_times(scene)) {
+    const std::vector<double> times = output_times(scene);
+    solver.plan_outputs(times);
+    for (double t : times) {
         const auto start = std::chrono::steady_clock::now();
         solver.advance_to(t);
         result.wall_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -8,7 +8,9 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "particle_state.h"
 #include "scene.h"
@@ -32,6 +34,14 @@ struct BackendOptions {
     std::map<std::string, std::string> extra;  // backend-specific, e.g. {"grid", "device"}
 };
 
+// Thrown by a backend that learns only when it runs that it cannot run a scene (an outside
+// solver answering "refuse": external/external_solver.h). Like a `supports()` refusal, the case
+// is then left out with the reason, not failed.
+class SceneRefused : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
 class Solver {
 public:
     virtual ~Solver() = default;
@@ -42,6 +52,10 @@ public:
     virtual void advance_to(double t) = 0;
     // Writes the current state, in double, into `out` (resized as needed).
     virtual void read_state(ParticleState<double>& out) const = 0;
+    // The times advance_to will be called with, in order (run_scene says so before its loop).
+    // A hint: a solver that computes them all at once (an outside program, one call per run)
+    // uses it; the others ignore it, and every solver must still accept other times.
+    virtual void plan_outputs(const std::vector<double>& /*times*/) {}
     virtual double time() const = 0;
     virtual SolverStats stats() const = 0;
     // Free-form provenance for output files (device name, build options, ...).

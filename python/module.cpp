@@ -7,6 +7,7 @@
 #include <memory>
 #include <regex>
 #include <stdexcept>
+#include <tuple>
 
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -23,6 +24,7 @@
 #include "scene_from_dict.h"
 #include "simulation.h"
 #include "validation/case_result.h"
+#include "validation/external_solvers.h"
 #include "validation/suite_runner.h"
 
 namespace py = pybind11;
@@ -81,9 +83,28 @@ py::dict run(const Scene& given, const std::string& backend_name, const std::str
 }
 
 // Runs the suite as `collide validate` does (progress on stderr); the caller reads summary.json.
-py::dict validate(const std::string& suite_path, const std::string& out, int jobs, bool resume) {
+// `solvers`: outside solvers (name, command, "module:Class", rule), run by `runner` for a class.
+py::dict validate(const std::string& suite_path, const std::string& out, int jobs, bool resume,
+                  const std::vector<std::tuple<std::string, std::string, std::string, std::string>>& solvers,
+                  const validation::PythonRunner& runner) {
     if (jobs <= 0) jobs = validation::default_jobs();
-    const validation::Suite suite = validation::load_suite(suite_path);
+    validation::Suite suite = validation::load_suite(suite_path);
+    std::vector<external::ExternalSolverSpec> specs;
+    for (const auto& [name, command, python_class, rule] : solvers) {
+        external::ExternalSolverSpec spec;
+        spec.name = name;
+        spec.command = command;
+        spec.python_class = python_class;
+        spec.rule = rule;
+        spec.origin = "solvers[\"" + name + "\"]";
+        if (std::string why = external::solver_name_problem(name); !why.empty())
+            throw validation::SuiteError(spec.origin + ": expected " + why);
+        if (std::string why = external::rule_problem(rule); !why.empty())
+            throw validation::SuiteError(spec.origin + ": rule: expected " + why);
+        specs.push_back(spec);
+    }
+    validation::add_solvers(suite, specs);
+    const auto backends = validation::backends_with_solvers(suite, all_backends(), runner);
     validation::RunnerOptions options;
     options.output_dir = out;
     options.jobs = jobs;
@@ -93,7 +114,7 @@ py::dict validate(const std::string& suite_path, const std::string& out, int job
     validation::SuiteOutcome outcome;
     {
         py::gil_scoped_release release;  // the cases run in forked children that never touch Python
-        outcome = validation::run_suite(suite, all_backends(), options);
+        outcome = validation::run_suite(suite, backends, options);
     }
     py::dict d;
     d["suite"] = suite.name;
@@ -323,7 +344,12 @@ PYBIND11_MODULE(_collide, m) {
     m.def("_run", &run, py::arg("scene"), py::arg("backend"), py::arg("out"), py::arg("frames"), py::arg("progress"));
     m.def("_read_run", &read_run, py::arg("path"), py::arg("frames"));
     m.def("_export", &export_run, py::arg("run"), py::arg("out"), py::arg("format"));
-    m.def("_validate", &validate, py::arg("suite"), py::arg("out"), py::arg("jobs"), py::arg("resume"));
+    m.def("_validate", [](const std::string& suite, const std::string& out, int jobs, bool resume,
+                          const std::vector<std::tuple<std::string, std::string, std::string, std::string>>& solvers,
+                          const std::string& python, const std::string& runner) {
+        return validate(suite, out, jobs, resume, solvers, validation::PythonRunner{python, runner});
+    }, py::arg("suite"), py::arg("out"), py::arg("jobs"), py::arg("resume"), py::arg("solvers"), py::arg("python"),
+          py::arg("runner"));
     m.def("toml_from_dict", &toml_text_from_dict, py::arg("d"),
           "The TOML text Scene.from_dict reads (the lines its error messages name)");
     m.def("_check_export", &check_export, py::arg("run"), py::arg("out"));

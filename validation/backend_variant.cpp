@@ -22,6 +22,7 @@ public:
     void load(const Scene& scene, const ParticleState<double>& initial) override {
         inner_->load(scene_for_variant(scene, variant_), initial);
     }
+    void plan_outputs(const std::vector<double>& times) override { inner_->plan_outputs(times); }
     void advance_to(double t) override { inner_->advance_to(t); }
     void read_state(ParticleState<double>& out) const override { inner_->read_state(out); }
     double time() const override { return inner_->time(); }

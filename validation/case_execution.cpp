@@ -106,6 +106,8 @@ void measure(const CaseSpec& spec, const CaseContext& ctx, CaseResult& result) {
         auto depths = overlap_depths(scene, run.final_state);
         if (depths.size() > suite.output.max_overlap_samples) depths.resize(suite.output.max_overlap_samples);
         result.overlap_depths = std::move(depths);
+    } catch (const SceneRefused&) {
+        throw;  // left out, not failed: execute_case
     } catch (const std::exception& e) {
         // The metrics up to the failure are kept (they show how it went wrong).
         result.status = RunStatus::error;
@@ -145,6 +147,13 @@ CaseResult execute_case(const CaseSpec& spec, const CaseContext& ctx) {
     }
     try {
         measure(spec, ctx, result);
+    } catch (const SceneRefused& e) {
+        // The backend found only when it ran that it cannot run this scene (an outside solver's
+        // "refuse"): the case is left out with its reason, as a supports() refusal would be.
+        result = CaseResult{};
+        result.spec = spec;
+        result.status = RunStatus::left_out;
+        result.diagnostic = e.what();
     } catch (const std::exception& e) {
         result.status = RunStatus::error;
         result.diagnostic = e.what();

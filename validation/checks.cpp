@@ -3,6 +3,7 @@
 #include "core/run_schema.h"
 #include "check_table.h"
 #include "energy_loss_model.h"
+#include "statistics_bias_model.h"
 
 #include <algorithm>
 #include <cmath>
@@ -136,7 +137,7 @@ double collision_frequency(const CaseResult& r, const SceneFeatures& f) {
 }
 
 // The backends that run the stepping rules (docs/stepping-rules.md).
-bool stepped_backend(const std::string& b) { return b == "step" || b == "cpu" || b == "opencl"; }
+bool stepped_backend(const std::string& b) { return follows_stepping_rules(b); }
 
 }  // namespace
 

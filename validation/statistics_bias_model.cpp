@@ -1,5 +1,6 @@
 #include "statistics_bias_model.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -17,9 +18,20 @@ const StatisticsBiasConstants& fitted_statistics_bias() {
     return c;
 }
 
+namespace {
+std::vector<std::string>& outside_stepping_rules() {
+    static std::vector<std::string> names;
+    return names;
+}
+}  // namespace
+
+void set_outside_stepping_rules(const std::vector<std::string>& backends) { outside_stepping_rules() = backends; }
+
 bool follows_stepping_rules(const std::string& backend) {
     const std::string base = backend.substr(0, backend.find('['));  // "step[x]" is step
-    return base == "step" || base == "cpu" || base == "opencl";
+    const auto& outside = outside_stepping_rules();
+    return base == "step" || base == "cpu" || base == "opencl" ||
+           std::find(outside.begin(), outside.end(), backend) != outside.end();
 }
 
 BiasPrediction predicted_pressure_bias(double nu, double nu_se, double h, double shell,

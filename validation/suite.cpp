@@ -11,6 +11,8 @@
 #include "core/scene_loader.h"
 #include "core/toml_fields.h"
 #include "check_table.h"
+#include "external_solvers.h"
+#include "solver_tables.h"
 #include "physics_rows.h"
 
 namespace collide::validation {
@@ -298,7 +300,7 @@ Suite parse_suite(const std::string& text, const std::string& file, const std::s
     }
     TableReader r(root, file, "");
     r.only({"name", "description", "scene_dir", "backends", "reference", "seeds", "time_limit",
-            "warmup_fraction", "stability", "output", "tolerances", "scene", "variant", "reference_dir"});
+            "warmup_fraction", "stability", "output", "tolerances", "scene", "variant", "reference_dir", "solver"});
     Suite suite;
     suite.source_path = file;
     suite.name = r.string("name").value_or(std::filesystem::path(file).stem().string());
@@ -338,6 +340,7 @@ Suite parse_suite(const std::string& text, const std::string& file, const std::s
     }
     read_tolerances(root, file, suite.tolerances);
     suite.variants = read_variants(root, file);
+    add_solvers(suite, read_solver_tables(root, file, dir));
     const std::string scene_dir = r.string("scene_dir").value_or("../../data/scenes");
     const std::filesystem::path reference_dir = r.string("reference_dir").value_or("../../data/references");
     suite.reference_dir = (reference_dir.is_relative() ? std::filesystem::path(dir) / reference_dir : reference_dir)

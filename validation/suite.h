@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/scene.h"
+#include "external/external_solver.h"
 #include "tolerances.h"
 
 namespace collide::validation {
@@ -92,6 +93,8 @@ struct Suite {
     OutputOptions output;
     ToleranceTable tolerances;
     std::vector<SuiteScene> scenes;
+    // Outside solvers ([solver.NAME], --solver): backends of this run (external_solvers.h).
+    std::vector<external::ExternalSolverSpec> solvers;
 };
 
 Suite load_suite(const std::string& path);

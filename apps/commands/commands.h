@@ -5,6 +5,7 @@
 
 #include "core/backend_registry.h"
 #include "core/scene_overrides.h"
+#include "validation/external_solvers.h"
 
 namespace collide::cli {
 
@@ -19,6 +20,7 @@ void add_view_command(CLI::App& app);      // watch a scene run (SDL2 window or 
 void add_render_command(CLI::App& app);    // run file with frames -> GIF, MP4 or PNG strip
 void add_explain_command(CLI::App& app);   // the step of a validated case that changed the energy most
 void add_export_command(CLI::App& app);    // run file with frames -> XDMF, GSD or extended XYZ
+void add_compare_command(CLI::App& app);   // two validation results side by side; exit 1 on a regression
 
 // Throws "backend 'NAME' cannot run scene 'SCENE': REASON" when the backend does not support
 // the scene; every command that runs a scene says it in these words (run_command.cpp).
@@ -29,5 +31,17 @@ void require_support(const BackendInfo& backend, const Scene& scene);
 void add_set_option(CLI::App& cmd, std::vector<SceneOverride>& overrides);
 // The scene file with the overrides applied (load_scene alone without any).
 Scene load_scene_with_overrides(const std::string& path, const std::vector<SceneOverride>& overrides);
+
+// Outside solvers named on the command line (solver_option.cpp, docs/your-solver.md).
+struct SolverArgs {
+    std::vector<std::string> programs;  // --solver NAME=COMMAND
+    std::vector<std::string> classes;   // --python-solver NAME=MODULE:CLASS
+    std::vector<std::string> rules;     // --solver-rule NAME=RULE
+};
+void add_solver_options(CLI::App& cmd, SolverArgs& args);
+// The specs the options name; throws std::invalid_argument for a malformed one.
+std::vector<external::ExternalSolverSpec> solver_specs(const SolverArgs& args);
+// The interpreter and runner script that run a Python class (this build's Python).
+validation::PythonRunner python_runner();
 
 }  // namespace collide::cli

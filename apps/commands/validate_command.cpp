@@ -1,4 +1,4 @@
-// `collide validate SUITE [--out DIR] [--jobs N] [--resume] [--gather-hdf5]`: runs a validation
+// `collide validate SUITE [--out DIR] [--jobs N] [--resume] [--gather-hdf5] [--solver NAME=COMMAND]`: runs a validation
 // suite (validation/suites/*.toml), one case per core unless --jobs says otherwise, on every
 // backend it names and writes DIR/summary.json,
 // DIR/junit.xml and one HDF5 file per case. Exit status 1 when any check fails. Under mpirun
@@ -22,6 +22,7 @@ struct ValidateArgs {
     int jobs = 0;  // 0: not given; one case per core (MPI: one per rank)
     bool resume = false;
     bool gather_hdf5 = false;
+    SolverArgs solvers;
 };
 
 // CLI::PositiveNumber would say "not in range 0 to 1.8e308" for --jobs 0.
@@ -41,7 +42,9 @@ void execute(const ValidateArgs& args) {
     const auto dispatch = validation::start_case_dispatch(args.jobs > 0 ? args.jobs : 1, args.gather_hdf5);
     const bool reports = !dispatch || dispatch->is_root();
     // --- end of the MPI hook
-    const validation::Suite suite = validation::load_suite(args.suite_path);
+    validation::Suite suite = validation::load_suite(args.suite_path);
+    validation::add_solvers(suite, solver_specs(args.solvers));
+    const auto backends = validation::backends_with_solvers(suite, all_backends(), python_runner());
     validation::RunnerOptions options;
     options.output_dir = args.out;
     options.jobs = args.jobs > 0 ? args.jobs : dispatch ? 1 : validation::default_jobs();
@@ -49,7 +52,7 @@ void execute(const ValidateArgs& args) {
     options.progress = reports ? stderr : nullptr;
     options.progress_is_terminal = ::isatty(STDERR_FILENO) != 0;
     options.dispatch = dispatch.get();
-    const auto outcome = validation::run_suite(suite, all_backends(), options);
+    const auto outcome = validation::run_suite(suite, backends, options);
     if (!reports) return;
     std::printf("suite     %s: %zu cases (%zu run, %zu resumed) in %.1f s, %d at a time%s\n", suite.name.c_str(),
                 outcome.cases.size(), outcome.cases_run, outcome.cases_resumed, outcome.wall_seconds, outcome.jobs,
@@ -86,6 +89,7 @@ void add_validate_command(CLI::App& app) {
     cmd->add_flag("--resume", args->resume, "Keep the cases that already have a result in the output directory");
     cmd->add_flag("--gather-hdf5", args->gather_hdf5,
                   "Under MPI: copy every rank's per-case HDF5 files into rank 0's output directory");
+    add_solver_options(*cmd, args->solvers);
     cmd->callback([args] { execute(*args); });
 }
 

@@ -94,12 +94,37 @@ def read_run(path, frames=False):
     return _collide._read_run(os.fspath(path), bool(frames))
 
 
-def validate(suite, out="results", jobs=None, resume=False):
+def _solver_entry(name, solver):
+    """(name, command, "file.py:Class", rule) for one entry of validate(solvers=...)."""
+    if isinstance(solver, type):
+        import inspect
+        path = inspect.getsourcefile(solver)
+        if path is None or "." in solver.__qualname__:
+            raise ValueError("solvers[%r]: %r must be a class defined at the top level of a .py file, so that "
+                             "collide's runner can load it in a process of its own" % (name, solver))
+        rule = getattr(solver, "rule", "") or ""
+        return (name, "", "%s:%s" % (os.path.abspath(path), solver.__qualname__), rule)
+    if isinstance(solver, str) and ":" in solver and " " not in solver:
+        return (name, "", solver, "")
+    if isinstance(solver, dict):
+        return (name, solver.get("command", ""), solver.get("python", ""), solver.get("rule", ""))
+    raise ValueError("solvers[%r]: expected a class, \"module:Class\", or a dict with \"command\" or \"python\" "
+                     "(and optionally \"rule\")" % name)
+
+
+def validate(suite, out="results", jobs=None, resume=False, solvers=None):
     """Runs a validation suite as `collide validate SUITE --out OUT` does (progress on stderr,
     the same summary on stdout) and returns summary.json as a dict. `jobs`: cases at the same
     time (default: one per core). Failed checks do not raise: look at summary["checks"] (or the
-    counts printed)."""
-    counts = _collide._validate(os.fspath(suite), os.fspath(out), int(jobs or 0), bool(resume))
+    counts printed).
+
+    `solvers`: outside solvers that join the suite's backends for this run, name -> a class
+    (its `rule` attribute, e.g. "collide-first", says which stepping rule it implements),
+    "module:Class", or {"command": "..."} for any program (docs/your-solver.md)."""
+    entries = [_solver_entry(name, s) for name, s in (solvers or {}).items()]
+    runner = os.path.join(os.path.dirname(os.path.abspath(__file__)), "solver_runner.py")
+    counts = _collide._validate(os.fspath(suite), os.fspath(out), int(jobs or 0), bool(resume), entries,
+                                sys.executable, runner)
     print("suite     %s: %d cases (%d run, %d resumed) in %.1f s, %d at a time" % (
         counts["suite"], counts["cases"], counts["cases_run"], counts["cases_resumed"], counts["wall_seconds"],
         counts["jobs"]))

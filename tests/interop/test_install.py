@@ -30,6 +30,7 @@ def test_the_layout(prefix):
     share = prefix / "share" / "collide"
     for path in ("data/scenes/head_on_equal.toml", "validation/suites/default.toml",
                  "validation/report/make_report.py", "python/collide/gsd_export.py",
+                 "python/collide/solver_runner.py", "validation/report/compare.py",
                  "data/scenes/physics/hard_disk_fluid.toml", "data/references/kolafa_rottner_2006.toml"):
         assert (share / path).is_file(), path
     # The default suite's physics rows read their published references from ../../data/references.
@@ -53,6 +54,18 @@ def test_the_installed_program_runs_a_suite_and_exports(prefix, tmp_path):
     exported = installed(prefix, "export", run, "--out", tmp_path / "run.gsd", cwd="/")
     assert exported.returncode == 0, exported.stderr
     assert (tmp_path / "run.gsd").stat().st_size > 0
+
+
+def test_the_installed_program_runs_a_python_solver_through_its_runner(prefix, tmp_path):
+    scenes = prefix / "share" / "collide" / "data" / "scenes"
+    stepper = pathlib.Path(__file__).resolve().parents[2] / "docs" / "examples" / "solvers" / "numpy_stepper.py"
+    suite = tmp_path / "suite.toml"
+    suite.write_text('name = "installed"\nbackends = ["event"]\nwarmup_fraction = 0\nscene_dir = "%s"\n\n'
+                     '[[scene]]\nname = "head_on_equal"\ncompare = "trajectory"\nduration = 0.5\ndt = [1e-3]\n' % scenes)
+    r = installed(prefix, "validate", suite, "--out", tmp_path / "out", "--python-solver", "np=%s:NumPyStepper" % stepper,
+                  cwd="/")
+    assert r.returncode == 0, r.stdout + r.stderr
+    assert installed(prefix, "compare", tmp_path / "out", tmp_path / "out").returncode == 0
 
 
 def test_the_installed_python_package_imports_from_the_prefix(prefix):

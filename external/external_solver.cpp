@@ -1,0 +1,420 @@
+#include "external_solver.h"
+
+#include <stdlib.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+#include "core/number_text.h"
+#include "core/output_file.h"
+#include "core/target_time.h"
+#include "npy.h"
+#include "program_call.h"
+#include "sha256.h"
+
+namespace collide::external {
+namespace fs = std::filesystem;
+namespace {
+
+// How much of a program's output a fault message quotes (the whole output goes to the case log).
+constexpr std::size_t quoted_output_chars = 600;
+// result.txt is a few lines; more than this is not a result.
+constexpr std::uintmax_t max_result_bytes = 64u << 20;
+
+// A request directory of its own under the system's temporary directory, removed with it.
+class RequestDirectory {
+public:
+    RequestDirectory() {
+        std::string pattern = (fs::temp_directory_path() / "collide-solver-XXXXXX").string();
+        if (!::mkdtemp(pattern.data())) throw std::runtime_error("cannot create a request directory in " +
+                                                                 fs::temp_directory_path().string());
+        path_ = pattern;
+    }
+    ~RequestDirectory() {
+        std::error_code ignored;
+        fs::remove_all(path_, ignored);
+    }
+    RequestDirectory(const RequestDirectory&) = delete;
+    RequestDirectory& operator=(const RequestDirectory&) = delete;
+    std::string file(const std::string& name) const { return (fs::path(path_) / name).string(); }
+    const std::string& path() const { return path_; }
+
+private:
+    std::string path_;
+};
+
+std::string read_text(const std::string& path, std::uintmax_t limit) {
+    std::error_code ec;
+    const auto size = fs::file_size(path, ec);
+    if (ec) return {};
+    std::ifstream in(path, std::ios::binary);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (size > limit) text.resize(limit);
+    return text;
+}
+
+std::string times_text(const std::vector<double>& times) {
+    std::string out;
+    for (double t : times) {
+        out += ' ';
+        out += round_trip_text(t);
+    }
+    return out;
+}
+
+// request.txt: one "key value" line each, the numbers as round-trip text (strtod gives the
+// same double back). The scene file's own text is beside it; these values are the case's.
+std::string request_text(const ExternalSolverSpec& spec, const Scene& scene, std::size_t disks, double start,
+                         const std::vector<double>& times) {
+    std::ostringstream out;
+    const auto number = [&out](const char* key, double v) { out << key << ' ' << round_trip_text(v) << '\n'; };
+    out << "protocol " << protocol_version << '\n';
+    out << "solver " << spec.name << '\n';
+    out << "scene " << scene.name << '\n';
+    out << "seed " << scene.seed << '\n';
+    out << "disks " << disks << '\n';
+    number("start_time", start);
+    out << "output_times" << times_text(times) << '\n';
+    number("dt", scene.run.dt);
+    out << "substeps " << scene.run.substeps << '\n';
+    out << "order " << to_string(scene.run.order) << '\n';
+    out << "boundary " << to_string(scene.world.boundary) << '\n';
+    number("xmin", scene.world.xmin);
+    number("ymin", scene.world.ymin);
+    number("xmax", scene.world.xmax);
+    number("ymax", scene.world.ymax);
+    number("restitution", scene.physics.restitution);
+    number("wall_restitution", scene.physics.wall_restitution);
+    number("friction", scene.physics.friction);
+    number("gravity_x", scene.physics.gravity_x);
+    number("gravity_y", scene.physics.gravity_y);
+    number("damping", scene.physics.damping);
+    number("duration", scene.run.duration);
+    return out.str();
+}
+
+// initial.npy: (N, 7) float64, columns x, y, vx, vy, radius, mass, stone (1 for a kinematic stone).
+std::string state_npy(const ParticleState<double>& s) {
+    std::vector<double> rows;
+    rows.reserve(s.size() * 7);
+    for (std::size_t i = 0; i < s.size(); ++i)
+        for (double v : {s.x[i], s.y[i], s.vx[i], s.vy[i], s.radius[i], s.mass[i], s.is_stone(i) ? 1.0 : 0.0})
+            rows.push_back(v);
+    return npy_bytes(rows, {s.size(), 7});
+}
+
+// What result.txt says.
+struct Answer {
+    std::vector<double> times;
+    bool has_times = false;
+    std::int64_t steps = 0, contacts = 0;
+    std::string version, refusal;
+};
+
+bool whole_number(const std::string& word, std::int64_t& value) {
+    if (word.empty() || word.size() > 18 || word.find_first_not_of("0123456789") != std::string::npos) return false;
+    value = std::stoll(word);
+    return true;
+}
+
+bool real_number(const std::string& word, double& value) {
+    if (word.empty()) return false;
+    char* end = nullptr;
+    value = std::strtod(word.c_str(), &end);
+    return end == word.c_str() + word.size();
+}
+
+std::string rest_of_line(std::istringstream& in) {
+    std::string rest;
+    std::getline(in, rest);
+    const auto first = rest.find_first_not_of(" \t");
+    rest = first == std::string::npos ? "" : rest.substr(first);
+    while (!rest.empty() && (rest.back() == '\r' || rest.back() == ' ')) rest.pop_back();
+    return printable_tail(rest, 300);
+}
+
+Answer parse_answer(const std::string& text) {
+    Answer a;
+    std::istringstream lines(text);
+    std::string line;
+    int number = 0;
+    while (std::getline(lines, line)) {
+        ++number;
+        std::istringstream in(line);
+        std::string key;
+        if (!(in >> key) || key[0] == '#') continue;
+        const std::string where = "result.txt line " + std::to_string(number) + ": ";
+        if (key == "times") {
+            std::string word;
+            while (in >> word) {
+                double t = 0;
+                if (!real_number(word, t))
+                    throw std::runtime_error(where + "times: '" + printable_tail(word, 40) + "' is not a number");
+                a.times.push_back(t);
+            }
+            a.has_times = true;
+        } else if (key == "steps" || key == "contacts") {
+            std::string word;
+            in >> word;
+            std::int64_t v = 0;
+            if (!whole_number(word, v)) throw std::runtime_error(where + key + ": expected a whole number >= 0");
+            (key == "steps" ? a.steps : a.contacts) = v;
+        } else if (key == "version") {
+            a.version = rest_of_line(in);
+        } else if (key == "refuse") {
+            a.refusal = rest_of_line(in);
+            if (a.refusal.empty()) throw std::runtime_error(where + "refuse: expected the reason after the word");
+        } else {
+            throw std::runtime_error(where + "unknown key '" + printable_tail(key, 40) +
+                                     "' (expected times, steps, contacts, version or refuse)");
+        }
+    }
+    return a;
+}
+
+class ExternalSolver : public Solver {
+public:
+    explicit ExternalSolver(ExternalSolverSpec spec) : spec_(std::move(spec)) {}
+
+    std::string name() const override { return spec_.name; }
+
+    void load(const Scene& scene, const ParticleState<double>& initial) override {
+        if (initial.size() == 0) throw std::invalid_argument(spec_.name + ": the scene has no disks");
+        scene_ = scene;
+        state_ = initial;
+        time_ = 0;
+        planned_.clear();
+        computed_.clear();
+        stats_ = SolverStats{};
+        calls_ = 0;
+    }
+
+    void plan_outputs(const std::vector<double>& times) override { planned_ = times; }
+
+    void advance_to(double t) override {
+        check_target_time(spec_.name, t, time_, scene_.run.dt, false);
+        if (t == time_) return;
+        if (!computed_.count(t)) call(times_for(t));
+        const std::vector<double>& row = computed_.at(t);
+        for (std::size_t i = 0; i < state_.size(); ++i) {
+            state_.x[i] = row[4 * i];
+            state_.y[i] = row[4 * i + 1];
+            state_.vx[i] = row[4 * i + 2];
+            state_.vy[i] = row[4 * i + 3];
+        }
+        time_ = t;
+        // The states before t are no longer needed (times never decrease).
+        computed_.erase(computed_.begin(), computed_.upper_bound(t));
+    }
+
+    void read_state(ParticleState<double>& out) const override { out = state_; }
+    double time() const override { return time_; }
+    SolverStats stats() const override { return stats_; }
+
+    std::map<std::string, std::string> provenance() const override {
+        std::map<std::string, std::string> p;
+        p["solver_command"] = spec_.command;
+        p["solver_protocol"] = std::to_string(protocol_version);
+        if (!spec_.directory.empty()) p["solver_directory"] = spec_.directory;
+        if (!spec_.python_class.empty()) p["solver_python_class"] = spec_.python_class;
+        if (!spec_.rule.empty()) p["solver_rule"] = spec_.rule;
+        if (!version_.empty()) p["solver_version"] = version_;
+        if (const std::string hashes = file_hashes(); !hashes.empty()) p["solver_files_sha256"] = hashes;
+        return p;
+    }
+
+private:
+    // One call covers every planned time from t on when t is planned (one program run per
+    // case), else t alone (a warm-up run, a replay step).
+    std::vector<double> times_for(double t) const {
+        if (std::find(planned_.begin(), planned_.end(), t) == planned_.end()) return {t};
+        std::vector<double> times;
+        for (double p : planned_)
+            if (p >= t) times.push_back(p);
+        return times;
+    }
+
+    [[noreturn]] void fault(const std::string& what) const {
+        std::ostringstream msg;
+        msg << "solver '" << spec_.name << "', scene " << scene_.name << " (seed " << scene_.seed << ", dt "
+            << round_trip_text(scene_.run.dt) << "), call " << calls_ << " from t = "
+            << round_trip_text(time_) << ": " << what;
+        throw std::runtime_error(msg.str());
+    }
+
+    void call(const std::vector<double>& times) {
+        RequestDirectory dir;
+        write_file_atomically(dir.file("request.txt"), request_text(spec_, scene_, state_.size(), time_, times));
+        write_file_atomically(dir.file("initial.npy"), state_npy(state_));
+        write_file_atomically(dir.file("scene.toml"), scene_.source_text);
+        const ProgramOutcome outcome = call_program(spec_.command, dir.path(), spec_.directory.empty() ? "." : spec_.directory,
+                                                    dir.file("output.txt"), spec_.call_time_limit);
+        ++calls_;
+        stats_.counters["program_calls"] += 1;
+        stats_.counters["program_seconds"] += outcome.seconds;
+        const std::string output = read_text(dir.file("output.txt"), max_result_bytes);
+        forward_to_log(output);
+        if (!outcome.succeeded())
+            fault(outcome.describe(spec_.call_time_limit) + quoted(output));
+        if (!fs::is_regular_file(dir.file("result.txt")))
+            fault("it exited with status 0 but wrote no result.txt" + quoted(output));
+        Answer answer;
+        try {
+            answer = parse_answer(read_text(dir.file("result.txt"), max_result_bytes));
+        } catch (const std::exception& e) {
+            fault(e.what());
+        }
+        if (!answer.version.empty()) version_ = answer.version;
+        if (!answer.refusal.empty()) throw SceneRefused(spec_.name + " refuses this scene: " + answer.refusal);
+        check_times(answer, times);
+        store(dir.file("states.npy"), times);
+        stats_.steps += answer.steps;
+        stats_.contacts += answer.contacts;
+    }
+
+    std::string quoted(const std::string& output) const {
+        if (output.empty()) return "; it printed nothing";
+        return "; the end of its output: " + printable_tail(output, quoted_output_chars);
+    }
+
+    // The program's own words go to the case's log as they are (never into the report).
+    void forward_to_log(const std::string& output) const {
+        if (output.empty()) return;
+        std::fprintf(stderr, "--- output of solver '%s' (call %d) ---\n", spec_.name.c_str(), calls_);
+        std::fwrite(output.data(), 1, output.size(), stderr);
+        std::fprintf(stderr, "\n--- end of output ---\n");
+    }
+
+    void check_times(const Answer& answer, const std::vector<double>& times) const {
+        if (!answer.has_times) fault("result.txt has no 'times' line (the output times it computed)");
+        if (answer.times.size() != times.size())
+            fault("result.txt lists " + std::to_string(answer.times.size()) + " output times, expected " +
+                  std::to_string(times.size()) + ":" + times_text(times));
+        // Equal up to rounding: a stepper that sums t += dt reaches 0.30000000000000004.
+        const double tolerance = 1e-9 * std::max(scene_.run.duration, std::fabs(times.back()));
+        for (std::size_t k = 0; k < times.size(); ++k)
+            if (!(std::fabs(answer.times[k] - times[k]) <= tolerance))
+                fault("result.txt: output time " + std::to_string(k) + " is " + round_trip_text(answer.times[k]) +
+                      ", expected " + round_trip_text(times[k]) + " (the state for the wrong time)");
+    }
+
+    void store(const std::string& path, const std::vector<double>& times) {
+        if (!fs::is_regular_file(path)) fault("it wrote no states.npy");
+        NpyArray states;
+        try {
+            states = read_npy(path);
+        } catch (const NpyError& e) {
+            fault(std::string("states.npy: ") + e.what());
+        }
+        const std::vector<std::size_t> expected = {times.size(), state_.size(), 4};
+        if (states.shape != expected)
+            fault("states.npy has shape " + shape_text(states.shape) + ", expected " + shape_text(expected) +
+                  " (output times, disks, [x, y, vx, vy])");
+        const std::size_t row = 4 * state_.size();
+        for (std::size_t k = 0; k < times.size(); ++k) {
+            const auto begin = states.data.begin() + std::ptrdiff_t(k * row);
+            const auto bad = std::find_if(begin, begin + std::ptrdiff_t(row), [](double v) { return !std::isfinite(v); });
+            if (bad != begin + std::ptrdiff_t(row)) {
+                const std::size_t at = std::size_t(bad - begin);
+                static const char* const column[] = {"x", "y", "vx", "vy"};
+                fault("states.npy holds " + round_trip_text(*bad) + " (NaN/Inf) at t = " + round_trip_text(times[k]) +
+                      ", disk " + std::to_string(at / 4) + ", " + column[at % 4]);
+            }
+            computed_[times[k]].assign(begin, begin + std::ptrdiff_t(row));
+        }
+    }
+
+    // SHA-256 of every word of the command that names a file ("numpy_stepper.py", "./a.out"),
+    // or of a Python class's file: which version of the program produced the result.
+    std::string file_hashes() const {
+        std::vector<std::string> words;
+        std::istringstream in(spec_.command);
+        // A class's command is the interpreter and collide's runner: its own file is what counts.
+        if (spec_.python_class.empty())
+            for (std::string w; in >> w;) words.push_back(w);
+        if (!spec_.python_class.empty()) {
+            const std::string module = spec_.python_class.substr(0, spec_.python_class.rfind(':'));
+            std::string file = module;
+            if (file.size() < 3 || file.compare(file.size() - 3, 3, ".py") != 0) {
+                std::replace(file.begin(), file.end(), '.', '/');
+                file += ".py";
+            }
+            words.push_back(file);
+        }
+        std::string out;
+        for (std::string w : words) {
+            w.erase(std::remove(w.begin(), w.end(), '\''), w.end());
+            w.erase(std::remove(w.begin(), w.end(), '"'), w.end());
+            fs::path p(w);
+            if (p.is_relative() && !spec_.directory.empty()) p = fs::path(spec_.directory) / p;
+            std::error_code ec;
+            if (w.empty() || !fs::is_regular_file(p, ec)) continue;
+            try {
+                out += (out.empty() ? "" : "; ") + w + " " + sha256_file(p.string());
+            } catch (const std::exception&) {
+            }
+        }
+        return out;
+    }
+
+    ExternalSolverSpec spec_;
+    Scene scene_;
+    ParticleState<double> state_;
+    double time_ = 0;
+    std::vector<double> planned_;
+    std::map<double, std::vector<double>> computed_;  // output time -> x, y, vx, vy of every disk
+    SolverStats stats_;
+    std::string version_;
+    int calls_ = 0;
+};
+
+}  // namespace
+
+std::string solver_name_problem(const std::string& name) {
+    if (name.empty() || name.size() > 40 || name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_-") != std::string::npos ||
+        name[0] == '-')
+        return "a solver name of 1 to 40 lower-case letters, digits, _ or - (it becomes part of file names), not '" +
+               printable_tail(name, 60) + "'";
+    return "";
+}
+
+std::string rule_problem(const std::string& rule) {
+    if (rule.empty() || rule == "collide-first" || rule == "integrate-first") return "";
+    return "\"collide-first\" or \"integrate-first\" (the stepping rule it implements), not \"" + rule + "\"";
+}
+
+ExternalSolverSpec parse_solver_option(const std::string& text) {
+    const auto eq = text.find('=');
+    if (eq == std::string::npos)
+        throw std::invalid_argument("--solver " + text + ": expected NAME=COMMAND, e.g. mine='python3 my_solver.py'");
+    ExternalSolverSpec spec;
+    spec.name = text.substr(0, eq);
+    spec.command = text.substr(eq + 1);
+    spec.origin = "--solver " + text;
+    if (const std::string why = solver_name_problem(spec.name); !why.empty())
+        throw std::invalid_argument("--solver " + text + ": expected " + why);
+    if (spec.command.find_first_not_of(" \t") == std::string::npos)
+        throw std::invalid_argument("--solver " + text + ": expected a command after '='");
+    return spec;
+}
+
+std::unique_ptr<Solver> make_external_solver(const ExternalSolverSpec& spec) {
+    return std::make_unique<ExternalSolver>(spec);
+}
+
+BackendInfo external_backend(const ExternalSolverSpec& spec) {
+    BackendInfo info;
+    info.name = spec.name;
+    info.precision = "double";
+    info.description = "outside solver: " + (spec.python_class.empty() ? spec.command : spec.python_class);
+    info.supports = [](const Scene&) -> std::optional<std::string> { return std::nullopt; };
+    info.create = [spec](const BackendOptions&) { return make_external_solver(spec); };
+    return info;
+}
+
+}  // namespace collide::external

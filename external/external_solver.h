@@ -1,0 +1,54 @@
+// An outside solver as a backend: any program, spoken to through the file protocol of
+// docs/your-solver.md, behind the same Solver interface as the built-in backends. The suites,
+// checks, comparisons with `event`, work-precision lines and report then treat it like any
+// other backend row (validation/external_solvers.h puts it into a suite's backend list).
+//
+// Per program call, collide writes a request directory (request.txt, initial.npy, scene.toml),
+// runs `COMMAND DIR`, and reads DIR/result.txt and DIR/states.npy back. Everything that comes
+// back is checked (exit status, time limit, shapes, dtype, count, finite numbers, times); a
+// fault throws with a message that names the solver, the scene and what was wrong.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/backend_registry.h"
+
+namespace collide::external {
+
+// The protocol version written into every request (request.txt: "protocol 1").
+inline constexpr int protocol_version = 1;
+
+struct ExternalSolverSpec {
+    std::string name;         // its backend name in every output: lower-case letters, digits, _ or -
+    std::string command;      // a /bin/sh command line; the request directory is appended as "$1"
+    std::string directory;    // where the command runs ("" = the current directory)
+    std::string python_class; // "module:Class" or "file.py:Class" when given as a Python class (else "")
+    // "" or the stepping rule it implements ("collide-first", "integrate-first"): such a solver is
+    // judged as the built-in stepped backends are (the statistics against the predicted bias).
+    std::string rule;
+    double call_time_limit = 60;  // seconds per program call
+    std::string origin;       // where it was named, for messages ("--solver", "suite.toml:12")
+};
+
+// "" when `name` can be a solver's name, else what is wrong with it.
+std::string solver_name_problem(const std::string& name);
+
+// "" or what is wrong with a rule name.
+std::string rule_problem(const std::string& rule);
+
+// The spec of NAME=COMMAND (`--solver`); throws std::invalid_argument naming the fault.
+ExternalSolverSpec parse_solver_option(const std::string& text);
+
+// The registry entry of an outside solver: supports() accepts every scene (the program may
+// refuse one at run time by answering "refuse REASON": the case is then left out), create()
+// makes an ExternalSolver.
+BackendInfo external_backend(const ExternalSolverSpec& spec);
+
+// The Solver behind external_backend(); public for the tests.
+std::unique_ptr<Solver> make_external_solver(const ExternalSolverSpec& spec);
+
+}  // namespace collide::external

@@ -1,0 +1,100 @@
+#include "program_call.h"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+namespace collide::external {
+namespace {
+
+// In the child between fork and exec: only async-signal-safe calls (no allocation), so every
+// string is made before the fork.
+[[noreturn]] void exec_child(const char* script, const char* argument, const char* directory, const char* output_path,
+                             pid_t parent) {
+    ::setpgid(0, 0);                      // its own group: the limit kills its children too
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);   // and it dies with the case process
+    if (::getppid() != parent) ::_exit(125);  // the parent died before prctl took effect
+    const int null_in = ::open("/dev/null", O_RDONLY);
+    const int out = ::open(output_path, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (null_in < 0 || out < 0 || ::chdir(directory) != 0) ::_exit(126);
+    ::dup2(null_in, 0);
+    ::dup2(out, 1);
+    ::dup2(out, 2);
+    ::execl("/bin/sh", "sh", "-c", script, "collide-solver", argument, static_cast<char*>(nullptr));
+    ::_exit(127);
+}
+
+}  // namespace
+
+std::string ProgramOutcome::describe(double limit_seconds) const {
+    std::ostringstream out;
+    if (timed_out) out << "still running after the limit of " << limit_seconds << " s (killed)";
+    else if (signal) out << "killed by signal " << signal << " (" << strsignal(signal) << ")";
+    else if (exit_status == 127) out << "exit status 127 (the shell found no such command)";
+    else if (exit_status == 126) out << "exit status 126 (the command could not be executed)";
+    else out << "exit status " << exit_status;
+    return out.str();
+}
+
+ProgramOutcome call_program(const std::string& command, const std::string& argument, const std::string& directory,
+                            const std::string& output_path, double limit_seconds) {
+    using Clock = std::chrono::steady_clock;
+    const std::string script = command + " \"$1\"";  // the request directory as the last argument
+    const pid_t parent = ::getpid();
+    const auto start = Clock::now();
+    const pid_t pid = ::fork();
+    if (pid < 0) throw std::runtime_error(std::string("fork failed: ") + std::strerror(errno));
+    if (pid == 0) exec_child(script.c_str(), argument.c_str(), directory.c_str(), output_path.c_str(), parent);
+    ::setpgid(pid, pid);  // also here, so the group exists before any kill below
+    ProgramOutcome outcome;
+    int status = 0;
+    // Poll: a short sleep keeps the wait cheap, and the limit is honoured within 5 ms.
+    for (;;) {
+        const pid_t done = ::waitpid(pid, &status, WNOHANG);
+        if (done == pid) break;
+        if (done < 0 && errno != EINTR) throw std::runtime_error(std::string("waitpid failed: ") + std::strerror(errno));
+        if (std::chrono::duration<double>(Clock::now() - start).count() > limit_seconds) {
+            outcome.timed_out = true;
+            ::kill(-pid, SIGKILL);
+            ::waitpid(pid, &status, 0);
+            break;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    ::kill(-pid, SIGKILL);  // whatever the program left running in its group
+    outcome.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    if (!outcome.timed_out) {
+        if (WIFEXITED(status)) outcome.exit_status = WEXITSTATUS(status);
+        else if (WIFSIGNALED(status)) outcome.signal = WTERMSIG(status);
+    }
+    return outcome;
+}
+
+std::string printable_tail(const std::string& text, std::size_t max_chars) {
+    std::string out;
+    const std::size_t from = text.size() > max_chars ? text.size() - max_chars : 0;
+    if (from) out = "...";
+    char hex[5];
+    for (std::size_t i = from; i < text.size(); ++i) {
+        const unsigned char c = static_cast<unsigned char>(text[i]);
+        if ((c >= 0x20 && c < 0x7f) || c == '\n') {
+            out += char(c);
+        } else {
+            std::snprintf(hex, sizeof hex, "\\x%02x", c);
+            out += hex;
+        }
+    }
+    return out;
+}
+
+}  // namespace collide::external

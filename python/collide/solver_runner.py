@@ -1,0 +1,128 @@
+"""Runs a Python solver class through collide's outside-solver protocol (docs/your-solver.md).
+
+    python3 solver_runner.py MODULE:CLASS REQUEST_DIR
+
+collide runs this for a solver given as a Python class (`[solver.NAME] python = "..."` in a
+suite file, `collide validate --python-solver`, or `collide.validate(solvers=...)`). MODULE is
+a module name importable from the current directory or sys.path, or the path of a .py file.
+The class is created without arguments and used as
+
+    solver.load(scene, initial)   scene: the request as a dict (numbers as float or int, "toml":
+                                  the scene file's text); initial: NumPy arrays "positions" and
+                                  "velocities" (N, 2), "radius", "mass" (N,), "stone" (N,) bool
+    solver.advance_to(t)          t: absolute time, increasing
+    solver.positions, solver.velocities     (N, 2) float64, attributes or properties
+    solver.stats()                optional: {"steps": int, "contacts": int}
+    solver.version                optional: a version string for the provenance
+    solver.refuses(scene)         optional: a reason (str) not to run the scene, or None
+
+Only the standard library and NumPy: it needs no part of collide, so any Python with NumPy
+runs it. read_request() and write_result() are the protocol for a program of your own.
+"""
+
+import importlib
+import importlib.util
+import os
+import sys
+
+import numpy as np
+
+# request.txt keys whose values are words, not numbers; output_times is a list.
+_WORDS = {"solver", "scene", "order", "boundary"}
+
+
+def read_request(directory):
+    """request.txt as a dict, initial.npy as the arrays of `initial` (see the module docstring)."""
+    scene = {}
+    with open(os.path.join(directory, "request.txt"), encoding="utf-8") as f:
+        for line in f:
+            key, _, value = line.strip().partition(" ")
+            if not key:
+                continue
+            if key == "output_times":
+                scene[key] = [float(v) for v in value.split()]
+            elif key in _WORDS:
+                scene[key] = value
+            elif key in ("protocol", "seed", "disks", "substeps"):
+                scene[key] = int(value)
+            else:
+                scene[key] = float(value)
+    with open(os.path.join(directory, "scene.toml"), encoding="utf-8") as f:
+        scene["toml"] = f.read()
+    table = np.load(os.path.join(directory, "initial.npy"))
+    initial = {
+        "positions": table[:, 0:2].copy(),
+        "velocities": table[:, 2:4].copy(),
+        "radius": table[:, 4].copy(),
+        "mass": table[:, 5].copy(),
+        "stone": table[:, 6] != 0,
+    }
+    return scene, initial
+
+
+def write_result(directory, times, states, steps=None, contacts=None, version=None, refuse=None):
+    """states.npy ((K, N, 4) float64: x, y, vx, vy at each of the K times) and result.txt."""
+    lines = []
+    if refuse is not None:
+        lines.append("refuse " + " ".join(str(refuse).split()))
+    else:
+        np.save(os.path.join(directory, "states.npy"), np.ascontiguousarray(states, dtype="<f8"))
+        lines.append("times " + " ".join(repr(float(t)) for t in times))
+        if steps is not None:
+            lines.append("steps %d" % int(steps))
+        if contacts is not None:
+            lines.append("contacts %d" % int(contacts))
+    if version:
+        lines.append("version " + " ".join(str(version).split()))
+    with open(os.path.join(directory, "result.txt"), "w", encoding="utf-8") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def load_class(spec):
+    """The class that "module:Class" or "path/file.py:Class" names."""
+    module_name, _, class_name = spec.rpartition(":")
+    if not module_name or not class_name:
+        raise SystemExit("solver_runner: expected MODULE:CLASS, not %r" % spec)
+    if module_name.endswith(".py"):
+        path = os.path.abspath(module_name)
+        name = "collide_solver_" + os.path.splitext(os.path.basename(path))[0]
+        module_spec = importlib.util.spec_from_file_location(name, path)
+        if module_spec is None or not os.path.isfile(path):
+            raise SystemExit("solver_runner: no such file %s" % path)
+        sys.path.insert(0, os.path.dirname(path))   # its sibling modules import as from a script
+        module = importlib.util.module_from_spec(module_spec)
+        sys.modules[name] = module
+        module_spec.loader.exec_module(module)
+    else:
+        sys.path.insert(0, os.getcwd())
+        module = importlib.import_module(module_name)
+    try:
+        return getattr(module, class_name)
+    except AttributeError:
+        raise SystemExit("solver_runner: module %s has no class %s" % (module_name, class_name))
+
+
+def run(spec, directory):
+    scene, initial = read_request(directory)
+    solver = load_class(spec)()
+    version = getattr(solver, "version", None)
+    refuses = getattr(solver, "refuses", None)
+    reason = refuses(scene) if refuses else None
+    if reason:
+        write_result(directory, [], None, version=version, refuse=reason)
+        return
+    solver.load(scene, initial)
+    times = scene["output_times"]
+    states = np.empty((len(times), len(initial["radius"]), 4))
+    for k, t in enumerate(times):
+        solver.advance_to(t)
+        states[k, :, 0:2] = solver.positions
+        states[k, :, 2:4] = solver.velocities
+    stats = solver.stats() if hasattr(solver, "stats") else {}
+    write_result(directory, times, states, steps=stats.get("steps"), contacts=stats.get("contacts"), version=version)
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 3:
+        raise SystemExit("usage: solver_runner.py MODULE:CLASS REQUEST_DIR")
+    run(sys.argv[1], sys.argv[2])

@@ -1,0 +1,80 @@
+// The [solver.NAME] tables of a suite file and the joining of outside solvers to a suite's
+// backends (validation/external_solvers.h): each mistake is refused with the file, line and key.
+#include <gtest/gtest.h>
+
+#include "validation/external_solvers.h"
+#include "validation/statistics_bias_model.h"
+#include "validation/suite.h"
+
+namespace collide::validation {
+namespace {
+
+const std::string scene = "\n[[scene]]\nname = \"head_on_equal\"\n";
+
+Suite parse(const std::string& text) {
+    return parse_suite(text + scene, "s.toml", std::string(COLLIDE_SOURCE_DIR) + "/validation/suites");
+}
+
+std::string refusal(const std::string& text) {
+    try {
+        parse(text);
+    } catch (const SuiteError& e) {
+        return e.what();
+    }
+    ADD_FAILURE() << "accepted: " << text;
+    return "";
+}
+
+TEST(SolverTables, ReadCommandPythonAndRule) {
+    const Suite s = parse("backends = [\"event\"]\n[solver.mine]\ncommand = \"./a.out\"\n"
+                          "[solver.py]\npython = \"m.py:C\"\nrule = \"collide-first\"\n");
+    ASSERT_EQ(s.solvers.size(), 2u);
+    EXPECT_EQ(s.solvers[0].name, "mine");
+    EXPECT_EQ(s.solvers[0].command, "./a.out");
+    EXPECT_EQ(s.solvers[1].python_class, "m.py:C");
+    EXPECT_EQ(s.solvers[1].rule, "collide-first");
+    EXPECT_EQ(s.solvers[0].directory, std::string(COLLIDE_SOURCE_DIR) + "/validation/suites");
+    // Each joins the suite's list of backends for this run.
+    EXPECT_EQ(s.backends, (std::vector<std::string>{"event", "mine", "py"}));
+}
+
+TEST(SolverTables, RefuseEachMistakeWithItsPlace) {
+    EXPECT_NE(refusal("[solver.Mine]\ncommand = \"x\"\n").find("s.toml:1: solver.Mine: expected a solver name"),
+              std::string::npos);
+    EXPECT_NE(refusal("[solver.mine]\n").find("either command"), std::string::npos);
+    EXPECT_NE(refusal("[solver.mine]\ncommand = \"x\"\npython = \"m:C\"\n").find("not both"), std::string::npos);
+    EXPECT_NE(refusal("[solver.mine]\ncommand = \"x\"\nargs = 1\n").find("solver.mine.args: expected no such key"),
+              std::string::npos);
+    EXPECT_NE(refusal("[solver.mine]\npython = \"module\"\n").find("\"module:Class\""), std::string::npos);
+    EXPECT_NE(refusal("[solver.mine]\ncommand = \"x\"\nrule = \"rk4\"\n").find("solver.mine.rule"), std::string::npos);
+    EXPECT_NE(refusal("[solver.mine]\ncommand = 3\n").find("a non-empty string"), std::string::npos);
+}
+
+TEST(SolverTables, ANameTakenTwiceOrByABackendIsRefused) {
+    Suite s = parse("[solver.mine]\ncommand = \"x\"\n");
+    external::ExternalSolverSpec again = s.solvers.at(0);  // the same name once more
+    again.origin = std::string("--solver mine=y");
+    EXPECT_THROW(add_solvers(s, {again}), SuiteError);
+    Suite t = parse("[solver.step]\ncommand = \"x\"\n");
+    BackendInfo step;
+    step.name = std::string("step");
+    EXPECT_THROW(backends_with_solvers(t, {step}, {}), SuiteError);
+}
+
+TEST(SolverTables, ARuleMakesTheSolverAStepperForTheChecks) {
+    const Suite s = parse("[solver.mine]\ncommand = \"x\"\nrule = \"collide-first\"\n[solver.other]\ncommand = \"y\"\n");
+    const auto backends = backends_with_solvers(s, {}, {"python3", "runner.py"});
+    ASSERT_EQ(backends.size(), 2u);
+    EXPECT_TRUE(follows_stepping_rules("mine"));
+    EXPECT_FALSE(follows_stepping_rules("other"));
+    EXPECT_EQ(s.backends, (std::vector<std::string>{"all"}));  // "all" takes them anyway
+    set_outside_stepping_rules({});
+    EXPECT_FALSE(follows_stepping_rules("mine"));
+}
+
+TEST(SolverTables, ShellQuotingKeepsQuotes) {
+    EXPECT_EQ(shell_quote("it's"), "'it'\\''s'");
+}
+
+}  // namespace
+}  // namespace collide::validation
