@@ -280,14 +280,19 @@ private:
     }
 
     // The size of the one work-group of grid = "group": the user's local_size, else the
-    // smallest of a few sizes that gives every work-item one disk (a few sizes, because a
-    // compiler such as PoCL's builds the kernel once per work-group size), at most the kernel's
-    // limit on this device.
+    // smallest of 16, 64, 256, 1024 (a few sizes, because a compiler such as PoCL's builds the
+    // kernel once per work-group size) that gives each work-item at most `disks_per_item`
+    // disks, within the kernel's limit on this device. On a GPU that is one disk per item. On a
+    // CPU device the group runs on one core, its work-items the iterations of a loop
+    // (vectorised across items) that every barrier restarts, so items beyond a few per vector
+    // lane only add loop overhead: four disks per item measured best at N = 1000
+    // (docs/opencl-backend.md).
     std::size_t group_size() const {
         if (local_.dimensions() != 0) return local_[0];
         const std::size_t limit = group_.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(session_.device.device);
+        const std::size_t disks_per_item = session_.device.type == "CPU" ? 4 : 1;
         std::size_t size = 16;
-        while (size < n_ && size < 1024) size *= 4;
+        while (size * disks_per_item < n_ && size < 1024) size *= 4;
         return std::min(size, limit);
     }
 
