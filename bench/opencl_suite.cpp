@@ -150,8 +150,9 @@ void run_suite(const BenchArgs& args, BenchReport& report) {
         report.note("the opencl backend is not compiled into this build");
         return;
     }
-    if (cpu && !args.scene_dir.empty()) measure_launch_cost(*opencl, *cpu, args, report);
-    else report.note("launch cost not measured: it needs the cpu backend and the scene library");
+    if (cpu && !args.scene_dir.empty() && wanted(args, "opencl") && wanted(args, "cpu"))
+        measure_launch_cost(*opencl, *cpu, args, report);
+    else report.note("launch cost not measured: it needs the opencl and cpu backends and the scene library");
     bool stopped = false;
     for (std::int64_t n : sizes) {
         for (const char* grid : {"group", "host", "device"})
