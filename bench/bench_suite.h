@@ -27,6 +27,7 @@ struct BenchArgs {
     int steps = 240;                    // timed steps of dt per scenario (ParticleBox's suite: 240 frames)
     bool quick = false;                 // smaller ladder, for smoke tests
     double max_seconds_per_case = 60;   // a case whose first frame exceeds this is stopped
+    std::string scene_dir;              // the scene library (data/scenes), for suites that run its scenes
 };
 
 // Whether `backend` should run: --backend names it, or --backend was not given.

@@ -19,16 +19,25 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// Default grid per device (docs/opencl-backend.md has the measurements). On a CPU device
-// (PoCL) the "device" memory is host memory, so the host build's read-back and upload are
-// plain copies: the serial counting sort was faster up to N = 1e4, the grid kernels from
-// 1e5 on. On a GPU the host build would cross the bus twice per step and sort on one core
-// while thousands wait, so the grid stays on the device.
+// Default grid per device (docs/opencl-backend.md has the measurements). Up to a few
+// thousand disks, launches cost more than the work: one work-group runs many steps per launch
+// (kernels/group_steps.cl). Beyond that, on a CPU device (PoCL) the "device" memory is host
+// memory, so the host build's read-back and upload are plain copies: the serial counting
+// sort was faster up to N = 1e4, the grid kernels from 1e5 on. On a GPU the host build would
+// cross the bus twice per step and sort on one core while thousands wait, so the grid stays
+// on the device.
 std::string default_grid_mode(const DeviceEntry& device, std::size_t n) {
+    constexpr std::size_t group_up_to = 4096;
     constexpr std::size_t cpu_device_grid_from = 50'000;
+    if (n <= group_up_to) return "group";
     if (device.type == "CPU" && n < cpu_device_grid_from) return "host";
     return "device";
 }
+
+// Disk-passes one launch of the group kernel may run: a launch is then some tens of
+// milliseconds on a CPU core, short enough for a GPU's display watchdog, long enough that
+// its own cost (tens of microseconds) is lost in it.
+constexpr std::int64_t group_disk_passes_per_launch = std::int64_t(1) << 22;
 
 // Move the disks into cell order at every grid build (docs/opencl-backend.md measures 0, 1
 // and larger intervals).
@@ -74,7 +83,8 @@ public:
     void advance_to(double t) override {
         const std::int64_t target = target_step(scene_, t, step_count_, "opencl");
         try {
-            while (step_count_ < target) step();
+            if (grid_mode_ == "group") advance_in_group(target);
+            else while (step_count_ < target) step();
         } catch (const cl::Error& e) {
             throw_cl_error(e, "running a step");
         }
@@ -119,7 +129,7 @@ public:
         return {{"opencl_platform", d.platform_name}, {"opencl_device", d.device_name},
                 {"opencl_device_version", d.device_version}, {"opencl_driver", d.driver_version},
                 {"opencl_build_options", session_.build_options}, {"grid", grid_mode_},
-                {"sort_interval", std::to_string(sort_interval_)}, {"real", sizeof(Real) == 8 ? "double" : "float"}};
+                {"sort_interval", std::to_string(grid_mode_ == "group" ? 0 : sort_interval_)}, {"real", sizeof(Real) == 8 ? "double" : "float"}};
     }
 
 private:
@@ -143,8 +153,9 @@ private:
         session_ = open_session(device, kernel_build_options(scene, initial, real_double, device));
         check_layout();
         grid_mode_ = options_.extra.count("grid") ? options_.extra.at("grid") : default_grid_mode(session_.device, n_);
-        if (grid_mode_ != "host" && grid_mode_ != "device")
-            throw std::invalid_argument("opencl: option grid = '" + grid_mode_ + "': expected \"host\" or \"device\"");
+        if (grid_mode_ != "host" && grid_mode_ != "device" && grid_mode_ != "group")
+            throw std::invalid_argument("opencl: option grid = '" + grid_mode_ +
+                                        "': expected \"host\", \"device\" or \"group\"");
         sort_interval_ = parse_sort_interval(options_.extra);
 
         const double r_max = n_ ? *std::max_element(initial.radius.begin(), initial.radius.end()) : 1.0;
@@ -190,7 +201,8 @@ private:
         const std::uint64_t cells = std::uint64_t(host_grid_.cell_count());
         const std::uint64_t n = std::max<std::uint64_t>(n_, 1);
         const std::uint64_t particle_bytes = sizeof(Particle) * n;
-        const std::uint64_t total = 2 * particle_bytes + sizeof(cl_uint) * (cells + 1 + 4 * n) +
+        const bool group = grid_mode_ == "group";
+        const std::uint64_t total = 2 * particle_bytes + sizeof(cl_uint) * (cells + 1 + (group ? 6 : 4) * n) +
                                     (grid_mode_ == "device" ? DeviceGrid::work_bytes(n_, host_grid_.cell_count()) : 0);
         const DeviceEntry& d = session_.device;
         constexpr double mib = 1024.0 * 1024.0;
@@ -207,9 +219,14 @@ private:
         session_.queue.enqueueFillBuffer(contact_count_, cl_uint(0), 0, sizeof(cl_uint) * n);
         device_grid_.reset();
         if (grid_mode_ == "device") device_grid_ = std::make_unique<DeviceGrid>(session_, std::int64_t(n_), host_grid_.cell_count());
+        if (group) {
+            cell_of_ = cl::Buffer(session_.context, CL_MEM_READ_WRITE, sizeof(cl_uint) * n);
+            rank_ = cl::Buffer(session_.context, CL_MEM_READ_WRITE, sizeof(cl_uint) * n);
+        }
         integrate_ = cl::Kernel(session_.program, "integrate_motion");
         resolve_ = cl::Kernel(session_.program, "resolve_collisions");
         gather_ = cl::Kernel(session_.program, "gather_cell_order");
+        group_ = cl::Kernel(session_.program, "run_steps_in_group");
     }
 
     void upload(const ParticleState<double>& s) {
@@ -248,7 +265,8 @@ private:
         const cl::Device& dev = session_.device.device;
         const std::size_t limit = std::min({resolve_.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(dev),
                                             integrate_.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(dev),
-                                            gather_.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(dev)});
+                                            gather_.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(dev),
+                                            group_.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(dev)});
         if (size == 0 || size > limit)
             throw std::invalid_argument("opencl: invalid work-group size local_size = '" + text + "' for device '" +
                                         session_.device.device_name + "': expected 1.." + std::to_string(limit));
@@ -259,6 +277,57 @@ private:
         if (local_.dimensions() == 0) return cl::NDRange(n_);
         const std::size_t l = local_[0];
         return cl::NDRange((n_ + l - 1) / l * l);
+    }
+
+    // The size of the one work-group of grid = "group": the user's local_size, else the
+    // smallest of 16, 64, 256, 1024 (a few sizes, because a compiler such as PoCL's builds the
+    // kernel once per work-group size) that gives each work-item at most `disks_per_item`
+    // disks, within the kernel's limit on this device. On a GPU that is one disk per item. On a
+    // CPU device the group runs on one core, its work-items the iterations of a loop
+    // (vectorised across items) that every barrier restarts, so items beyond a few per vector
+    // lane only add loop overhead: four disks per item measured best at N = 1000
+    // (docs/opencl-backend.md).
+    std::size_t group_size() const {
+        if (local_.dimensions() != 0) return local_[0];
+        const std::size_t limit = group_.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(session_.device.device);
+        const std::size_t disks_per_item = session_.device.type == "CPU" ? 4 : 1;
+        std::size_t size = 16;
+        while (size * disks_per_item < n_ && size < 1024) size *= 4;
+        return std::min(size, limit);
+    }
+
+    // Whole steps up to `target`, as few launches of run_steps_in_group as the launch budget allows.
+    void advance_in_group(std::int64_t target) {
+        const std::int64_t passes_per_step =
+            scene_.run.order == StepOrder::integrate_first ? std::int64_t(scene_.run.substeps) : 1;
+        const std::int64_t steps_per_launch = std::max<std::int64_t>(
+            1, group_disk_passes_per_launch / (std::max<std::int64_t>(std::int64_t(n_), 1) * passes_per_step));
+        while (step_count_ < target) {
+            const std::int64_t steps = std::min(target - step_count_, steps_per_launch);
+            if (n_ > 0) run_group_launch(int(steps * passes_per_step));
+            step_count_ += steps;
+            stats_.steps += steps;
+        }
+    }
+
+    void run_group_launch(int passes) {
+        const auto start = std::chrono::steady_clock::now();
+        const std::size_t size = group_size();
+        cl_uint arg = 0;
+        group_.setArg(arg++, particles_[current_]);
+        group_.setArg(arg++, particles_[1 - current_]);
+        group_.setArg(arg++, cell_start_);
+        group_.setArg(arg++, sorted_index_);
+        group_.setArg(arg++, cell_of_);
+        group_.setArg(arg++, rank_);
+        group_.setArg(arg++, contact_count_);
+        group_.setArg(arg++, params_);
+        group_.setArg(arg++, cl_int(passes));
+        group_.setArg(arg++, cl::Local(sizeof(cl_uint) * size));
+        session_.queue.enqueueNDRangeKernel(group_, cl::NullRange, cl::NDRange(size), cl::NDRange(size));
+        session_.queue.finish();
+        if (passes % 2 == 1) current_ = 1 - current_;  // each pass writes the other buffer
+        stats_.phase_seconds["kernels"] += seconds_since(start);
     }
 
     void step() {
@@ -422,8 +491,9 @@ private:
     cl::Buffer scene_index_[2];  // scene index of the disk in each slot; ping-pong with the reorder
     int current_order_ = 0;
     cl::Buffer cell_start_, sorted_index_, contact_count_;
+    cl::Buffer cell_of_, rank_;  // grid = "group": each disk's cell and rank in it
     std::unique_ptr<DeviceGrid> device_grid_;
-    cl::Kernel integrate_, resolve_, gather_;
+    cl::Kernel integrate_, resolve_, gather_, group_;
     cl::NDRange local_ = cl::NullRange;
 };
 

@@ -5,16 +5,18 @@
 //   real            "float" (default) or "double"
 //   device          OpenCL device: index or name substring (see `collide devices`)
 //   extra["grid"]   "host": the grid is built on the host by counting sort and uploaded every
-//                   step (the OpenCL engine's design); "device": built by kernels (kernels/grid.cl).
-//                   Default: the one measured faster for the device type and N
-//                   (docs/opencl-backend.md): device, except host below N = 5e4 on a CPU.
+//                   step (the OpenCL engine's design); "device": built by kernels (kernels/grid.cl);
+//                   "group": one work-group builds it and runs many steps per launch
+//                   (kernels/group_steps.cl). Default: the one measured faster for the device
+//                   type and N (docs/opencl-backend.md): group up to N = 4096, then device,
+//                   except host below N = 5e4 on a CPU.
 //   extra["local_size"]  work-group size of the per-disk kernels (default: the driver's choice)
 //   extra["sort_interval"]  K >= 0: at every K-th grid build (one per step, or per sub-step of
 //                   the integrate-first rule) move the disks into cell order on the device
 //                   (kernels/reorder.cl), so that the neighbours a contact pass reads lie next
 //                   to each other in memory; 0 = never. Default 1. Results do not depend on K:
 //                   cells list their disks by scene index either way, and read_state returns
-//                   the scene's order.
+//                   the scene's order. grid = "group" never reorders.
 // A scene file can set `grid`, `local_size` and `sort_interval` too, in its [backend.opencl]
 // table; options given here take precedence.
 #pragma once

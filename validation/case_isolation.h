@@ -2,6 +2,17 @@
 // crashes (segfault, abort), hangs past the time limit or throws is recorded as failed with
 // its diagnostic while the others go on. The child writes its CaseResult to a file and exits;
 // the parent reads the file back, or writes a result describing how the child died.
+//
+// Cases that IsolationOptions::in_worker selects run in worker processes instead: a worker is
+// forked as a case's process is, but after writing its case's result it waits for the next
+// such case, so that a start-up a process pays once (an OpenCL driver's platform, context and
+// program cache: 0.2-0.3 s per case on PoCL) is paid once per worker. The guarantees stay:
+// each case writes its own log and result file; a worker that crashes, exits or runs past the
+// time limit is killed and its case recorded exactly as a case's own process would be (crashed,
+// timed out), and the next case starts a new worker. What a worker does not give is a fresh
+// address space per case (a case that corrupted memory without crashing could change the next
+// case of the same worker), so only the cases that gain from it should run there. At most
+// `jobs` workers exist; they end when the runner has no case left for them.
 #pragma once
 
 #include <functional>
@@ -18,6 +29,7 @@ struct IsolationOptions {
     double time_limit_seconds = 120;
     std::string result_dir;  // <id>.toml (result) and <id>.log (the child's stdout and stderr)
     std::string runs_dir;    // where children write HDF5 files ("" if none): cleaned as they die
+    std::function<bool(const CaseSpec&)> in_worker;  // cases run by workers (unset: none)
 };
 
 // Removes the temporary files a writer leaves when its process dies without cleaning up

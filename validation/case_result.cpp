@@ -69,20 +69,27 @@ constexpr std::string_view checksum_prefix = "checksum = \"crc32:";
 
 std::string checksum_line(std::string_view body) { return "checksum = \"" + crc32_text(body) + "\"\n"; }
 
+// The record's [spec] table (left_out is not in it: a left-out case's record says why in its
+// status and diagnostic).
+toml::table spec_table(const CaseSpec& c) {
+    toml::table spec{{"id", c.id}, {"scene", c.scene}, {"backend", c.backend},
+                     {"reference", c.reference}, {"seed", std::int64_t(c.seed)},
+                     {"scene_index", std::int64_t(c.scene_index)}};
+    if (c.dt) spec.insert("dt", *c.dt);
+    if (c.substeps) spec.insert("substeps", *c.substeps);
+    if (c.iterations) spec.insert("iterations", *c.iterations);
+    if (!c.parameters.empty()) {
+        toml::array parameters;  // an array keeps the sweep order (a table would sort the paths)
+        for (const auto& [path, value] : c.parameters) parameters.push_back(toml::table{{"path", path}, {"value", value}});
+        spec.insert("parameters", parameters);
+    }
+    return spec;
+}
+
 }  // namespace
 
 void write_case_result(const CaseResult& r, const std::string& path) {
-    toml::table spec{{"id", r.spec.id}, {"scene", r.spec.scene}, {"backend", r.spec.backend},
-                     {"reference", r.spec.reference}, {"seed", std::int64_t(r.spec.seed)},
-                     {"scene_index", std::int64_t(r.spec.scene_index)}};
-    if (r.spec.dt) spec.insert("dt", *r.spec.dt);
-    if (r.spec.substeps) spec.insert("substeps", *r.spec.substeps);
-    if (r.spec.iterations) spec.insert("iterations", *r.spec.iterations);
-    if (!r.spec.parameters.empty()) {
-        toml::array parameters;  // an array keeps the sweep order (a table would sort the paths)
-        for (const auto& [path, value] : r.spec.parameters) parameters.push_back(toml::table{{"path", path}, {"value", value}});
-        spec.insert("parameters", parameters);
-    }
+    const toml::table spec = spec_table(r.spec);
     toml::table series;
     for (const MetricColumn& column : metric_columns) {
         toml::array values;
@@ -235,6 +242,7 @@ CaseSpec read_spec(const RecordReader& in, const toml::table& root) {
             if (!p) in.damaged("an entry of 'spec.parameters' is not a table");
             spec.parameters.emplace_back(in.text(*p, "path", w + "parameters."), in.number(*p, "value", w + "parameters."));
         }
+    if (t.contains("left_out")) spec.left_out = in.text(t, "left_out", w);
     return spec;
 }
 
@@ -252,6 +260,23 @@ MetricSeries read_series(const RecordReader& in, const toml::table& root) {
 }
 
 }  // namespace
+
+std::string case_spec_text(const CaseSpec& spec) {
+    toml::table table = spec_table(spec);
+    if (!spec.left_out.empty()) table.insert("left_out", spec.left_out);
+    std::ostringstream text;
+    text << toml::table{{"spec", table}};
+    return text.str();
+}
+
+CaseSpec case_spec_from_text(const std::string& text) {
+    const std::string source = "case request";
+    try {
+        return read_spec(RecordReader(source), toml::parse(text, source));
+    } catch (const toml::parse_error& e) {
+        throw std::runtime_error(source + ": unreadable: " + std::string(e.description()));
+    }
+}
 
 CaseResult read_case_result(const std::string& path) {
     const std::string body = verified_record_text(path);

@@ -63,6 +63,12 @@ void write_case_result(const CaseResult& result, const std::string& path);  // a
 // that does not match, a field the writer always writes missing or of another type.
 CaseResult read_case_result(const std::string& path);
 
+// A case's spec as TOML text and back, left_out included: what the runner hands a worker
+// process that runs cases one after another (case_isolation.h). A damaged text throws
+// std::runtime_error.
+std::string case_spec_text(const CaseSpec& spec);
+CaseSpec case_spec_from_text(const std::string& text);
+
 // Why the files of a kept case cannot be trusted (its HDF5 file missing, or failing a check of
 // core/run_reader.h in any dataset or frame, or with other counts of outputs or disks than
 // the case record), or "" when they can. `output_dir` holds runs/.

@@ -187,6 +187,10 @@ void check_output_places(const std::string& dir, const std::vector<CaseSpec>& sp
 
 int default_jobs() { return std::max(1u, std::thread::hardware_concurrency()); }
 
+bool runs_in_worker(const CaseSpec& spec) {
+    return spec.left_out.empty() && spec.backend.substr(0, spec.backend.find('[')) == "opencl";
+}
+
 SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& available, const RunnerOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     const std::vector<BackendInfo> backends = select_backends(suite, available);
@@ -221,7 +225,7 @@ SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& avail
     std::map<std::string, const BackendInfo*> by_name;
     for (const BackendInfo& b : backends) by_name[b.name] = &b;
     outcome.jobs = options.jobs > 0 ? options.jobs : default_jobs();
-    IsolationOptions isolation{outcome.jobs, suite.time_limit_seconds, result_dir, runs_dir};
+    IsolationOptions isolation{outcome.jobs, suite.time_limit_seconds, result_dir, runs_dir, runs_in_worker};
     auto run_case = [&](const CaseSpec& spec) {
         CaseContext context{&suite, &case_scenes.scene(spec), by_name.at(spec.backend), options.output_dir};
         return execute_case(spec, context);

@@ -9,6 +9,7 @@
 #include "bench/bench_suite.h"
 #include "commands.h"
 #include "core/output_file.h"
+#include "apps/resource_path.h"
 
 namespace collide::cli {
 
@@ -54,6 +55,7 @@ void add_bench_command(CLI::App& app) {
         for (const auto& suite : bench::all_bench_suites())
             if (chosen(suite))
                 for (const char* ext : {".csv", ".json"}) check_output_path(args->out + "-" + suite.name + ext);
+        args->bench.scene_dir = resource_path("data/scenes");
         bool ran = false;
         for (const auto& suite : bench::all_bench_suites()) {
             if (!chosen(suite)) continue;

@@ -25,29 +25,33 @@ static inline int clamp_cell(Real scaled, int cells)
 static inline int cell_x_of(Real x, const StepParams* p) { return clamp_cell((x - p->xmin) * p->inv_cell_w, p->cells_x); }
 static inline int cell_y_of(Real y, const StepParams* p) { return clamp_cell((y - p->ymin) * p->inv_cell_h, p->cells_y); }
 
+/* Disk i's cell, and its rank among the disks counted into that cell so far. */
+static inline void count_disk(int i, __global const Particle* particles, const StepParams* p,
+                              __global uint* cell_of, __global uint* rank, __global volatile uint* counts)
+{
+    const uint c = (uint)(cell_y_of(particles[i].y, p) * p->cells_x + cell_x_of(particles[i].x, p));
+    cell_of[i] = c;
+    rank[i] = atomic_inc(&counts[c]);
+}
+
 __kernel void grid_count(__global const Particle* particles, const StepParams params,
                          __global uint* cell_of, __global uint* rank, __global volatile uint* counts)
 {
     const int i = get_global_id(0);
     if (i >= params.n) return;
-    const uint c = (uint)(cell_y_of(particles[i].y, &params) * params.cells_x + cell_x_of(particles[i].x, &params));
-    cell_of[i] = c;
-    rank[i] = atomic_inc(&counts[c]);
+    count_disk(i, particles, &params, cell_of, rank, counts);
 }
 
-/* Exclusive scan of one block of get_local_size(0) * chunk values. Each work-item owns `chunk`
- * consecutive values: it sums them serially, the work-group scans the per-item sums in local
- * memory (Hillis and Steele's doubling scan), and each item then rewrites its values as
- * running sums from its offset. The serial part keeps the work linear in the values; the
- * doubling scan (log2 of the group size steps) runs on the group's sums only. Integer sums,
- * so the order of additions does not matter. block_sums[g] receives the block's total for
- * the next level of the scan. */
-__kernel void scan_blocks(__global uint* values, const uint count, const uint chunk, __global uint* block_sums,
-                          __local uint* scratch)
+/* Exclusive scan, in place, of the values [begin, end) each work-item of the group owns (the
+ * items' ranges consecutive, in item order). Each item sums its values serially, the
+ * work-group scans the per-item sums in local memory (Hillis and Steele's doubling scan), and
+ * each item then rewrites its values as running sums from its offset. The serial part keeps
+ * the work linear in the values; the doubling scan (log2 of the group size steps) runs on the
+ * group's sums only. Integer sums, so the order of additions does not matter. Returns the
+ * group's total. Every item of the group must call it (it holds barriers). */
+static inline uint scan_group_ranges(__global uint* values, uint begin, uint end, __local uint* scratch)
 {
     const uint lid = get_local_id(0), size = get_local_size(0);
-    const uint begin = (uint)get_global_id(0) * chunk;
-    const uint end = min(begin + chunk, count);
     uint own = 0;
     for (uint k = begin; k < end; ++k) own += values[k];
     scratch[lid] = own;
@@ -64,7 +68,20 @@ __kernel void scan_blocks(__global uint* values, const uint count, const uint ch
         values[k] = running;
         running += value;
     }
-    if (lid == size - 1) block_sums[get_group_id(0)] = scratch[lid];
+    const uint total = scratch[size - 1];
+    barrier(CLK_LOCAL_MEM_FENCE);  /* scratch may be reused at once */
+    return total;
+}
+
+/* Exclusive scan of one block of get_local_size(0) * chunk values, `chunk` consecutive
+ * values per work-item; block_sums[g] receives the block's total for the next level of the
+ * scan. */
+__kernel void scan_blocks(__global uint* values, const uint count, const uint chunk, __global uint* block_sums,
+                          __local uint* scratch)
+{
+    const uint begin = (uint)get_global_id(0) * chunk;
+    const uint total = scan_group_ranges(values, begin, min(begin + chunk, count), scratch);
+    if (get_local_id(0) == 0) block_sums[get_group_id(0)] = total;
 }
 
 /* values[k] += the scanned total of all blocks before k's block. */

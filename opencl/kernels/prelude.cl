@@ -1,6 +1,6 @@
 /* First piece of every `opencl` program. The host concatenates, in this order:
  *   prelude.cl, physics/contact_law.cl.h, physics/wall_law.cl.h, opencl/particle_layout.cl.h,
- *   layout_probe.cl, grid.cl, reorder.cl, step.cl
+ *   layout_probe.cl, grid.cl, reorder.cl, step.cl, group_steps.cl
  * (the headers are the very files the C++ backends compile, embedded at build time), and
  * builds the result with -D flags for the scene's features:
  *   COLLIDE_REAL_DOUBLE      Real = double (needs cl_khr_fp64), else Real = float

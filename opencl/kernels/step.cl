@@ -146,15 +146,45 @@ static inline ContactDelta sum_contacts(int i, const Particle* pi, __global cons
 }
 
 /* Integrate-first only: velocity, then position with the new velocity (semi-implicit Euler). */
+static inline void integrate_disk(int i, __global Particle* particles, const StepParams* p)
+{
+    Particle q = particles[i];
+    if (IS_STONE(q)) return;  /* kinematic: never integrated */
+    integrate_velocity(&q, p);
+    integrate_position(&q, p);
+    particles[i] = q;
+}
+
+/* Disk i's contact pass from the snapshot `in` into `out`, and the rest of its step. */
+static inline void resolve_disk(int i, __global const Particle* in, __global Particle* out,
+                                __global const uint* cell_start, __global const uint* sorted_index,
+                                __global uint* contact_count, const StepParams* p)
+{
+    Particle q = in[i];
+    if (IS_STONE(q)) {  /* a stone's share of every contact is zero, and it never moves */
+        out[i] = q;
+        return;
+    }
+    uint contacts = 0;
+    const ContactDelta d = sum_contacts(i, &q, in, cell_start, sorted_index, p, &contacts);
+    q.x += d.dx;
+    q.y += d.dy;
+    q.vx += d.dvx;
+    q.vy += d.dvy;
+#ifndef COLLIDE_INTEGRATE_FIRST
+    /* Explicit Euler with the post-contact velocity, then this step's forces. */
+    integrate_position(&q, p);
+    integrate_velocity(&q, p);
+#endif
+    apply_walls(&q, p);
+    out[i] = q;
+    contact_count[i] += contacts;
+}
+
 __kernel void integrate_motion(__global Particle* particles, const StepParams params)
 {
     const int i = get_global_id(0);
-    if (i >= params.n) return;
-    Particle q = particles[i];
-    if (IS_STONE(q)) return;  /* kinematic: never integrated */
-    integrate_velocity(&q, &params);
-    integrate_position(&q, &params);
-    particles[i] = q;
+    if (i < params.n) integrate_disk(i, particles, &params);
 }
 
 __kernel void resolve_collisions(__global const Particle* in, __global Particle* out,
@@ -162,24 +192,5 @@ __kernel void resolve_collisions(__global const Particle* in, __global Particle*
                                  __global uint* contact_count, const StepParams params)
 {
     const int i = get_global_id(0);
-    if (i >= params.n) return;
-    Particle q = in[i];
-    if (IS_STONE(q)) {  /* a stone's share of every contact is zero, and it never moves */
-        out[i] = q;
-        return;
-    }
-    uint contacts = 0;
-    const ContactDelta d = sum_contacts(i, &q, in, cell_start, sorted_index, &params, &contacts);
-    q.x += d.dx;
-    q.y += d.dy;
-    q.vx += d.dvx;
-    q.vy += d.dvy;
-#ifndef COLLIDE_INTEGRATE_FIRST
-    /* Explicit Euler with the post-contact velocity, then this step's forces. */
-    integrate_position(&q, &params);
-    integrate_velocity(&q, &params);
-#endif
-    apply_walls(&q, &params);
-    out[i] = q;
-    contact_count[i] += contacts;
+    if (i < params.n) resolve_disk(i, in, out, cell_start, sorted_index, contact_count, &params);
 }

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -124,6 +125,33 @@ TEST(BenchCommand, StepsSetsTheTimedStepsAndTheJsonHoldsTheRows) {
     EXPECT_EQ(json.at("rows")[0].at("steps"), 3);
     EXPECT_EQ(json.at("rows")[0].at("backend"), "step");
     EXPECT_EQ(json.at("rows")[0].at("n"), 500);
+}
+
+// The opencl suite's launch-cost rows: both scenes of the library, both backends, the ratio
+// of the two costs and the targets (3 for two disks, 1.5 for periodic_gas).
+TEST(BenchCommand, OpenclSuitePrintsTheCostPerStepAgainstCpuWithItsTarget) {
+    ScratchDirectory dir;
+    const auto result = run_program(COLLIDE_EXECUTABLE, {"bench", "opencl", "--quick", "--sizes", "500", "--backend",
+                                                         "opencl", "--backend", "cpu", "--steps", "3", "-o",
+                                                         dir.file("b")}, dir);
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    std::map<std::string, CsvRow> launch_cost;
+    for (const CsvRow& row : read_csv(dir.file("b-opencl.csv")))
+        if (row.at("part") == "launch cost") launch_cost[row.at("scene")] = row;
+    ASSERT_EQ(launch_cost.size(), 2u) << result.out;
+    const std::map<std::string, std::pair<double, double>> expected = {{"head_on_equal", {2, 3.0}},
+                                                                       {"periodic_gas", {1000, 1.5}}};
+    for (const auto& [scene, disks_and_target] : expected) {
+        SCOPED_TRACE(scene);
+        const CsvRow& row = launch_cost.at(scene);
+        EXPECT_EQ(number(row, "N"), disks_and_target.first);
+        EXPECT_EQ(number(row, "target_ratio"), disks_and_target.second);
+        // (A difference of two timings: on a loaded machine not even its sign is guaranteed.)
+        EXPECT_TRUE(std::isfinite(number(row, "opencl_us_per_step")));
+        EXPECT_TRUE(std::isfinite(number(row, "cpu_us_per_step")));
+        EXPECT_NEAR(number(row, "ratio"), number(row, "opencl_us_per_step") / number(row, "cpu_us_per_step"),
+                    1e-4 * number(row, "ratio"));
+    }
 }
 
 TEST(BenchCommand, UnknownSuiteFailsNamingItAndTheKnownOnesBeforeRunningAny) {

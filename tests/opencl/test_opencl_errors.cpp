@@ -44,7 +44,7 @@ TEST(OpenclErrors, DeviceIndexOutOfRange) {
 TEST(OpenclErrors, UnknownGridMode) {
     BackendOptions options;
     options.extra["grid"] = "gpu";
-    EXPECT_NE(load_error(options).find("expected \"host\" or \"device\""), std::string::npos);
+    EXPECT_NE(load_error(options).find("expected \"host\", \"device\" or \"group\""), std::string::npos);
 }
 
 TEST(OpenclErrors, InvalidWorkGroupSize) {

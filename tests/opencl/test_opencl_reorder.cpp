@@ -103,8 +103,15 @@ TEST(OpenclReorder, SortIntervalZeroNeverReorders) {
     }
 }
 
+// (grid = "group", the default for small scenes, never reorders: test_opencl_group.cpp.)
+BackendOptions host_grid() {
+    BackendOptions options;
+    options.extra["grid"] = "host";
+    return options;
+}
+
 TEST(OpenclReorder, DefaultReordersAtEveryGridBuild) {
-    auto solver = backend("opencl").create({});
+    auto solver = backend("opencl").create(host_grid());
     const OpenclCase c = random_listing_gas();
     solver->load(c.scene, c.initial);
     EXPECT_EQ(solver->provenance().at("sort_interval"), "1");
@@ -113,10 +120,10 @@ TEST(OpenclReorder, DefaultReordersAtEveryGridBuild) {
 TEST(OpenclReorder, SceneTableSetsSortIntervalAndOptionsWin) {
     OpenclCase c = random_listing_gas();
     c.scene.backend_options["opencl"]["sort_interval"] = "0";
-    auto from_scene = backend("opencl").create({});
+    auto from_scene = backend("opencl").create(host_grid());
     from_scene->load(c.scene, c.initial);
     EXPECT_EQ(from_scene->provenance().at("sort_interval"), "0");
-    BackendOptions explicit_option;
+    BackendOptions explicit_option = host_grid();
     explicit_option.extra["sort_interval"] = "4";
     auto from_options = backend("opencl").create(explicit_option);
     from_options->load(c.scene, c.initial);
