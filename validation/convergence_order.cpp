@@ -12,12 +12,6 @@ double local_order(const ErrorPoint& coarse, const ErrorPoint& fine) {
     return std::log(coarse.error / fine.error) / std::log(coarse.h / fine.h);
 }
 
-// The standard error of a local order from the two points' error bars (0 without them).
-double local_order_error(const ErrorPoint& coarse, const ErrorPoint& fine) {
-    return std::hypot(coarse.standard_error / coarse.error, fine.standard_error / fine.error) /
-           std::fabs(std::log(coarse.h / fine.h));
-}
-
 // Whether the error stopped falling from `coarse` to the finer `fine` (see the header).
 bool flat(const ErrorPoint& coarse, const ErrorPoint& fine) {
     if (coarse.h == fine.h) return true;
@@ -40,11 +34,13 @@ std::size_t range_end(const std::vector<ErrorPoint>& p) {
     return n;
 }
 
+// A step inside the range whose local order is below flat_local_order: the error stalled there
+// and fell again later (noise, or a floor the coarser points still hide), so the fitted slope
+// mixes the method with something else.
 bool bends(const std::vector<ErrorPoint>& p, std::size_t end) {
-    if (end < 3) return false;
-    const double first = local_order(p[0], p[1]), last = local_order(p[end - 2], p[end - 1]);
-    const double se = std::hypot(local_order_error(p[0], p[1]), local_order_error(p[end - 2], p[end - 1]));
-    return last < 0.5 * first && first - last > floor_standard_errors * se;
+    for (std::size_t i = 1; i < end; ++i)
+        if (local_order(p[i - 1], p[i]) < flat_local_order) return true;
+    return false;
 }
 
 }  // namespace

@@ -11,9 +11,10 @@
 // log h on the range, with its standard error propagated from the points' error bars
 // (statistics.h, log_log_fit).
 //
-// A floor can also bend the range without flattening it (a float rule's rounding overtaking its
-// discretisation error gradually): `bending` says the finest local slope of the range lies more
-// than two standard errors below the coarsest, so the order there mixes two regimes.
+// A floor can also hide inside the range: a step whose local order is below flat_local_order,
+// followed by a fall that keeps it in the range (a float rule's rounding stalling the error at
+// one step, phase noise at another). `bending` says so: the order then mixes the method with
+// what stalled it, and the report flags it as floor-contaminated.
 #pragma once
 
 #include <cstddef>

@@ -185,7 +185,7 @@ def work_precision(summary, scene, digest, aliases):
     if not lines:
         return None
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
-    fits = {(f["scene"], f["backend"]): f for f in digest.all_orders(summary)}
+    fits = {(f["scene"], f["backend"]): f for f in digest.orders(summary)}
     statistical = not lines[0]["error_kind"].startswith("trajectory")
     stats = digest.statistical_points(summary, scene, "pressure") if statistical else {}
     for line in lines:

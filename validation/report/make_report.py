@@ -31,9 +31,6 @@ import stability  # noqa: E402
 from collide_program import run_collide  # noqa: E402
 from digest import ReportInputError, anchor  # noqa: E402
 
-CHECK_ORDER = ["run", "momentum_drift", "energy_drift", "max_overlap", "mean_overlap", "overlapping_pairs",
-               "wall_penetration", "trajectory_error", "pressure", "collision_rate", "speed_distribution",
-               "stability"]
 
 
 _CASES = {}
@@ -96,12 +93,12 @@ def left_out_table(summary):
     reasons = OrderedDict()
     for c in summary["checks"]:
         if c["status"] == "left_out":
-            reasons.setdefault((c["check"], c["detail"]), []).append(c["subject"])
+            reasons.setdefault((c["check"], c["detail"]), []).append((c["scene"], c["subject"]))
     if not reasons:
         return "<p>No check was left out.</p>"
     out = ["<table><tr><th>check</th><th>reason</th><th>cases</th></tr>"]
     for (check, reason), subjects in reasons.items():
-        scenes = sorted({s.split("__")[0] for s in subjects})
+        scenes = sorted({s for s, _ in subjects})
         out.append(f"<tr><td>{html.escape(check)}</td><td>{html.escape(reason)}</td>"
                    f"<td>{len(subjects)} ({html.escape(', '.join(scenes))})</td></tr>")
     out.append("</table>")
@@ -144,9 +141,11 @@ def provenance_table(summary):
 class Analysis:
     def __init__(self, summary):
         self.summary = summary
-        self.fits = digest.all_orders(summary)
+        self.fits = digest.orders(summary)
         self.fit = {(f["scene"], f["backend"]): f for f in self.fits}
-        self.rows = digest.digest(summary, self.fits)
+        self.rows = digest.digest(summary, exclude_quantised=False)
+        for r in self.rows:
+            r["cases"] += r["cases_cannot_run"]
         self.identical = digest.identical_backends(summary)
         self.aliases = {b: a for a, b, _ in self.identical}
         self.scenes = digest.scenes_in_order(summary)
@@ -190,7 +189,8 @@ def margin_text(worst, link=True):
 def floor_text(fits, limit=1):
     if not fits:
         return ""
-    parts = [f"{f['scene']}: from dt ≈ {f['floor']['dt']:g} at ≈ {f['floor']['error']:.2g}" for f in fits[:limit]]
+    parts = [f"{f['scene']}: from h ≈ {f['floor']['h']:g} at ≈ {f['floor']['error']:.2g}" if f["floor"] else
+             f"{f['scene']}: floor-contaminated" for f in fits[:limit]]
     if len(fits) > limit:
         parts.append(f"+{len(fits) - limit} more")
     return "; ".join(parts)
@@ -326,8 +326,7 @@ def check_tables(a):
     """Case tables collapsed by scene and backend, each sorted by worst margin (failures first)."""
     by = OrderedDict()
     for c in a.summary["checks"]:
-        b = c.get("backend") or digest.subject_backend(c["subject"], {x: 1 for x in a.backends})
-        scene = c.get("scene") or c["subject"].split("__")[0]
+        b, scene = c["backend"], c["scene"]
         by.setdefault(scene, OrderedDict()).setdefault(b, OrderedDict()).setdefault(c["subject"], {})[c["check"]] = c
     out = []
     seen_backends = set()
@@ -345,7 +344,7 @@ def check_tables(a):
                 fails = sum(1 for c in item[1].values() if c["status"] == "fail")
                 return (-fails, -max([m for m in ms if m is not None], default=-1))
             rows = sorted(subjects.items(), key=worst)
-            present = [n for n in CHECK_ORDER if any(n in cs for cs in subjects.values())]
+            present = [n for n in digest.check_order(a.summary) if any(n in cs for cs in subjects.values())]
             fails = sum(1 for cs in subjects.values() for c in cs.values() if c["status"] == "fail")
             top = max((m for cs in subjects.values() for c in cs.values() if (m := digest.margin(c)) is not None),
                       default=None)
@@ -374,7 +373,7 @@ def orders_table(a):
                 f"'{html.escape(s['reference'])}' and a scene compared by trajectory or statistics.</p>")
     out = ["<table><tr><th>scene</th><th>backend</th><th>error measure</th>"
            "<th>points (dt: error ± SE; s per time unit)</th><th>order on the asymptotic range</th>"
-           "<th>floor</th><th>straight fit through every point</th></tr>"]
+           "<th>floor</th></tr>"]
     for line in s["work_precision"]:
         fit = a.fit.get((line["scene"], line["backend"]))
         b = line["backend"]
@@ -388,10 +387,9 @@ def orders_table(a):
             pts = "; ".join(f"{p['dt']:g}: {fmt(p['error'])} ± {fmt(p['se'])} = {p['sigmas']:.1f} SE"
                             f"{'' if p['resolved'] else ' (not resolved)'}; {fmt(p['seconds'])} s" for p in stats)
         same = f" (= {html.escape(a.aliases[b])})" if b in a.aliases else ""
-        floor = html.escape(digest.describe_floor(fit["floor"])) if fit["floor"] else ""
+        floor = html.escape(digest.describe_floor(fit))
         out.append(f"<tr><td>{html.escape(line['scene'])}</td><td>{html.escape(b)}{same}</td><td>{measure}</td>"
-                   f"<td>{pts}</td><td>{html.escape(digest.describe_order(fit))}</td><td>{floor}</td>"
-                   f"<td>{fmt(line.get('order')) if line.get('order') is not None else ''}</td></tr>")
+                   f"<td>{pts}</td><td>{html.escape(digest.describe_order(fit))}</td><td>{floor}</td></tr>")
     out.append("</table>")
     return "\n".join(out)
 
@@ -436,7 +434,7 @@ def jump_notes(scene, chosen, a, directory):
                      f"interval; the median interval changes it by {100 * j['median']:.2g} %.{detail}</li>")
     if not notes:
         return jumps, ""
-    box2d = any(digest.base_backend(b) == "box2d" for b in jumps)
+    box2d = any(digest.facts(a.summary, b).get("base") == "box2d" for b in jumps)
     return jumps, ("<p>Energy jumps in the cases shown:</p><ul>" + "".join(notes) + "</ul><p>Why the stepped rule "
                    "changes the energy in one step where several contacts meet (three disks in contact at once, a disk "
                    "touching a wall and a disk; `collide explain` reruns a case and names them): "
@@ -557,10 +555,9 @@ The trajectory error here is the worst phase replicate; the figures show the mea
 <h3 id="left-out">Left-out checks and why</h3>{left_out_table(summary)}
 <h2 id="orders">3. Orders, floors and resolution</h2>
 <p>The observed order is the least-squares slope of log error against log dt on the asymptotic range: sorted from
-coarse to fine, the range ends where the error stops falling (every later local slope below {digest.FLAT_SLOPE}); the
-points below it are the floor, named in the table (for a float backend, rounding accumulates there). For Z only
-resolved points (difference ≥ {digest.RESOLVED_SE:g} SE) enter the fit. The last column is the straight fit through
-every point that the summary records, for comparison.</p>
+coarse to fine, the range ends where the error stops falling (every later local slope below 0.3); the
+points below it are the floor, named in the table (for a float backend, rounding accumulates there). Both are computed
+by <code>collide validate</code> (summary.json, docs/validation.md).</p>
 {orders_table(a)}
 <h2 id="scenes">4. Scenes</h2>{scene_sections(summary, directory, a)}
 <h2 id="timings">5. Timings</h2>
@@ -637,7 +634,7 @@ def write_markdown(summary, path, a=None, full_name="summary-full.md"):
         if f["backend"] in a.aliases:
             continue
         lines.append(f"| {md(f['scene'])} | {md(f['backend'])} | {md(digest.describe_order(f))} | "
-                     f"{md(digest.describe_floor(f['floor'])) if f['floor'] else ''} |")
+                     f"{md(digest.describe_floor(f))} |")
     lines += ["", f"Every check: [{full_name}]({full_name}); figures: index.html."]
     if len(lines) > 80:  # keep the digest a screen long whatever the suite
         lines = lines[:78] + ["", f"(cut at 80 lines; everything: [{full_name}]({full_name}))"]
@@ -660,13 +657,11 @@ def write_markdown_full(summary, path, a=None):
         lines.append(f"| `{c['subject']}` | {c['check']} | {c['status']} | {'' if lo else fmt(c.get('value'))} "
                      f"| {'' if lo else c.get('comparison', '') + ' ' + fmt(c.get('tolerance'))} | {fmt(digest.margin(c))} "
                      f"| {md(note + ('; ' + extra if extra else ''))} |")
-    lines += ["", "## Observed convergence order", "", "| scene | backend | order (asymptotic range) | floor | fit through every point |",
-              "|---|---|---|---|---|"]
+    lines += ["", "## Observed convergence order", "", "| scene | backend | order (asymptotic range) | floor |",
+              "|---|---|---|---|"]
     for f in a.fits:
-        line = next(l for l in summary["work_precision"] if l["scene"] == f["scene"] and l["backend"] == f["backend"])
         lines.append(f"| {md(f['scene'])} | {md(f['backend'])} | {md(digest.describe_order(f))} | "
-                     f"{md(digest.describe_floor(f['floor'])) if f['floor'] else ''} | "
-                     f"{fmt(line.get('order')) if line.get('order') is not None else md(line.get('order_note', ''))} |")
+                     f"{md(digest.describe_floor(f))} |")
     safe_output.write_text(path, "\n".join(lines) + "\n")
 
 
