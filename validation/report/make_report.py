@@ -158,8 +158,9 @@ def margin_text(row, link=True):
     m, subject, check = worst
     text = "∞" if m == math.inf else f"{m:.2f}" if 0.01 <= m < 1e4 else fmt(m)
     ties = f", one of {row['ties']} checks at this value" if row["ties"] > 1 else ""
-    where = f"{subject}: {check.replace('_', ' ')}{ties}"
-    return f"{text} <span class='where'>({html.escape(where)})</span>" if link else f"{text} ({where})"
+    where = f"{check.replace('_', ' ')}{ties}" if link else f"{subject}: {check.replace('_', ' ')}{ties}"
+    return (f"{text} <span class='where' title='{html.escape(subject, quote=True)}'>({html.escape(where)})</span>"
+            if link else f"{text} ({where})")
 
 
 def floor_text(fits, limit=1):
@@ -187,22 +188,28 @@ def digest_rows(a, link=True):
     return out
 
 
-DIGEST = jinja2.Template("""<table id="digest" class="digest"><tr><th>backend</th><th>cases run (cannot run)</th>
-<th>(scene, check): pass</th><th>fail</th><th>n/a</th><th>cannot run</th>
-<th>worst margin (measured ÷ tolerance; case: check)</th><th>order: trajectory</th><th>order: Z</th><th>error floor</th></tr>
-{% for r in rows %}<tr><td><a href="#{{ r.anchor }}">{{ r.name }}</a></td><td>{{ r.cases }}{% if r.cases_cannot_run %} ({{ r.cases_cannot_run }}){% endif %}</td>
-<td class="{{ 'fail' if r.c_fail else 'pass' }}">{{ r.c_pass }}</td><td class="{{ 'fail' if r.c_fail else 'pass' }}">{{ r.c_fail }}</td>
-<td>{{ r.c_left_out }}</td><td>{{ r.c_cannot_run }}</td><td>{{ r.worst|safe }}</td><td>{{ r.order_trajectory }}</td>
-<td>{{ r.order_z }}</td><td>{{ r.floor }}</td></tr>
-{% endfor %}<tr class="total"><td colspan="10">Counts are (scene, check) combinations: one per check of a scene whatever its
-sweep points and seeds (checks behind them: {{ checks }}). Worst margin leaves out quantised counts (overlapping pairs of
-a few disks). Orders: fitted by <code>collide validate</code> on the asymptotic range (<a href="#orders">§3</a>); * marks a
-floor-contaminated order.</td></tr></table>""", autoescape=True)
+DIGEST = jinja2.Template("""<table id="digest" class="digest"><tr><th>backend</th><th>verdict</th><th>trusted for</th>
+<th>not for</th><th>cost ÷ exact solver's</th><th>cases run (cannot)</th><th>(scene, check) pass / fail / n.a. / cannot run</th>
+<th>worst margin</th><th>order: traj.</th><th>order: Z</th></tr>
+{% for r in rows %}<tr id="verdict-{{ r.anchor }}"><td><a href="#{{ r.anchor }}">{{ r.name }}</a></td>
+<td class="{{ 'fail' if r.failed else 'pass' }}">{{ r.verdict }}</td><td>{{ r.trusted }}</td><td>{{ r.not_for }}</td><td>{{ r.cost }}</td>
+<td>{{ r.cases }}{% if r.cases_cannot_run %} ({{ r.cases_cannot_run }}){% endif %}</td>
+<td class="{{ 'fail' if r.c_fail else 'pass' }}">{{ r.c_pass }} / {{ r.c_fail }} / {{ r.c_left_out }} / {{ r.c_cannot_run }}</td>
+<td>{{ r.worst|safe }}</td><td>{{ r.order_trajectory }}</td><td>{{ r.order_z }}</td></tr>
+{% endfor %}<tr class="total"><td colspan="10">Cost: wall seconds per simulated time unit at the backend's cheapest sweep
+point, over the exact solver's, per scene (<a href="#timings">§5</a>). Counts are (scene, check) combinations, one per check
+of a scene whatever its sweep points and seeds (the checks behind them: {{ checks }}). Worst margin: measured ÷ tolerance,
+quantised counts left out (<a href="#checks">§2</a>). Orders: fitted by <code>collide validate</code> on the asymptotic
+range; * marks a floor-contaminated one; floors in <a href="#orders">§3</a>.</td></tr></table>""", autoescape=True)
 
 
 def digest_table(a):
     c = a.summary["counts"]
-    return DIGEST.render(rows=digest_rows(a), checks=f"{c['pass']} passed, {c['fail']} failed, {c['left_out']} left out")
+    verdict_of = {v["backend"]: v for v in a.verdicts}
+    empty = {"verdict": "", "trusted": "", "not_for": "", "cost": "", "failed": False}
+    rows = [dict(r, **{k: v for k, v in verdict_of.get(r["backend"], empty).items() if k in empty})
+            for r in digest_rows(a)]
+    return DIGEST.render(rows=rows, checks=f"{c['pass']} passed, {c['fail']} failed, {c['left_out']} left out")
 
 
 def identical_line(a):
