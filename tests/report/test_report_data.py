@@ -307,7 +307,7 @@ class WhatAReaderWasToldWrongly(unittest.TestCase):
     def test_cost_and_verdict_per_backend_on_the_first_screen(self):
         first_screen = self.html[:self.html.index('id="headline"')]
         for b in digest.backends_in_order(self.summary):
-            self.assertIn(f">{b}</a></td>", first_screen.replace("&#34;", '"'))
+            self.assertIn(f'<a href="#{digest.anchor("backend", b)}">{b}', first_screen)
         self.assertIn("cost ÷ exact solver", first_screen)
         self.assertIn("cheapest on", first_screen)
         a = make_report.Analysis(self.summary)
@@ -361,8 +361,8 @@ class WhatAReaderWasToldWrongly(unittest.TestCase):
         row = next(r for r in digest.digest(summary) if r["backend"] == "box2d[shipped]")
         v = verdicts.verdict(summary, row, {})
         self.assertIn("energy drift up to 90.9 %", v["verdict"])
-        self.assertIn("differs from the exact solver's by up to 33 standard errors (that check is left out)",
-                      v["verdict"])
+        self.assertIn("gas pressure off by up to 33 SE (that check is left out)", v["verdict"])
+        self.assertIn("energy drift ≤ 0.95, 19× the other backends'", v["verdict"])
 
     def test_quantised_checks_are_not_the_worst_margin(self):
         checks = [check("pair", "step", "overlapping_pairs", value=0.5, tolerance=0.5, quantised=True),
