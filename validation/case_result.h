@@ -71,7 +71,8 @@ CaseSpec case_spec_from_text(const std::string& text);
 
 // Why the files of a kept case cannot be trusted (its HDF5 file missing, or failing a check of
 // core/run_reader.h in any dataset or frame, or with other counts of outputs or disks than
-// the case record), or "" when they can. `output_dir` holds runs/.
-std::string case_files_problem(const CaseResult& result, const std::string& output_dir);
+// the case record), or "" when they can. `output_dir` holds runs/. With `frames` false the
+// stored frames are left unread (`collide report` reads none; `collide render` checks those it draws).
+std::string case_files_problem(const CaseResult& result, const std::string& output_dir, bool frames = true);
 
 }  // namespace collide::validation

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <limits>
 #include <sstream>
 
@@ -116,6 +117,38 @@ void z_check(CheckResult& c, const Group& g, const Group& ref, double (*value)(c
     c.detail = c.status == CheckStatus::fail ? c.detail + " (" + s.str() + ")" : s.str();
 }
 
+// The numbers behind a z_check, for the summary: the report draws and states them (never by
+// reading the check's prose). Empty when the check has no error bar (fewer than 2 replicates).
+std::optional<StatisticalDifference> statistical_difference(const Group& g, const Group& ref,
+                                                            double (*value)(const CaseResult&),
+                                                            const CheckResult& check, double z_max) {
+    const auto a = mean_and_error(replicate_values(g, value));
+    const auto b = mean_and_error(replicate_values(ref, value));
+    if (a.count < 2 || b.count < 2 || !std::isfinite(a.mean) || !std::isfinite(b.mean) || b.mean == 0)
+        return std::nullopt;
+    StatisticalDifference d;
+    d.mean = a.mean;
+    d.standard_error = a.standard_error;
+    d.reference = b.mean;
+    d.reference_standard_error = b.standard_error;
+    d.replicates = a.count;
+    d.reference_replicates = b.count;
+    const double combined = std::hypot(a.standard_error, b.standard_error);
+    d.relative = (a.mean - b.mean) / b.mean;
+    d.relative_standard_error = combined / std::fabs(b.mean);
+    d.sigmas = z_score(a, b);
+    d.resolved = d.sigmas >= resolved_standard_errors;
+    d.upper_limit_95 = std::fabs(d.relative) + 1.96 * d.relative_standard_error;  // one-sided bound of |relative|
+    double judged = combined;
+    if (!std::isnan(check.predicted)) {
+        d.predicted = check.predicted;
+        d.predicted_uncertainty = check.predicted_uncertainty;
+        judged = std::hypot(combined, check.predicted_uncertainty);
+    }
+    d.detectable = z_max * judged / std::fabs(b.mean);
+    return d;
+}
+
 }  // namespace
 
 Comparisons compare_with_reference(const Suite& suite, const std::vector<CaseResult>& results,
@@ -221,6 +254,10 @@ Comparisons compare_with_reference(const Suite& suite, const std::vector<CaseRes
             CheckResult rate = make_check(g, "collision_rate");
             z_check(rate, g, *ref, collision_rate, tol.statistics_z, "collisions per disk per time", rate_model);
             out.checks.push_back(rate);
+            if (pressure.status != CheckStatus::left_out)
+                point.pressure = statistical_difference(g, *ref, mean_compressibility, pressure, tol.statistics_z);
+            if (rate.status != CheckStatus::left_out)
+                point.collision_rate = statistical_difference(g, *ref, collision_rate, rate, tol.statistics_z);
             CheckResult speed = make_check(g, "speed_distribution");
             const auto ks = ks_two_sample(pooled_speeds(g), pooled_speeds(*ref));
             speed.value = ks.p_value;
@@ -231,45 +268,42 @@ Comparisons compare_with_reference(const Suite& suite, const std::vector<CaseRes
             s << "KS statistic D = " << ks.statistic << ", p = " << ks.p_value;
             speed.detail = speed.status == CheckStatus::pass ? s.str() : s.str() + " below " + std::to_string(tol.speed_ks_p_value);
             out.checks.push_back(speed);
-            const double z_ref = mean_and_error(replicate_values(*ref, mean_compressibility)).mean;
-            for (const CaseResult* r : g.cases)
-                if (r->finished() && std::isfinite(z_ref) && z_ref != 0) {
-                    seconds.push_back(r->wall_seconds / r->duration);
-                    errors.push_back(std::fabs(mean_compressibility(*r) - z_ref) / z_ref);
-                }
+            // The point's error is the difference of the replicate means (what the check
+            // judges and the figures draw), with its combined standard error.
+            if (point.pressure)
+                for (const CaseResult* r : g.cases)
+                    if (r->finished()) seconds.push_back(r->wall_seconds / r->duration);
         }
-        if (!errors.empty()) {
+        if (point.pressure && !seconds.empty()) {
+            point.error = std::fabs(point.pressure->relative);
+            point.error_standard_error = point.pressure->relative_standard_error;
+            point.replicates = point.pressure->replicates;
+        } else if (!errors.empty()) {
             const auto e = mean_and_error(errors);
             point.error = e.mean;
             point.error_standard_error = e.standard_error;
-            point.seconds_per_time_unit = mean_and_error(seconds).mean;
             point.replicates = errors.size();
-            const auto key = std::make_pair(spec.scene, spec.backend);
-            if (!lines.count(key)) {
-                line_order.push_back(key);
-                lines[key] = {spec.scene, spec.backend,
-                              entry.comparison == Comparison::trajectory ? "trajectory error / r_min"
-                                                                         : "|Z - Z_ref| / Z_ref",
-                              {}, std::nullopt, std::nullopt, ""};
-            }
-            lines[key].points.push_back(point);
+        } else {
+            continue;  // nothing measured: no point
         }
+        point.seconds_per_time_unit = mean_and_error(seconds).mean;
+        const auto key = std::make_pair(spec.scene, spec.backend);
+        if (!lines.count(key)) {
+            line_order.push_back(key);
+            lines[key] = {spec.scene, spec.backend,
+                          entry.comparison == Comparison::trajectory ? "trajectory error / r_min"
+                                                                     : "|Z - Z_ref| / Z_ref",
+                          {}, {}};
+        }
+        lines[key].points.push_back(point);
     }
     for (const auto& key : line_order) {
         WorkPrecisionLine line = lines[key];
-        std::vector<double> h, e, e_error;
-        for (const auto& p : line.points) {
-            // The rule's effective step is dt / substeps (the integrate-first rule sub-steps).
-            h.push_back(p.dt / std::max(1, p.substeps));
-            e.push_back(p.error);
-            e_error.push_back(p.error_standard_error);
-        }
-        // The ordinary least-squares slope (every point alike, as docs/validation.md states the
-        // observed orders), with its standard error propagated from the points' error bars.
-        if (auto fit = log_log_fit(h, e, 3, e_error)) {
-            line.order = fit->slope;
-            line.order_standard_error = fit->slope_standard_error;
-        } else line.order_note = "needs at least 3 sweep points with distinct steps and non-zero error";
+        std::vector<ErrorPoint> points;
+        // The rule's effective step is dt / substeps (the integrate-first rule sub-steps).
+        for (const auto& p : line.points)
+            points.push_back({p.dt / std::max(1, p.substeps), p.error, p.error_standard_error});
+        line.order = asymptotic_order(points);
         out.work_precision.push_back(line);
     }
     return out;

@@ -260,7 +260,10 @@ SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& avail
 
     // Judge every case in plan order, then the comparisons with the reference.
     std::map<std::string, Tolerances> tolerances;
-    for (const BackendInfo& b : backends) tolerances[b.name] = suite.tolerances.for_backend(b.name, b.precision);
+    for (const BackendInfo& b : backends) {
+        tolerances[b.name] = suite.tolerances.for_backend(b.name, b.precision);
+        outcome.precision[b.name] = b.precision;
+    }
     for (const CaseSpec& spec : specs) {
         outcome.cases.push_back(results.at(spec.id));
         const auto checks = case_checks(outcome.cases.back(), case_scenes.feature(spec), tolerances.at(spec.backend));

@@ -1,6 +1,11 @@
 #include "summary_writer.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
+#include <thread>
+#include <vector>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -11,6 +16,8 @@
 #include "core/output_file.h"
 #include "core/provenance.h"
 #include "check_table.h"
+#include "bias_fit.h"
+#include "statistics_bias_model.h"
 
 namespace collide::validation {
 namespace {
@@ -44,6 +51,8 @@ Json array(const Range& items, ToJson&& to_json) {
     return out;
 }
 
+Json nullable(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
+
 Json string_map(const std::map<std::string, std::string>& m) {
     Object o;
     for (const auto& [k, v] : m) o.text(k, v);
@@ -71,6 +80,10 @@ Json check_definitions_json() {
     });
 }
 
+double per_time_unit(const CaseResult& r) {
+    return r.finished() && r.duration > 0 && std::isfinite(r.wall_seconds) ? r.wall_seconds / r.duration : std::nan("");
+}
+
 Json case_json(const CaseResult& r, const Classification* c) {
     Object o;
     o.text("id", r.spec.id).text("scene", r.spec.scene).text("backend", r.spec.backend)
@@ -81,6 +94,7 @@ Json case_json(const CaseResult& r, const Classification* c) {
         .integer("disks", (long long)r.disks).number("duration", r.duration)
         .number("wall_seconds", r.wall_seconds).number("warmup_seconds", r.warmup_seconds)
         .integer("steps", r.steps).integer("contacts", r.contacts)
+        .field("seconds_per_time_unit", nullable(per_time_unit(r)))
         .text("result_file", "cases/" + r.spec.id + ".toml").text("hdf5_file", r.hdf5_file)
         .field("provenance", string_map(r.provenance));
     Object phases;
@@ -93,11 +107,31 @@ Json case_json(const CaseResult& r, const Classification* c) {
     return o.json();
 }
 
-Json check_json(const CheckResult& c) {
+// measured / tolerance for an upper bound, tolerance / measured for a lower bound (the KS
+// p-value): 1 is at the tolerance, above 1 fails. NaN where there is no number to compare.
+double margin(const CheckResult& c) {
+    if ((c.status != CheckStatus::pass && c.status != CheckStatus::fail) || !std::isfinite(c.value) ||
+        !(c.tolerance > 0) || c.comparison.empty())
+        return std::nan("");
+    if (c.comparison == ">=") return c.value <= 0 ? std::numeric_limits<double>::infinity() : c.tolerance / c.value;
+    return std::fabs(c.value) / c.tolerance;
+}
+
+// A check whose value counts something per disk (overlapping pairs / N) can take only the
+// values k / N: with fewer than `few` steps below its tolerance, its margin is a count (for two
+// disks 0 or 0.5), not a measure of how close the backend came, and the report leaves it out of
+// the worst margin.
+bool quantised(const CheckResult& c, long long disks) {
+    constexpr double few = 10;
+    return c.check == "overlapping_pairs" && disks > 0 && c.tolerance * double(disks) < few;
+}
+
+Json check_json(const CheckResult& c, long long disks) {
     Object o;
     o.text("subject", c.subject).text("scene", c.scene).text("backend", c.backend).text("check", c.check)
         .text("status", to_string(c.status)).number("value", c.value).number("tolerance", c.tolerance)
-        .text("comparison", c.comparison).text("detail", c.detail);
+        .text("comparison", c.comparison).field("margin", nullable(margin(c)))
+        .boolean("quantised", quantised(c, disks)).text("detail", c.detail);
     // a stepped backend's energy drift, pressure or collision rate: what the rule's model predicts
     // (energy_loss_model.h, statistics_bias_model.h)
     if (!std::isnan(c.predicted))
@@ -105,20 +139,165 @@ Json check_json(const CheckResult& c) {
     return o.json();
 }
 
+// The checks, each with the disk count of its case or group (the subject is a case id or a
+// sweep group's id).
+Json checks_json(const SuiteOutcome& outcome) {
+    std::map<std::string, long long> disks;
+    for (const auto& r : outcome.cases) {
+        disks[r.spec.id] = (long long)r.disks;
+        disks[group_id(r.spec)] = (long long)r.disks;
+    }
+    return array(outcome.checks, [&](const CheckResult& c) {
+        const auto it = disks.find(c.subject);
+        return check_json(c, it == disks.end() ? 0 : it->second);
+    });
+}
+
+// The checks' names in the order the suite produced them first: the report's column order.
+Json check_order_json(const SuiteOutcome& outcome) {
+    Json out = Json::array();
+    for (const auto& c : outcome.checks)
+        if (std::find(out.begin(), out.end(), c.check) == out.end()) out.push_back(c.check);
+    return out;
+}
+
+// What the report needs to know of each backend of the run, so that it names none itself.
+Json backends_json(const Suite& suite, const SuiteOutcome& outcome) {
+    Object o;
+    for (const auto& r : outcome.cases) {
+        const std::string& b = r.spec.backend;
+        if (o.json().contains(b)) continue;
+        const auto p = outcome.precision.find(b);
+        const std::string precision = p == outcome.precision.end() ? "" : p->second;
+        Object x;
+        x.text("base", b.substr(0, b.find('['))).text("precision", precision)
+            .boolean("float", precision.rfind("float", 0) == 0).boolean("reference", b == suite.reference)
+            .boolean("stepping_rule", follows_stepping_rules(b));
+        o.field(b, x.json());
+    }
+    return o.json();
+}
+
+// What each backend costs on each scene: per sweep group the mean over replicates of wall
+// seconds per simulated time unit (with the smallest and largest replicate, the timing noise),
+// the cheapest group kept; `relative_to_reference` divides by the reference's cost on the scene.
+Json costs_json(const Suite& suite, const SuiteOutcome& outcome) {
+    struct Group { std::string scene, backend, id; double dt = 0; std::vector<double> seconds; };
+    std::vector<Group> groups;
+    std::map<std::string, std::size_t> index;
+    for (const auto& r : outcome.cases) {
+        const double s = per_time_unit(r);
+        if (!std::isfinite(s)) continue;
+        const std::string id = group_id(r.spec);
+        if (!index.count(id)) {
+            index[id] = groups.size();
+            groups.push_back({r.spec.scene, r.spec.backend, id, r.dt, {}});
+        }
+        groups[index[id]].seconds.push_back(s);
+    }
+    std::vector<std::pair<const Group*, double>> cheapest;  // per (scene, backend), in first-seen order
+    std::map<std::pair<std::string, std::string>, std::size_t> at;
+    for (const auto& g : groups) {
+        double mean = 0;
+        for (double x : g.seconds) mean += x / double(g.seconds.size());
+        const auto key = std::make_pair(g.scene, g.backend);
+        if (!at.count(key)) {
+            at[key] = cheapest.size();
+            cheapest.push_back({&g, mean});
+        } else if (mean < cheapest[at[key]].second) {
+            cheapest[at[key]] = {&g, mean};
+        }
+    }
+    Json out = Json::array();
+    for (const auto& [g, mean] : cheapest) {
+        const auto ref = at.find({g->scene, suite.reference});
+        const double reference = ref == at.end() ? std::nan("") : cheapest[ref->second].second;
+        Object o;
+        o.text("scene", g->scene).text("backend", g->backend).text("group", g->id).number("dt", g->dt)
+            .number("seconds_per_time_unit", mean)
+            .number("fastest_replicate", *std::min_element(g->seconds.begin(), g->seconds.end()))
+            .number("slowest_replicate", *std::max_element(g->seconds.begin(), g->seconds.end()))
+            .integer("replicates", (long long)g->seconds.size())
+            .field("relative_to_reference", nullable(mean / reference));
+        out.push_back(o.json());
+    }
+    return out;
+}
+
+// The machine the timings were taken on: its processor, its cores, and the load averages over
+// the last 1, 5 and 15 minutes when the run ended (/proc/loadavg; the 5-minute one covers most
+// of a default-suite run), so that a reader can tell an idle machine from an oversubscribed one.
+Json machine_json() {
+    Object o;
+    std::ifstream cpuinfo("/proc/cpuinfo");
+    std::string line, model;
+    while (model.empty() && std::getline(cpuinfo, line))
+        if (line.rfind("model name", 0) == 0 && line.find(':') != std::string::npos)
+            model = line.substr(line.find(':') + 2);
+    o.text("cpu_model", model).integer("cores", (long long)std::thread::hardware_concurrency());
+    std::ifstream loadavg("/proc/loadavg");
+    double l1 = std::nan(""), l5 = std::nan(""), l15 = std::nan("");
+    loadavg >> l1 >> l5 >> l15;
+    o.field("load_1min", nullable(l1)).field("load_5min", nullable(l5)).field("load_15min", nullable(l15));
+    return o.json();
+}
+
+Json difference_json(const std::optional<StatisticalDifference>& d) {
+    if (!d) return nullptr;
+    Object o;
+    o.number("mean", d->mean).number("standard_error", d->standard_error).number("reference", d->reference)
+        .number("reference_standard_error", d->reference_standard_error).number("relative", d->relative)
+        .number("relative_standard_error", d->relative_standard_error).number("sigmas", d->sigmas)
+        .boolean("resolved", d->resolved).number("upper_limit_95", d->upper_limit_95)
+        .number("detectable", d->detectable).field("predicted", nullable(d->predicted))
+        .field("predicted_uncertainty", nullable(d->predicted_uncertainty))
+        .integer("replicates", (long long)d->replicates)
+        .integer("reference_replicates", (long long)d->reference_replicates);
+    return o.json();
+}
+
+// The order on the asymptotic range (convergence_order.h) with the range it was fitted on and
+// the floor below it; "order" and "order_standard_error" stay top-level numbers of the line.
+Json order_json(const ConvergenceOrder& c) {
+    Object o;
+    o.integer("used", (long long)c.used).integer("points", (long long)c.points).number("h_coarse", c.h_coarse)
+        .number("h_fine", c.h_fine).boolean("bending", c.bending);
+    if (c.floor) {
+        Object f;
+        f.number("h", c.floor->h).number("error", c.floor->error).number("finest_h", c.floor->finest_h)
+            .number("finest_error", c.floor->finest_error).integer("excluded", (long long)c.floor->excluded);
+        o.field("floor", f.json());
+    } else {
+        o.field("floor", nullptr);
+    }
+    return o.json();
+}
+
 Json line_json(const WorkPrecisionLine& line) {
     Object o;
     o.text("scene", line.scene).text("backend", line.backend).text("error_kind", line.error_kind)
-        .number("order", line.order ? *line.order : std::nan(""))
-        .number("order_standard_error", line.order_standard_error ? *line.order_standard_error : std::nan(""))
-        .text("order_note", line.order_note);
+        .number("order", line.order.order ? *line.order.order : std::nan(""))
+        .number("order_standard_error", line.order.standard_error ? *line.order.standard_error : std::nan(""))
+        .text("order_note", line.order.note).field("order_range", order_json(line.order));
     o.field("points", array(line.points, [](const WorkPrecisionPoint& p) {
         Object q;
         q.text("group", p.group).number("dt", p.dt).integer("substeps", p.substeps)
             .integer("iterations", p.iterations).number("seconds_per_time_unit", p.seconds_per_time_unit)
             .number("error", p.error).number("error_standard_error", p.error_standard_error)
-            .integer("replicates", (long long)p.replicates);
+            .integer("replicates", (long long)p.replicates)
+            .field("pressure", difference_json(p.pressure)).field("collision_rate", difference_json(p.collision_rate));
         return q.json();
     }));
+    return o.json();
+}
+
+Json bias_fit_json(const BiasConstantFit& f) {
+    Object o;
+    o.text("backend", f.backend).text("observable", f.observable).number("constant", f.constant)
+        .number("standard_error", f.standard_error).number("model", f.model)
+        .number("model_uncertainty", f.model_uncertainty).number("chi2", f.chi2)
+        .integer("degrees_of_freedom", (long long)f.points - 1).number("chi2_model", f.chi2_model)
+        .integer("points", (long long)f.points);
     return o.json();
 }
 
@@ -204,8 +383,12 @@ void write_summary_json(const Suite& suite, const SuiteOutcome& outcome, const s
         .field("seeds", string_map(seeds)).field("scene_files", string_map(scene_files))
         .field("cases", cases_json(outcome))
         .field("check_definitions", check_definitions_json())
-        .field("checks", array(outcome.checks, check_json))
+        .field("machine", machine_json()).field("backends", backends_json(suite, outcome))
+        .field("check_order", check_order_json(outcome))
+        .field("checks", checks_json(outcome))
         .field("work_precision", array(outcome.work_precision, line_json))
+        .field("bias_fits", array(fit_bias_constants(outcome.work_precision), bias_fit_json))
+        .field("costs", costs_json(suite, outcome))
         .field("physics", physics_json(outcome.physics));
     // Bytes that are not UTF-8 (in a path or a diagnostic) are replaced, not fatal: the summary
     // of a suite that ran for hours must still be written.

@@ -5,13 +5,16 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <mutex>
 #include <set>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -66,22 +69,36 @@ void warn_about_stray_files(const std::string& dir, const std::set<std::string>&
 
 // Every listed case's record and HDF5 file must be intact (core/run_reader.h): a damaged or
 // truncated one (a full disk, a copy cut short, a flipped bit) is named here rather than
-// drawn from, or failing deep in Python.
+// drawn from, or failing deep in Python. The frames are left to `collide render`, which checks
+// those it draws. The records are parsed on every core at once; the HDF5 library is not
+// thread-safe, so the run files are checked one at a time. The first problem by case id is named.
 void check_case_files(const std::string& dir) {
-    const std::set<std::string> ids = listed_case_ids(dir);
-    warn_about_stray_files(dir, ids);
-    for (const std::string& id : ids) {
-        const std::string record = dir + "/cases/" + id + ".toml";
-        if (!std::filesystem::exists(record)) continue;  // the renderer names it if it needs it
-        std::string problem;
-        try {
-            problem = validation::case_files_problem(validation::read_case_result(record), dir);
-        } catch (const std::runtime_error& e) {
-            problem = e.what();
+    const std::set<std::string> listed = listed_case_ids(dir);
+    warn_about_stray_files(dir, listed);
+    const std::vector<std::string> ids(listed.begin(), listed.end());
+    std::vector<std::string> problems(ids.size());
+    std::atomic<std::size_t> next{0};
+    std::mutex hdf5;
+    auto work = [&] {
+        for (std::size_t k = next++; k < ids.size(); k = next++) {
+            const std::string record = dir + "/cases/" + ids[k] + ".toml";
+            if (!std::filesystem::exists(record)) continue;  // the renderer names it if it needs it
+            try {
+                const validation::CaseResult result = validation::read_case_result(record);
+                const std::lock_guard<std::mutex> lock(hdf5);
+                problems[k] = validation::case_files_problem(result, dir, false);
+            } catch (const std::runtime_error& e) {
+                problems[k] = e.what();
+            }
         }
+    };
+    std::vector<std::thread> threads;
+    for (unsigned t = 1; t < std::max(1u, std::thread::hardware_concurrency()); ++t) threads.emplace_back(work);
+    work();
+    for (auto& t : threads) t.join();
+    for (const std::string& problem : problems)
         if (!problem.empty())
             throw std::runtime_error(problem + "; run `collide validate ... --resume` to run that case again");
-    }
 }
 
 // The files the renderer writes, checked before it starts (core/output_file.h; the renderer
@@ -89,7 +106,7 @@ void check_case_files(const std::string& dir) {
 void check_report_outputs(const std::string& report_dir) {
     check_output_directory(report_dir);
     if (!std::filesystem::is_directory(report_dir)) return;  // created empty by the renderer
-    for (const char* name : {"index.html", "checks.html", "summary.md", "summary-full.md"})
+    for (const char* name : {"index.html", "checks.html", "checks.csv", "summary.md", "summary-full.md"})
         check_output_path(report_dir + "/" + name);
 }
 

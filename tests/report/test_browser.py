@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """Opens a rendered report the way a reader does: chromium, headless, at 1400 x 900, and checks
-that the first screen holds the verdict, the per-backend digest and the whole headline
-work-precision figure, and that every in-page link (table of contents, digest) resolves.
+that the first screen holds the verdict and the per-backend digest with a verdict and a cost
+for each backend, that the headline work-precision figure follows it at once, that no two
+pieces of text on the first screen overlap,
+and that every in-page link (table of contents, digest) resolves.
 
 usage: test_browser.py RESULTS_DIR [SCREENSHOT.png]
 
@@ -79,14 +81,51 @@ class FirstScreen(unittest.TestCase):
             self.assertLessEqual(bottom, HEIGHT, f"{css} ends at {bottom} px, below the first screen")
             self.assertLessEqual(right, WIDTH, f"{css} is wider than the screen")
 
+    def test_backend_verdicts_with_cost_on_first_screen(self):
+        if self.stability_suite():
+            self.skipTest("a stability suite opens with its first failures")
+        from selenium.webdriver.common.by import By
+        top, bottom, left, right = self.rect("#digest")
+        self.assertGreaterEqual(top, 0)
+        self.assertLessEqual(bottom, HEIGHT, f"the backend verdicts end at {bottom} px, below the first screen")
+        rows = self.driver.find_elements(By.CSS_SELECTOR, "#digest tr[id^='verdict-']")
+        self.assertGreater(len(rows), 1)
+        for row in rows:
+            cells = [c.text for c in row.find_elements(By.TAG_NAME, "td")]
+            self.assertTrue(cells[1], f"no verdict for {cells[0]}")
+            self.assertRegex(cells[4], r"×|s per time unit", f"no cost for {cells[0]}")
+            self.assertTrue(row.is_displayed())
+
+    def test_no_text_overlaps_on_first_screen(self):
+        overlaps = self.driver.execute_script("""
+            const boxes = [];
+            const walker = document.createTreeWalker(document.body, NodeFilter.SHOW_TEXT);
+            for (let n = walker.nextNode(); n; n = walker.nextNode()) {
+              if (!n.textContent.trim()) continue;
+              const range = document.createRange(); range.selectNodeContents(n);
+              for (const r of range.getClientRects())
+                if (r.width > 1 && r.height > 1 && r.bottom > 0 && r.top < window.innerHeight)
+                  boxes.push([r.left, r.top, r.right, r.bottom, n.textContent.trim().slice(0, 30)]);
+            }
+            const out = [];
+            for (let i = 0; i < boxes.length; ++i)
+              for (let j = i + 1; j < boxes.length; ++j) {
+                const a = boxes[i], b = boxes[j];
+                const w = Math.min(a[2], b[2]) - Math.max(a[0], b[0]), h = Math.min(a[3], b[3]) - Math.max(a[1], b[1]);
+                if (w > 2 && h > 2) out.push(a[4] + " / " + b[4]);
+              }
+            return out;""")
+        self.assertEqual(overlaps, [], "text overlaps on the first screen")
+
     def test_headline_figure_on_first_screen(self):
         if self.stability_suite():
             self.skipTest("a stability suite has no work-precision figure")
         top, bottom, left, right = self.rect("figure#headline img")
         self.assertTrue(self.driver.execute_script(
             "return document.querySelector('figure#headline img').complete"), "the figure did not load")
-        self.assertLess(top, HEIGHT)
-        self.assertLessEqual(bottom, HEIGHT, f"the headline figure ends at {bottom} px, below the first screen")
+        # The first screen holds the verdicts with their costs; the figure follows the digest at once.
+        digest_bottom = self.rect("#digest")[1]
+        self.assertLess(top - digest_bottom, 80, "something stands between the digest and the headline figure")
         self.assertGreater(bottom - top, 200, "the headline figure is too small to read")
 
     def test_contents_on_first_screen(self):

@@ -22,6 +22,7 @@ import digest  # noqa: E402
 import figures  # noqa: E402
 import make_report  # noqa: E402
 import physics  # noqa: E402
+import verdicts  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 
 RESULTS = None
@@ -36,103 +37,64 @@ class DigestMatchesSummary(unittest.TestCase):
     def setUp(self):
         with open(os.path.join(RESULTS, "summary.json"), encoding="utf-8") as f:
             self.summary = json.load(f)
-        self.rows = digest.digest(self.summary, digest.all_orders(self.summary))
+        self.rows = digest.digest(self.summary)
 
     def test_totals_equal_counts(self):
         for key in ("pass", "fail", "left_out"):
             self.assertEqual(sum(r[key] for r in self.rows), self.summary["counts"][key], key)
-        self.assertEqual(sum(r["cases"] for r in self.rows), len(self.summary["cases"]))
+        self.assertEqual(sum(r["cases"] + r["cases_cannot_run"] for r in self.rows), len(self.summary["cases"]))
 
     def test_each_backend_counted(self):
         for r in self.rows:
             checks = [c for c in self.summary["checks"] if c["backend"] == r["backend"]]
             for key in ("pass", "fail", "left_out"):
                 self.assertEqual(r[key], sum(1 for c in checks if c["status"] == key), (r["backend"], key))
-            self.assertEqual(r["cases"], sum(1 for c in self.summary["cases"] if c["backend"] == r["backend"]))
+            ran = [c for c in self.summary["cases"] if c["backend"] == r["backend"] and c["status"] != "left_out"]
+            self.assertEqual(r["cases"], len(ran))
 
-    def test_worst_margin_is_the_largest(self):
+    def test_worst_margin_is_the_largest_unquantised(self):
         for r in self.rows:
-            margins = [digest.margin(c) for c in self.summary["checks"] if c["backend"] == r["backend"]]
-            margins = [m for m in margins if m is not None]
+            margins = [c["margin"] for c in self.summary["checks"] if c["backend"] == r["backend"]
+                       and c.get("margin") is not None and not c["quantised"]]
             if margins:
                 self.assertEqual(r["worst"][0], max(margins))
+                self.assertEqual(r["ties"], margins.count(max(margins)))
+
+    def test_orders_are_the_summarys(self):
+        fits = {(f["scene"], f["backend"]): f for f in digest.orders(self.summary)}
+        for line in self.summary["work_precision"]:
+            f = fits[(line["scene"], line["backend"])]
+            self.assertEqual(f["order"], line["order"])
+            self.assertEqual(f["order_se"], line["order_standard_error"])
 
     def test_rendered_digest_and_summary(self):
         html = open(os.path.join(RESULTS, "report", "index.html"), encoding="utf-8").read()
         self.assertIn('id="digest"', html)
+        self.assertIn("cost ÷ exact solver", html)
         self.assertIn('id="headline"', html)
         summary_md = open(os.path.join(RESULTS, "report", "summary.md"), encoding="utf-8").read().splitlines()
         self.assertLessEqual(len(summary_md), 80)
         for b in digest.backends_in_order(self.summary):
             self.assertTrue(any(line.startswith(f"| {b}") for line in summary_md), f"{b} not in summary.md's digest")
-        for name in ("checks.html", "summary-full.md"):
+        for name in ("checks.html", "checks.csv", "summary-full.md"):
             self.assertTrue(os.path.exists(os.path.join(RESULTS, "report", name)), name)
 
+    def test_no_number_read_from_prose(self):
+        """Issue: the report read numbers back out of the checks' prose and split case ids."""
+        for name in ("digest.py", "make_report.py", "figures.py", "verdicts.py"):
+            source = open(os.path.join(REPORT, name), encoding="utf-8").read()
+            self.assertNotIn('["detail"]).', source, name)
+            self.assertNotIn('split("__")', source, name)
+            self.assertNotIn("FLOAT_BACKENDS", source, name)
+            self.assertNotIn("CHECK_ORDER", source, name)
+            self.assertNotIn("def fit_order", source, name)
 
-class OrderFit(unittest.TestCase):
-    def test_float_floor_excluded(self):
-        # First order down to dt = 1e-3, then rounding: the error rises again.
-        errors = {8e-3: 8e-3, 4e-3: 4e-3, 2e-3: 2e-3, 1e-3: 1e-3, 5e-4: 1.3e-3, 2.5e-4: 2.4e-3}
-        fit = digest.fit_order([{"dt": dt, "error": e} for dt, e in errors.items()], "cpu")
-        self.assertAlmostEqual(fit["order"], 1.0, places=6)
-        self.assertEqual(fit["used"], 4)
-        self.assertEqual(fit["floor"]["dt"], 1e-3)
-        self.assertEqual(fit["floor"]["excluded"], 2)
-        self.assertEqual(fit["floor"]["kind"], "float floor")
-        self.assertIn("float floor from dt ≈ 0.001", digest.describe_floor(fit["floor"]))
-
-    def test_flattening_is_a_floor(self):
-        errors = {8e-3: 8e-3, 4e-3: 4e-3, 2e-3: 2e-3, 1e-3: 1.9e-3, 5e-4: 1.85e-3}
-        fit = digest.fit_order([{"dt": dt, "error": e} for dt, e in errors.items()], "step")
-        self.assertAlmostEqual(fit["order"], 1.0, places=6)
-        self.assertEqual(fit["floor"]["kind"], "error floor")
-
-    def test_no_floor_in_a_clean_line(self):
-        fit = digest.fit_order([{"dt": 2.0 ** -k, "error": 3 * 4.0 ** -k} for k in range(5)], "step")
-        self.assertAlmostEqual(fit["order"], 2.0, places=6)
-        self.assertIsNone(fit["floor"])
-
-    def test_statistical_noise_is_no_floor(self):
-        # Z errors of a first-order bias over a narrow dt range: the finest point lies above the
-        # coarser one, but well within its error bars, so the descent still explains it.
-        pts = [{"dt": 6e-3, "error": 0.0100, "se": 0.0019}, {"dt": 4.8e-3, "error": 0.0080, "se": 0.0020},
-               {"dt": 4e-3, "error": 0.0086, "se": 0.0022}]
-        fit = digest.fit_order(pts, "step")
-        self.assertIsNone(fit["floor"])
-        self.assertEqual(fit["used"], 3)
-        self.assertTrue(fit["statistical"])
-        # Without the error bars the same numbers would be read as a floor.
-        bare = digest.fit_order([{"dt": p["dt"], "error": p["error"]} for p in pts], "step")
-        self.assertIsNotNone(bare["floor"])
-
-    def test_significant_statistical_rise_is_a_floor(self):
-        pts = [{"dt": 8e-3, "error": 0.016, "se": 0.001}, {"dt": 4e-3, "error": 0.008, "se": 0.001},
-               {"dt": 2e-3, "error": 0.004, "se": 0.0005}, {"dt": 1e-3, "error": 0.012, "se": 0.001}]
-        fit = digest.fit_order(pts, "cpu")
-        self.assertEqual(fit["floor"]["dt"], 2e-3)
-        self.assertAlmostEqual(fit["order"], 1.0, places=6)
-
-    def test_order_error_bar_from_the_points(self):
-        # Exact first-order points with 10 % log-space error bars at h = 1, 1/2, 1/4: the weighted
-        # slope's standard error is 0.1 / sqrt(sum (x - mean x)^2) = 0.1 / (ln 2 * sqrt(2)).
-        pts = [{"dt": 2.0 ** -k, "error": 2.0 ** -k, "se": 0.1 * 2.0 ** -k} for k in range(3)]
-        fit = digest.fit_order(pts, "step")
-        self.assertAlmostEqual(fit["order"], 1.0, places=9)
-        self.assertAlmostEqual(fit["order_se"], 0.1 / (math.log(2) * math.sqrt(2)), places=9)
-        self.assertIn("1.00 ± 0.10", digest.describe_order(fit))
-
-    def test_box2d_floor_is_its_tolerances_not_rounding(self):
-        errors = {4e-3: 1.6, 2e-3: 1.6, 1e-3: 1.61, 5e-4: 1.6}
-        fit = digest.fit_order([{"dt": dt, "error": e} for dt, e in errors.items()], "box2d[shipped]")
-        self.assertEqual(fit["floor"]["kind"], "solver floor")
-        text = digest.describe_floor(fit["floor"])
-        self.assertIn("Box2D's tolerances", text)
-        self.assertNotIn("rounding", text)
-
-    def test_too_few_points(self):
-        fit = digest.fit_order([{"dt": 1e-3, "error": 1e-3}, {"dt": 5e-4, "error": 5e-4}])
-        self.assertIsNone(fit["order"])
-        self.assertIn("2 points", fit["note"])
+    def test_checks_csv_has_every_check(self):
+        import csv
+        with open(os.path.join(RESULTS, "report", "checks.csv"), encoding="utf-8") as f:
+            rows = list(csv.DictReader(f))
+        self.assertEqual(len(rows), len(self.summary["checks"]))
+        self.assertEqual(rows[0]["subject"], self.summary["checks"][0]["subject"])
 
 
 class JumpExplained(unittest.TestCase):
@@ -168,29 +130,29 @@ class JumpExplained(unittest.TestCase):
 
 
 class Resolution(unittest.TestCase):
-    def check(self, mean, se, ref, ref_se):
-        return {"status": "pass", "check": "pressure",
-                "detail": f"Z = P/(rho kT) {mean} +- {se} vs reference {ref} +- {ref_se}"}
+    """Unresolved points are drawn at their 95 % upper limit |Δ| + 1.96 SE, which validate writes."""
 
-    def test_unresolved_and_resolved(self):
-        d = digest.statistical_difference(self.check(1.66, 0.02, 1.64, 0.018))
-        self.assertFalse(d["resolved"])
-        self.assertAlmostEqual(d["error"], 0.02 / 1.64)
-        d = digest.statistical_difference(self.check(1.70, 0.005, 1.64, 0.005))
-        self.assertTrue(d["resolved"])
-        self.assertGreater(d["sigmas"], 8)
+    def test_points_read_from_the_summary(self):
+        with open(os.path.join(RESULTS, "summary.json"), encoding="utf-8") as f:
+            summary = json.load(f)
+        points = digest.statistical_points(summary, "periodic_gas", "pressure")
+        self.assertTrue(points)
+        for backend, pts in points.items():
+            for p in pts:
+                self.assertAlmostEqual(p["upper"], p["error"] + 1.96 * p["se"], places=12)
+                self.assertEqual(p["resolved"], p["sigmas"] >= 2)
 
-    def test_unresolved_point_drawn_hollow(self):
+    def test_unresolved_point_drawn_at_its_95_percent_upper_limit(self):
+        # The box-gas `cpu` point of the issue: 0.013 ± 0.0081 was drawn at 0.016 (2 SE); its limit is 0.029.
         fig, ax = plt.subplots()
         figures.draw_points(ax, [{"x": 1.0, "y": 0.05, "se": 0.01, "resolved": True, "label": "dt=0.002"},
-                                 {"x": 2.0, "y": 0.01, "se": 0.02, "resolved": False, "label": "dt=0.001"}],
+                                 {"x": 2.0, "y": 0.013, "se": 0.0081, "resolved": False, "upper": 0.013 + 1.96 * 0.0081,
+                                  "label": "dt=0.001"}],
                             "tab:blue", "step")
         hollow = [l for l in ax.lines if l.get_markerfacecolor() == "none"]
-        filled = [l for l in ax.lines if l.get_markerfacecolor() != "none" and l.get_marker() == "o"]
         self.assertEqual(len(hollow), 1)
         self.assertEqual(list(hollow[0].get_xdata()), [2.0])
-        self.assertAlmostEqual(hollow[0].get_ydata()[0], 0.04)  # at its 2 SE bound
-        self.assertEqual([list(l.get_xdata()) for l in filled], [[1.0]])
+        self.assertAlmostEqual(hollow[0].get_ydata()[0], 0.028876)
         self.assertIn("not resolved", [t.get_text() for t in ax.texts])
         plt.close(fig)
 
@@ -201,19 +163,21 @@ class PredictedDrift(unittest.TestCase):
              "tolerance": 0.05, "comparison": "<=", "detail": "", "predicted": 0.025, "predicted_uncertainty": 0.008}
         self.assertEqual(make_report.predicted_text(c, percent=True),
                          "drifts 2.9 % where the rule is expected to drift 2.5 ± 0.8 %")
-        self.assertIn("expected 0.025 ± 0.008", make_report.cell(c, "energy_drift"))
+        self.assertEqual(make_report.predicted_text(c), "expected 0.025 ± 0.008")
         del c["predicted"]
         self.assertEqual(make_report.predicted_text(c, percent=True), "")
 
 
 class IdenticalBackends(unittest.TestCase):
     def test_detected(self):
-        checks = []
+        checks, cases = [], []
         for b in ("cpu", "opencl", "step"):
             for i in range(3):
-                checks.append({"subject": f"s__{b}__dt0.001__seed{i}", "backend": b, "check": "energy_drift",
+                cid = f"s__{b}__dt0.001__seed{i}"
+                cases.append({"id": cid, "scene": "s", "backend": b, "dt": 0.001, "seed": i, "status": "completed"})
+                checks.append({"subject": cid, "scene": "s", "backend": b, "check": "energy_drift",
                                "status": "pass", "value": 0.1 * i + (0.01 if b == "step" else 0)})
-        summary = {"checks": checks, "work_precision": []}
+        summary = {"cases": cases, "checks": checks, "work_precision": []}
         self.assertEqual(digest.identical_backends(summary), [("cpu", "opencl", 3)])
 
 
@@ -252,7 +216,9 @@ class HostileInputs(unittest.TestCase):
         self.assertNotIn("Traceback", r.stderr)
 
     def test_truncated_case_file_named(self):
-        case = next(c for c in self.summary["cases"] if c["status"] == "completed")
+        # A case the report draws (`collide report` checks every other one before the renderer starts).
+        scene = self.summary["cases"][0]["scene"]
+        case = make_report.representative_cases(self.summary, self.results, scene)[0][1]
         path = os.path.join(self.results, case["result_file"])
         text = open(path, encoding="utf-8").read()
         with open(path, "w", encoding="utf-8") as f:
@@ -319,6 +285,175 @@ class PhysicsSectionDrawsTheSummary(unittest.TestCase):
     def test_a_suite_without_physics_rows_has_no_section(self):
         self.assertEqual(physics.section({"physics": {"rows": [], "curves": []}}, make_report.image), "")
         self.assertEqual(physics.markdown({}), [])
+
+def check(scene, backend, name, status="pass", value=0.1, tolerance=1.0, quantised=False, subject=None, margin=None):
+    return {"subject": subject or f"{scene}__{backend}__dt0.001__seed1", "scene": scene, "backend": backend,
+            "check": name, "status": status, "value": value, "tolerance": tolerance, "comparison": "<=",
+            "margin": (value / tolerance if margin is None else margin) if status != "left_out" else None,
+            "quantised": quantised, "detail": ""}
+
+
+class WhatAReaderWasToldWrongly(unittest.TestCase):
+    """One test per finding of the issue "The report, honest in every number"; each fails on
+    the report as it was (no cost on the first screen, opencl at cpu's cost, box2d[shipped]
+    green by construction, quantised worst margins, inflated counts, hollow points at 2 SE,
+    tests without stated power, orders without standard errors, broken figures, 3.45 MB)."""
+
+    def setUp(self):
+        with open(os.path.join(RESULTS, "summary.json"), encoding="utf-8") as f:
+            self.summary = json.load(f)
+        self.html = open(os.path.join(RESULTS, "report", "index.html"), encoding="utf-8").read()
+
+    def test_cost_and_verdict_per_backend_on_the_first_screen(self):
+        first_screen = self.html[:self.html.index('id="headline"')]
+        for b in digest.backends_in_order(self.summary):
+            self.assertIn(f'<a href="#{digest.anchor("backend", b)}">{b}', first_screen)
+        self.assertIn("cost ÷ exact solver", first_screen)
+        self.assertIn("cheapest on", first_screen)
+        a = make_report.Analysis(self.summary)
+        reference = next(v for v in a.verdicts if v["backend"] == self.summary["reference"])
+        self.assertIn("exact", reference["verdict"])
+
+    def test_every_backend_at_its_own_cost(self):
+        """opencl was drawn at cpu's cost because their errors are bit-identical."""
+        costs = {(c["scene"], c["backend"]): c for c in self.summary["costs"]}
+        self.assertIn(("head_on_equal", "opencl"), costs)
+        self.assertIn(("head_on_equal", "cpu"), costs)
+        fig_calls = []
+        saved = figures.draw_points
+        figures.draw_points = lambda ax, points, colour_, label, *a, **k: fig_calls.append((colour_, points)) or None
+        try:
+            figures.headline(self.summary, digest, {"opencl": "cpu"})
+        finally:
+            figures.draw_points = saved
+        xs = {c: [p["x"] for p in pts] for c, pts in fig_calls}
+        opencl = [p for l in self.summary["work_precision"] if l["backend"] == "opencl" for p in l["points"]]
+        self.assertTrue(any(p["seconds_per_time_unit"] in xs.get(figures.colour("opencl"), []) for p in opencl),
+                        "opencl is not drawn at its own cost")
+
+    def test_exact_solver_on_the_trajectory_panel(self):
+        costs = figures.reference_costs(self.summary, ["head_on_equal"])
+        self.assertEqual(len(costs), 1)
+
+    def test_machine_context_in_the_timings(self):
+        machine = self.summary["machine"]
+        self.assertGreater(machine["cores"], 0)
+        self.assertIn(machine["cpu_model"], self.html)
+        self.assertIn("threads per case", self.html)
+        self.assertIn("load average", self.html)
+
+    def test_loose_tolerances_and_left_out_pressure_are_said(self):
+        """box2d[shipped] was green by construction: tolerances set to what it does, pressure left out."""
+        checks = [check("gas", "event", "energy_drift", tolerance=1e-9, value=1e-12),
+                  check("gas", "step", "energy_drift", tolerance=0.05, value=0.01),
+                  check("gas", "box2d[shipped]", "energy_drift", tolerance=0.95, value=0.909),
+                  dict(check("gas", "box2d[shipped]", "pressure", status="left_out"), subject="gas__box2d[shipped]__dt0.001")]
+        point = {"dt": 0.001, "substeps": 1, "seconds_per_time_unit": 1.0, "error": 0.1, "error_standard_error": 0.003,
+                 "pressure": {"relative": 0.1, "relative_standard_error": 0.003, "sigmas": 33.0, "resolved": True,
+                              "upper_limit_95": 0.106, "detectable": 0.012, "replicates": 6, "reference": 1.6,
+                              "predicted": None}}
+        summary = {"reference": "event", "checks": checks, "costs": [],
+                   "cases": [{"id": f"gas__{b}__dt0.001__seed1", "scene": "gas", "backend": b, "dt": 0.001, "seed": 1,
+                              "status": "completed"} for b in ("event", "step", "box2d[shipped]")],
+                   "work_precision": [{"scene": "gas", "backend": "box2d[shipped]", "error_kind": "|Z - Z_ref| / Z_ref",
+                                       "points": [point]}],
+                   "backends": {"box2d[shipped]": {"float": True, "stepping_rule": False}}}
+        row = next(r for r in digest.digest(summary) if r["backend"] == "box2d[shipped]")
+        v = verdicts.verdict(summary, row, {})
+        self.assertIn("energy drift up to 90.9 %", v["verdict"])
+        self.assertIn("gas pressure off by up to 33 SE (that check is left out)", v["verdict"])
+        self.assertIn("energy drift ≤ 0.95, 19× the other backends'", v["verdict"])
+
+    def test_quantised_checks_are_not_the_worst_margin(self):
+        checks = [check("pair", "step", "overlapping_pairs", value=0.5, tolerance=0.5, quantised=True),
+                  check("pair", "step", "energy_drift", value=0.02, tolerance=0.05),
+                  check("pair", "step", "energy_drift", value=0.02, tolerance=0.05, subject="pair__step__dt0.002__seed1")]
+        summary = {"cases": [{"id": "pair__step__dt0.001__seed1", "scene": "pair", "backend": "step", "status": "completed"}],
+                   "checks": checks, "work_precision": []}
+        row = digest.digest(summary)[0]
+        self.assertEqual(row["worst"][2], "energy_drift")
+        self.assertAlmostEqual(row["worst"][0], 0.4)
+        self.assertEqual(row["ties"], 2)
+        self.assertIn("one of 2 checks at this value", make_report.margin_text(row, link=False))
+
+    def test_counts_per_combination_and_cannot_run_apart(self):
+        cases = [{"id": f"gas__box2d__dt0.001__seed{i}", "scene": "gas", "backend": "box2d", "status": "left_out"}
+                 for i in range(5)]
+        cases.append({"id": "pair__box2d__dt0.001__seed1", "scene": "pair", "backend": "box2d", "status": "completed"})
+        checks = [check("gas", "box2d", n, status="left_out", subject=c["id"]) for c in cases[:5]
+                  for n in ("run", "energy_drift")]
+        checks += [check("pair", "box2d", "energy_drift", subject=cases[5]["id"]),
+                   check("pair", "box2d", "wall_penetration", status="left_out", subject=cases[5]["id"])]
+        summary = {"cases": cases, "checks": checks, "work_precision": []}
+        row = digest.digest(summary)[0]
+        self.assertEqual(row["cases"], 1)             # ran
+        self.assertEqual(row["cases_cannot_run"], 5)  # not "6 cases"
+        self.assertEqual(row["combinations"], {"pass": 1, "fail": 0, "left_out": 1, "cannot_run": 2})
+
+    def test_orders_carry_standard_errors_range_and_floor_flags(self):
+        fits = digest.orders(self.summary)
+        with_order = [f for f in fits if f["order"] is not None]
+        self.assertTrue(with_order)
+        for f in with_order:
+            text = digest.describe_order(f)
+            self.assertIn("±", text)
+            self.assertIn("on h ", text)
+        bent = dict(with_order[0], bending=True, floor=None, kind="float floor")
+        self.assertIn("floor-contaminated", digest.describe_order(bent))
+        self.assertIn("*", digest.order_summary([bent]))
+
+    def test_power_and_the_joint_bias_fit_are_stated(self):
+        self.assertIn("detectable ≥", self.html)
+        fits = [{"backend": "step", "observable": "pressure", "constant": 0.87, "standard_error": 0.1, "model": 1.12,
+                 "model_uncertainty": 0.07, "chi2": 4.7, "degrees_of_freedom": 5, "chi2_model": 8.6, "points": 6}]
+        html = make_report.BIAS_FITS.render(rows=make_report.bias_fit_rows({"bias_fits": fits}))
+        self.assertIn("0.87 ± 0.1", html)
+        self.assertIn("1.12 ± 0.07", html)
+        self.assertIn("8.6 on 6", html)
+        self.assertIn("χ²", html)
+
+    def test_a_single_overlapping_pair_is_visible(self):
+        import numpy as np
+        result = {"overlap_depths": [0.02]}
+        png = figures.overlap_histogram([("box2d[shipped]", result), ("cpu", {"overlap_depths": [0.001, 0.002]})], "s")
+        self.assertIsNotNone(png)
+        fig_calls = []
+        saved = figures._png
+        figures._png = lambda fig: fig_calls.append(fig) or b""
+        try:
+            figures.overlap_histogram([("box2d[shipped]", result)], "s")
+        finally:
+            figures._png = saved
+        ax = fig_calls[0].axes[0]
+        markers = [l for l in ax.lines if l.get_marker() == "v"]
+        self.assertEqual(len(markers), 1)
+        self.assertEqual(list(np.asarray(markers[0].get_xdata())), [0.02])
+        self.assertTrue(any("(1 pair)" in t.get_text() for t in ax.get_legend().get_texts()))
+        plt.close(fig_calls[0])
+
+    def test_no_duplicated_dt_labels(self):
+        fig_calls = []
+        saved = figures._png
+        figures._png = lambda fig: fig_calls.append(fig) or b""
+        try:
+            figures.work_precision(self.summary, "head_on_equal", digest, {"opencl": "cpu"})
+        finally:
+            figures._png = saved
+        ax = fig_calls[0].axes[0]
+        labels = [(t.get_text(), tuple(t.xy)) for t in ax.texts]
+        self.assertEqual(len(labels), len(set(labels)), "two labels at one point")
+        plt.close(fig_calls[0])
+
+    def test_a_panel_without_information_is_not_drawn(self):
+        quiet = {"series": {"time": [0, 1, 2], "kinetic_energy": [1.0, 1.0, 1.0], "total_energy": [1.0, 1.0, 1.0],
+                            "momentum_x": [0.0, 0.0, 0.0], "momentum_y": [0.0, 0.0, 0.0]}, "total_mass": 1.0}
+        self.assertIsNone(figures.conservation([("event", quiet)], "s"))
+
+    def test_page_size(self):
+        size = os.path.getsize(os.path.join(RESULTS, "report", "index.html"))
+        self.assertLess(size, 1_000_000)
+        self.assertNotIn("<table class='checks'><tr><th>case (scene__backend__sweep__seed)", self.html)
+
 
 if __name__ == "__main__":
     if len(sys.argv) < 2:

@@ -35,13 +35,17 @@ def trajectory_scenes(summary):
 
 def chosen_pair(summary, directory, scene):
     """(reference case, [backend case at largest dt, at smallest dt]) or None."""
-    done = [c for c in summary["cases"] if c["scene"] == scene and c["status"] == "completed" and c.get("hdf5_file")
-            and has_frames(os.path.join(directory, c["hdf5_file"]))]
+    done = [c for c in summary["cases"] if c["scene"] == scene and c["status"] == "completed" and c.get("hdf5_file")]
     refs = [c for c in done if c["reference"]]
     if not refs:
         return None
     ref = min(refs, key=lambda c: c["seed"])
-    others = [c for c in done if not c["reference"] and c["seed"] == ref["seed"]]
+    # One suite stores frames for every case or none ([output] frames): the reference decides,
+    # and only the cases that could be drawn are opened.
+    if not has_frames(os.path.join(directory, ref["hdf5_file"])):
+        return None
+    others = [c for c in done if not c["reference"] and c["seed"] == ref["seed"]
+              and has_frames(os.path.join(directory, c["hdf5_file"]))]
     if not others:
         return None
     backend = others[0]["backend"]

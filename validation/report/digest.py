@@ -1,7 +1,8 @@
-"""The numbers of the report, apart from how they are drawn: reading and checking the inputs,
-the per-backend digest, margins, the convergence-order fit on the asymptotic range (with the
-error floor named), whether a statistical difference is resolved, backends that give the same
-numbers bit for bit, and jumps in conservation series.
+"""The numbers of the report, as summary.json holds them, gathered for layout: reading and
+checking the inputs, the per-backend digest, counts per (scene, backend, check), the orders and
+floors and the statistical differences that `collide validate` computed, backends that give the
+same numbers bit for bit, and jumps in conservation series. Nothing here fits, tests or parses
+prose: every number is one summary.json holds.
 
 Every function here takes plain data (the parsed summary.json, a case's result table) and
 returns plain data, so tests can feed it synthetic input (tests/report/).
@@ -25,7 +26,7 @@ SUMMARY_KEYS = {"suite": str, "passed": bool, "counts": dict, "cases": list, "ch
                 "work_precision": list, "provenance": dict, "wall_seconds": NUMBER, "reference": str}
 CASE_KEYS = {"id": str, "scene": str, "backend": str, "status": str, "seed": int, "dt": NUMBER,
              "duration": NUMBER, "wall_seconds": NUMBER}
-CHECK_KEYS = {"subject": str, "check": str, "status": str, "detail": str}
+CHECK_KEYS = {"subject": str, "scene": str, "backend": str, "check": str, "status": str, "detail": str}
 LINE_KEYS = {"scene": str, "backend": str, "points": list, "error_kind": str}
 POINT_KEYS = {"dt": NUMBER, "error": NUMBER, "seconds_per_time_unit": NUMBER}
 
@@ -122,18 +123,14 @@ def load_case(directory, case):
 
 
 # ---------------------------------------------------------------------------------------------
-# Backends
+# Backends: what summary.json says of each (precision, the stepping rule, the reference)
 
-FLOAT_BACKENDS = {"cpu", "opencl", "box2d"}
-
-
-def base_backend(name):
-    """'box2d[shipped]' -> 'box2d': a variant shares its base backend's precision and colour."""
-    return name.split("[", 1)[0]
+def facts(summary, backend):
+    return (summary.get("backends") or {}).get(backend, {})
 
 
-def is_float(backend):
-    return base_backend(backend) in FLOAT_BACKENDS
+def is_float(summary, backend):
+    return bool(facts(summary, backend).get("float"))
 
 
 def anchor(prefix, name):
@@ -150,276 +147,216 @@ def scenes_in_order(summary):
     return list(OrderedDict.fromkeys(c["scene"] for c in summary["cases"]))
 
 
+def check_order(summary):
+    """The checks' names in the order the suite produced them (summary.json's check_order)."""
+    return summary.get("check_order") or list(OrderedDict.fromkeys(c["check"] for c in summary["checks"]))
+
+
+def subject_cases(summary):
+    """subject (a case id or a sweep group's id) -> the cases it covers."""
+    out = {}
+    for c in summary["cases"]:
+        out.setdefault(c["id"], []).append(c)
+        if c.get("group") and c["group"] != c["id"]:
+            out.setdefault(c["group"], []).append(c)
+    return out
+
+
 # ---------------------------------------------------------------------------------------------
 # Margins: how close a check came to its tolerance (1 = at the tolerance, above 1 fails)
 
 def margin(check):
-    """measured ÷ tolerance for an upper bound, tolerance ÷ measured for a lower bound (the
-    KS p-value); None where there is no number to compare (run, stability, left out)."""
-    if check["status"] not in ("pass", "fail") or check["check"] in ("run", "stability"):
-        return None
-    value, tolerance = check.get("value"), check.get("tolerance")
-    if not isinstance(value, NUMBER) or not isinstance(tolerance, NUMBER) or isinstance(value, bool):
-        return None
-    if check.get("comparison") == ">=":
-        if tolerance <= 0:
-            return None
-        return math.inf if value <= 0 else tolerance / value
-    if tolerance <= 0:
-        return None
-    return abs(value) / tolerance
+    """summary.json's margin: measured ÷ tolerance (tolerance ÷ measured for a lower bound);
+    None where there is no number to compare (run, stability, left out)."""
+    m = check.get("margin")
+    return m if isinstance(m, NUMBER) and not isinstance(m, bool) else None
 
 
-def digest(summary, orders=None, floors=None):
-    """One row per backend: cases, checks passed / failed / left out, worst margin (with its
-    case and check), orders per observable class and the error floor. The sums over backends
-    equal summary['counts'] (a check belongs to the backend of its case or group)."""
+# ---------------------------------------------------------------------------------------------
+# Counts that mean something: one per (scene, backend, check)
+
+def combinations(summary):
+    """{(scene, backend, check): {'pass', 'fail', 'left_out', 'cannot_run'}} counts of checks;
+    a left-out check whose case was left out (the backend cannot run the scene) counts as
+    cannot_run, not as left_out (the check does not apply)."""
+    cases = subject_cases(summary)
+    out = OrderedDict()
+    for c in summary["checks"]:
+        key = (c["scene"], c["backend"], c["check"])
+        counts = out.setdefault(key, {"pass": 0, "fail": 0, "left_out": 0, "cannot_run": 0})
+        if c["status"] == "left_out":
+            covered = cases.get(c["subject"], [])
+            cannot = covered and all(x["status"] == "left_out" for x in covered)
+            counts["cannot_run" if cannot else "left_out"] += 1
+        elif c["status"] in counts:
+            counts[c["status"]] += 1
+    return out
+
+
+def combination_status(counts):
+    if counts["fail"]:
+        return "fail"
+    if counts["pass"]:
+        return "pass"
+    return "cannot_run" if counts["cannot_run"] else "left_out"
+
+
+def digest(summary, exclude_quantised=True):
+    """One row per backend: cases that ran and that it cannot run; (scene, check) combinations
+    passed / failed / not applicable / cannot run, and the checks behind them; the worst margin
+    of a check that measures something (quantised counts left out), with how many checks tie
+    at it; orders per observable class and the floors."""
     rows = OrderedDict()
     for b in backends_in_order(summary):
-        rows[b] = {"backend": b, "cases": 0, "pass": 0, "fail": 0, "left_out": 0, "worst": None,
-                   "orders": OrderedDict(), "floors": []}
+        rows[b] = {"backend": b, "cases": 0, "cases_cannot_run": 0, "pass": 0, "fail": 0, "left_out": 0,
+                   "combinations": {"pass": 0, "fail": 0, "left_out": 0, "cannot_run": 0},
+                   "worst": None, "ties": 0, "orders": OrderedDict(), "floors": []}
     for c in summary["cases"]:
-        rows[c["backend"]]["cases"] += 1
+        rows[c["backend"]]["cases_cannot_run" if c["status"] == "left_out" else "cases"] += 1
     for c in summary["checks"]:
-        b = c.get("backend") or subject_backend(c["subject"], rows)
-        row = rows.setdefault(b, {"backend": b, "cases": 0, "pass": 0, "fail": 0, "left_out": 0, "worst": None,
-                                  "orders": OrderedDict(), "floors": []})
+        row = rows[c["backend"]]
         if c["status"] in ("pass", "fail", "left_out"):
             row[c["status"]] += 1
         m = margin(c)
-        if m is not None and (row["worst"] is None or m > row["worst"][0]):
-            row["worst"] = (m, c["subject"], c["check"])
-    for fit in (orders or []):
+        if m is None or (exclude_quantised and c.get("quantised")):
+            continue
+        if row["worst"] is None or m > row["worst"][0]:
+            row["worst"], row["ties"] = (m, c["subject"], c["check"]), 1
+        elif m == row["worst"][0]:
+            row["ties"] += 1
+    for (scene, b, check), counts in combinations(summary).items():
+        rows[b]["combinations"][combination_status(counts)] += 1
+    for fit in orders(summary):
         row = rows.get(fit["backend"])
         if row is None:
             continue
         row["orders"].setdefault(fit["class"], []).append(fit)
-        if fit["floor"]:
+        if fit["floor"] or fit["bending"]:
             row["floors"].append(fit)
     return list(rows.values())
 
 
-def subject_backend(subject, rows):
-    parts = subject.split("__")
-    for part in parts[1:2]:
-        if part in rows:
-            return part
-    return parts[1] if len(parts) > 1 else "?"
-
-
 # ---------------------------------------------------------------------------------------------
-# Statistical differences: resolved or not
+# Statistical differences: the numbers validate wrote for each sweep point
 
-DIFFERENCE = re.compile(r"([-+0-9.eE]+|nan|inf) \+- ([-+0-9.eE]+|nan|inf) vs reference "
-                        r"([-+0-9.eE]+|nan|inf) \+- ([-+0-9.eE]+|nan|inf)")
-RESOLVED_SE = 2.0  # a difference below this many standard errors is "not resolved"
+OBSERVABLES = ("pressure", "collision_rate")
 
 
-def statistical_difference(check):
-    """From a pressure or collision_rate check: relative difference |mu - mu_ref| / mu_ref, its
-    standard error sqrt(se^2 + se_ref^2) / mu_ref, and whether it is resolved (>= 2 SE).
-    None when the check has no such numbers (left out, or an unexpected detail)."""
-    if check["status"] not in ("pass", "fail"):
-        return None
-    m = DIFFERENCE.search(check["detail"])
-    if not m:
-        return None
-    mean, se, ref, ref_se = (float(x) for x in m.groups())
-    if not all(math.isfinite(x) for x in (mean, se, ref, ref_se)) or ref == 0:
-        return None
-    combined = math.hypot(se, ref_se)
-    diff = abs(mean - ref)
-    return {"error": diff / abs(ref), "se": combined / abs(ref), "sigmas": diff / combined if combined > 0 else math.inf,
-            "resolved": combined == 0 and diff > 0 or (combined > 0 and diff >= RESOLVED_SE * combined)}
-
-
-def statistical_points(summary, scene, check_name):
-    """Per backend, the work-precision points of a statistical observable: dt, run time per
-    time unit, relative difference with its SE and resolution, from the group's check."""
-    checks = {c["subject"]: c for c in summary["checks"] if c["check"] == check_name and c.get("scene", scene) == scene}
+def statistical_points(summary, scene, observable):
+    """Per backend, the work-precision points of a statistical observable: dt, run time per time
+    unit, relative difference with its SE, resolution, 95 % upper limit and the smallest bias
+    its check detects (summary.json: work_precision[].points[].pressure / .collision_rate)."""
     lines = OrderedDict()
     for line in summary["work_precision"]:
         if line["scene"] != scene:
             continue
         for p in line["points"]:
-            c = checks.get(p.get("group", ""))
-            d = statistical_difference(c) if c else None
-            if d is None:
+            d = p.get(observable)
+            if not d:
                 continue
+            predicted = d.get("predicted")
             lines.setdefault(line["backend"], []).append(
-                {"dt": p["dt"], "substeps": p.get("substeps", 1) or 1, "seconds": p["seconds_per_time_unit"], **d})
+                {"dt": p["dt"], "substeps": p.get("substeps", 1) or 1, "seconds": p["seconds_per_time_unit"],
+                 "error": abs(d["relative"]), "relative": d["relative"], "se": d["relative_standard_error"],
+                 "sigmas": d["sigmas"], "resolved": d["resolved"], "upper": d["upper_limit_95"],
+                 "detectable": d["detectable"], "replicates": d["replicates"],
+                 "predicted": predicted / d["reference"] if isinstance(predicted, NUMBER) else None})
     return lines
 
 
 def reference_cost(summary, scene):
-    """Mean wall seconds per simulated time unit of the reference's cases of a scene."""
-    costs = [c["wall_seconds"] / c["duration"] for c in summary["cases"]
-             if c["scene"] == scene and c["backend"] == summary["reference"] and c["status"] == "completed"
-             and c["duration"] and c["wall_seconds"] is not None]
-    return sum(costs) / len(costs) if costs else None
+    """The reference's wall seconds per simulated time unit on a scene (summary.json's costs)."""
+    for c in summary.get("costs", []):
+        if c["scene"] == scene and c["backend"] == summary["reference"]:
+            return c["seconds_per_time_unit"]
+    return None
 
 
 # ---------------------------------------------------------------------------------------------
-# Convergence order on the asymptotic range, with the error floor named
+# Convergence orders: validate fits them (validation/convergence_order.h); here they are named
 
-FLAT_SLOPE = 0.3  # below this local order the error has stopped falling with dt
-FLOOR_SE = 2.0    # a statistical point lies on a floor only if it sits this many SE above the descent
-
-
-def floor_kind(backend):
-    """What sets an error floor: rounding for the float rules, Box2D's own tolerances (linear slop,
-    restitution threshold, its iterations) for Box2D, otherwise the method itself."""
-    base = base_backend(backend)
-    if base == "box2d":
+def floor_kind(summary, backend):
+    """What sets an error floor: rounding for a float stepping rule, the solver's own tolerances
+    for a float solver that is not a stepping rule (Box2D), otherwise the method itself."""
+    f = facts(summary, backend)
+    if f.get("float") and not f.get("stepping_rule"):
         return "solver floor"
-    return "float floor" if is_float(backend) else "error floor"
+    return "float floor" if f.get("float") else "error floor"
 
 
-def _flat(e_prev, e, h_prev, h, se_prev=None, se=None):
-    """Whether the error stopped falling from one point to the next, finer one. With standard
-    errors (statistical observables), only when the finer point lies significantly (FLOOR_SE
-    combined SE) above the order-FLAT_SLOPE descent from the coarser one: a noisy point that the
-    descent still explains is no floor."""
-    if h_prev == h:
-        return True
-    slope = math.log(e_prev / e) / math.log(h_prev / h)
-    if slope >= FLAT_SLOPE:
-        return False
-    if se is None or se_prev is None:
-        return True
-    descent = e_prev * (h / h_prev) ** FLAT_SLOPE
-    return e - descent > FLOOR_SE * math.hypot(se, se_prev * (h / h_prev) ** FLAT_SLOPE)
-
-
-def _log_slope(h, e, se=None):
-    """Least-squares slope of log e against log h, and its standard error: weighted by the points'
-    log-space error bars se/e where they have them (sigma of the slope from those bars), otherwise
-    the unweighted fit's residual-based standard error (None with fewer than 3 points)."""
-    x = [math.log(v) for v in h]
-    y = [math.log(v) for v in e]
-    w = [1.0 / (s / v) ** 2 if s else 1.0 for s, v in zip(se, e)] if se and all(se) else [1.0] * len(x)
-    sw = sum(w)
-    mx = sum(wi * a for wi, a in zip(w, x)) / sw
-    my = sum(wi * b for wi, b in zip(w, y)) / sw
-    sxx = sum(wi * (a - mx) ** 2 for wi, a in zip(w, x))
-    slope = sum(wi * (a - mx) * (b - my) for wi, a, b in zip(w, x, y)) / sxx
-    if se and all(se):
-        return slope, math.sqrt(1.0 / sxx)
-    if len(x) < 3:
-        return slope, None
-    resid = sum((b - my - slope * (a - mx)) ** 2 for a, b in zip(x, y)) / (len(x) - 2)
-    return slope, math.sqrt(resid / sxx)
-
-
-def fit_order(points, backend="", min_points=3):
-    """points: [{'dt', 'substeps'?, 'error', 'se'?}] (any order). Sorted from coarse to fine, the
-    asymptotic range ends where the error stops falling: the first point after which every
-    local slope log(e_i-1 / e_i) / log(h_i-1 / h_i) is below FLAT_SLOPE (the error flattens or
-    rises as dt shrinks; for points with standard errors, only where that is significant, see
-    _flat). The order is the least-squares slope of log error against log h on that range
-    (weighted by the error bars where there are some), with its standard error; the points below
-    it are the floor. Returns {'order', 'order_se', 'used', 'floor': {'dt', 'error', 'excluded',
-    'kind'} or None, 'note'}."""
-    pts = sorted((p for p in points if p.get("error") and p["error"] > 0 and math.isfinite(p["error"])),
-                 key=lambda p: -p["dt"] / max(1, p.get("substeps", 1) or 1))
-    h = [p["dt"] / max(1, p.get("substeps", 1) or 1) for p in pts]
-    e = [p["error"] for p in pts]
-    se = [p.get("se") for p in pts]
-    n = len(pts)
-    end = n  # asymptotic range: pts[0:end]
-    if n >= 2:
-        flat = [_flat(e[i - 1], e[i], h[i - 1], h[i], se[i - 1], se[i]) for i in range(1, n)]
-        # flat[i - 1] is about the step into point i; find the smallest k with all later steps flat
-        for k in range(0, n - 1):
-            if all(flat[k:]):
-                end = k + 1
-                break
-    floor = None
-    if end < n:
-        floor = {"dt": pts[end - 1]["dt"], "error": e[end - 1], "excluded": n - end,
-                 "finest": {"dt": pts[-1]["dt"], "error": e[-1]}, "kind": floor_kind(backend)}
-    used = pts[:end]
-    result = {"order": None, "order_se": None, "used": len(used), "points": n, "floor": floor, "note": ""}
-    if len(used) >= min_points and len({h[i] for i in range(end)}) >= min_points:
-        result["order"], result["order_se"] = _log_slope(h[:end], e[:end], se[:end])
-        result["statistical"] = all(se[:end])  # order_se from the points' error bars
-    elif len(used) == 2 and h[0] != h[1]:
-        result["two_point"] = math.log(e[0] / e[1]) / math.log(h[0] / h[1])
-        result["note"] = f"2 points above the floor (slope {result['two_point']:.2f} between them)"
-    else:
-        result["note"] = f"{len(used)} usable point(s); an order needs {min_points}"
-    return result
+def orders(summary):
+    """One per work-precision line: {'scene', 'backend', 'class' ('trajectory' or 'Z'), 'order',
+    'order_se', 'used', 'points', 'h_coarse', 'h_fine', 'floor', 'bending', 'note', 'kind'}."""
+    out = []
+    for line in summary["work_precision"]:
+        r = line.get("order_range") or {}
+        out.append({"scene": line["scene"], "backend": line["backend"],
+                    "class": "trajectory" if line["error_kind"].startswith("trajectory") else "Z",
+                    "order": line.get("order"), "order_se": line.get("order_standard_error"),
+                    "used": r.get("used", 0), "points": r.get("points", 0), "h_coarse": r.get("h_coarse"),
+                    "h_fine": r.get("h_fine"), "floor": r.get("floor"), "bending": bool(r.get("bending")),
+                    "note": line.get("order_note", ""), "kind": floor_kind(summary, line["backend"])})
+    return out
 
 
 FLOOR_CAUSE = {"float floor": "; rounding accumulates below it",
                "solver floor": "; Box2D's tolerances (linear slop, restitution threshold), not dt, set it"}
 
 
-def describe_floor(floor):
-    return (f"{floor['kind']} from dt ≈ {floor['dt']:g} at error ≈ {floor['error']:.2g} "
-            f"({floor['finest']['error']:.2g} at dt = {floor['finest']['dt']:g})"
-            + FLOOR_CAUSE.get(floor["kind"], ""))
+def describe_floor(fit):
+    f = fit["floor"]
+    if not f:
+        return (f"{fit['kind']} suspected: the local order falls along the range" + FLOOR_CAUSE.get(fit["kind"], "")
+                if fit["bending"] else "")
+    return (f"{fit['kind']} from h ≈ {f['h']:g} at error ≈ {f['error']:.2g} "
+            f"({f['finest_error']:.2g} at h = {f['finest_h']:g})" + FLOOR_CAUSE.get(fit["kind"], ""))
 
 
 def describe_order(fit):
-    if fit["order"] is not None:
-        text = f"{fit['order']:.2f}"
-        if fit.get("statistical") and fit.get("order_se") is not None:
-            text += f" ± {fit['order_se']:.2f}"  # a statistical order carries its error bar
-        if fit["floor"]:
-            text += f" (on {fit['used']} of {fit['points']} points)"
-        return text
-    return "n/a: " + fit["note"]
-
-
-def all_orders(summary):
-    """One fit per (scene, backend, observable class): 'trajectory' (mean error over phase
-    replicates) and 'Z' (pressure, resolved points only)."""
-    fits = []
-    for line in summary["work_precision"]:
-        trajectory = line["error_kind"].startswith("trajectory")
-        if trajectory:
-            points = [{"dt": p["dt"], "substeps": p.get("substeps", 1), "error": p["error"]} for p in line["points"]
-                      if p["error"] is not None]
-            fit = fit_order(points, line["backend"])
-            fit["class"] = "trajectory"
-        else:
-            stats = statistical_points(summary, line["scene"], "pressure").get(line["backend"], [])
-            resolved = [p for p in stats if p["resolved"]]
-            fit = fit_order(resolved, line["backend"])
-            fit["class"] = "Z"
-            fit["resolved"] = len(resolved)
-            fit["measured"] = len(stats)
-            if fit["order"] is None:
-                fit["note"] = f"{len(resolved)} of {len(stats)} points resolved (≥ {RESOLVED_SE:g} SE); " + fit["note"]
-        fit.update(scene=line["scene"], backend=line["backend"])
-        fits.append(fit)
-    return fits
+    """One number with its range: '1.06 ± 0.05 on h 0.004–0.00025 (5 points)'."""
+    if fit["order"] is None:
+        return "n/a: " + fit["note"]
+    se = f" ± {fit['order_se']:.2f}" if fit["order_se"] is not None else ""
+    text = f"{fit['order']:.2f}{se} on h {fit['h_coarse']:g}–{fit['h_fine']:g} ({fit['used']} points)"
+    if fit["floor"] or fit["bending"]:
+        text += ", floor-contaminated" if fit["bending"] else f", {fit['floor']['excluded']} below the floor left out"
+    return text
 
 
 def order_summary(fits):
-    """'1.06' or '0.97–1.10 (3 scenes)' for a list of fits of one class."""
-    orders = [f["order"] for f in fits if f["order"] is not None]
-    if not orders:
+    """'1.06 ± 0.05' or '0.97–1.10 (3 scenes)' for a list of fits of one class; a '*' marks a
+    range that includes a floor-contaminated order."""
+    known = [f for f in fits if f["order"] is not None]
+    if not known:
         return "n/a"
-    if len(orders) == 1:
-        return describe_order(next(f for f in fits if f["order"] is not None)).split(" (on")[0]
-    return f"{min(orders):.2f}–{max(orders):.2f} ({len(orders)} scenes)"
+    mark = "*" if any(f["bending"] for f in known) else ""
+    if len(known) == 1:
+        f = known[0]
+        return f"{f['order']:.2f}" + (f" ± {f['order_se']:.2f}" if f["order_se"] is not None else "") + mark
+    values = [f["order"] for f in known]
+    return f"{min(values):.2f}–{max(values):.2f} ({len(known)} scenes){mark}"
 
 
 # ---------------------------------------------------------------------------------------------
 # Backends that give the same numbers bit for bit
 
+def _point_key(case):
+    return (case["scene"], case["dt"], case.get("substeps", 1), json.dumps(case.get("parameters", {}), sort_keys=True))
+
+
 def identical_backends(summary):
     """[(a, b, n)] where backend b gave exactly the numbers of backend a (n compared numbers:
-    every check value and every work-precision point of every scene both ran)."""
+    every check value and every work-precision point of every scene both ran). Checks are
+    matched by scene, sweep point, seed (for a case's checks) and check name."""
+    cases = subject_cases(summary)
     values = OrderedDict()
     for c in summary["checks"]:
-        b = c.get("backend")
-        if not b or c["status"] == "left_out":
+        covered = cases.get(c["subject"])
+        if c["status"] == "left_out" or not covered:
             continue
-        key = (c["subject"].replace(f"__{b}__", "__*__", 1).removesuffix(f"__{b}"), c["check"])
-        values.setdefault(b, {})[key] = (c.get("value"), c["status"])
+        seed = covered[0]["seed"] if len(covered) == 1 else None
+        key = (_point_key(covered[0]), seed, c["check"])
+        values.setdefault(c["backend"], {})[key] = (c.get("value"), c["status"])
     for line in summary["work_precision"]:
         for p in line["points"]:
             values.setdefault(line["backend"], {})[(line["scene"], p["dt"], p.get("substeps", 1), "wp")] = \

@@ -1,7 +1,9 @@
 """Figures of the validation report, one function per figure kind.
 
-Every function returns a PNG as bytes (or None when there is nothing to draw); make_report.py
-embeds them as base64 and writes the caption beside each. Axes carry units: lengths and times
+Every function returns a PNG as bytes (or None when there is nothing to draw), reduced to a
+256-colour palette (the figures are flat colours; a third of the size of full colour);
+make_report.py embeds them as base64 and writes the caption beside each. Every number drawn is
+one summary.json or a case record holds. Axes carry units: lengths and times
 are in the scene's own units, run time in seconds of wall-clock time.
 """
 import io
@@ -11,9 +13,8 @@ import matplotlib
 matplotlib.use("Agg")  # no display: render to memory
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
-from matplotlib.collections import PatchCollection  # noqa: E402
+from matplotlib.collections import EllipseCollection  # noqa: E402
 from matplotlib.lines import Line2D  # noqa: E402
-from matplotlib.patches import Circle  # noqa: E402
 
 # One fixed colour per backend, so a backend looks the same in every figure.
 BACKEND_COLOURS = {"event": "black", "step": "tab:blue", "cpu": "tab:orange",
@@ -35,11 +36,17 @@ def colour(backend):
 STYLES = [("-", 3.2), ("--", 2.2), (":", 2.0), ("-.", 1.5), ((0, (1, 1)), 1.2), ((0, (5, 1)), 1.0)]
 
 
-def _png(fig):
+def _png(fig, dpi=80):
     buffer = io.BytesIO()
-    fig.savefig(buffer, format="png", dpi=90, bbox_inches="tight")
+    fig.savefig(buffer, format="png", dpi=dpi)
     plt.close(fig)
-    return buffer.getvalue()
+    buffer.seek(0)
+    from PIL import Image  # Debian's python3-pil, a dependency of matplotlib
+    with Image.open(buffer) as picture:
+        palette = picture.convert("RGB").quantize(colors=256, method=Image.Quantize.FASTOCTREE)
+    out = io.BytesIO()
+    palette.save(out, format="PNG")
+    return out.getvalue()
 
 
 def tex(text):
@@ -48,10 +55,11 @@ def tex(text):
 
 
 def draw_points(ax, points, colour_, label, marker="o", annotate=True, label_unresolved=True):
-    """One line of a work-precision diagram. points: [{'x', 'y', 'se', 'resolved', 'label'}]
-    sorted as they are to be joined. A resolved point is filled, with its error bar (±1 SE);
-    an unresolved one (difference below 2 SE) is drawn hollow at its 2 SE bound and labelled
-    "not resolved": its true error is somewhere below. Returns the resolved points' line."""
+    """One line of a work-precision diagram. points: [{'x', 'y', 'se', 'resolved', 'upper'?,
+    'label'}] sorted as they are to be joined. A resolved point is filled, with its error bar
+    (±1 SE); an unresolved one (difference below 2 SE) is drawn hollow at its 95 % upper limit
+    'upper' = |Δ| + 1.96 SE (summary.json) and labelled "not resolved". Returns the resolved
+    points' line."""
     resolved = [p for p in points if p["resolved"]]
     line = None
     if resolved:
@@ -63,7 +71,7 @@ def draw_points(ax, points, colour_, label, marker="o", annotate=True, label_unr
     for p in points:
         if p["resolved"]:
             continue
-        y = max(2 * p["se"], 1e-17)
+        y = max(p["upper"], 1e-17)
         ax.plot([p["x"]], [y], linestyle="none", marker=marker, markerfacecolor="none", markeredgecolor=colour_,
                 markersize=7, label=None if (line or resolved or not label) else tex(label) + " (not resolved)")
         if label_unresolved:
@@ -72,7 +80,7 @@ def draw_points(ax, points, colour_, label, marker="o", annotate=True, label_unr
     if annotate:
         for p in points:
             if p.get("label"):
-                ax.annotate(p["label"], (p["x"], p["y"] if p["resolved"] else max(2 * p["se"], 1e-17)),
+                ax.annotate(p["label"], (p["x"], p["y"] if p["resolved"] else max(p["upper"], 1e-17)),
                             textcoords="offset points", xytext=(4, 4), fontsize=6.5)
     return line
 
@@ -90,7 +98,30 @@ def trajectory_points(line):
 
 def statistical_line_points(stats):
     return [{"x": p["seconds"], "y": max(p["error"], 1e-17), "se": p["se"], "resolved": p["resolved"],
-             "label": _dt_label(p["dt"], p["substeps"])} for p in sorted(stats, key=lambda p: -p["dt"])]
+             "upper": p["upper"], "predicted": p["predicted"], "label": _dt_label(p["dt"], p["substeps"])}
+            for p in sorted(stats, key=lambda p: -p["dt"])]
+
+
+def draw_prediction(ax, points, colour_):
+    """The stepped rule's predicted |relative bias| at each point, thin dashes (statistics_bias_model.h)."""
+    predicted = [(p["x"], abs(p["predicted"])) for p in points if p.get("predicted")]
+    if predicted:
+        ax.plot([x for x, _ in predicted], [y for _, y in predicted], linestyle=(0, (2, 2)), linewidth=1,
+                color=colour_, alpha=0.8)
+
+
+def reference_costs(summary, scenes):
+    """The exact solver's cost per time unit on each of `scenes` (summary.json's costs)."""
+    return [(c["scene"], c["seconds_per_time_unit"]) for c in summary.get("costs", [])
+            if c["backend"] == summary["reference"] and c["scene"] in scenes]
+
+
+def draw_reference_costs(ax, summary, scenes, with_names=True):
+    for scene, cost in reference_costs(summary, scenes):
+        ax.axvline(cost, color=colour(summary["reference"]), linestyle="--", linewidth=1)
+        if with_names:
+            ax.annotate(tex(f"{summary['reference']} (exact), {scene}"), (cost, 0.02), xycoords=("data", "axes fraction"),
+                        rotation=90, fontsize=6.5, xytext=(3, 0), textcoords="offset points")
 
 
 SCENE_MARKERS = ["o", "s", "^", "D", "v", "P", "X", "*"]
@@ -105,33 +136,33 @@ def _legend(ax, title="backend"):
 def headline(summary, digest, aliases):
     """The first screen's figure: work against precision for the trajectory scenes (mean
     error over phase replicates ± SE), pressure Z and collision rate (relative difference of
-    the replicate means ± SE; hollow where not resolved), every backend, one marker per scene.
-    The exact solver's own cost per time unit is a dashed vertical line on the statistical
-    panels (its error is statistical only). `aliases`: backend -> the backend it equals bit
-    for bit (drawn once)."""
-    lines = [l for l in summary["work_precision"] if l["points"] and l["backend"] not in aliases]
+    the replicate means ± SE; hollow at the 95 % upper limit where not resolved; the stepped
+    rule's predicted bias in thin dashes), every backend at its own measured cost (a backend with
+    the numbers of another, `aliases`, too: equal errors, not equal costs), one marker per scene.
+    The exact solver's own cost per time unit on each scene is a dashed vertical line on every
+    panel (its error is statistical only, or zero)."""
+    lines = [l for l in summary["work_precision"] if l["points"]]
     trajectory = [l for l in lines if l["error_kind"].startswith("trajectory")]
     statistical_scenes = list(dict.fromkeys(l["scene"] for l in lines if not l["error_kind"].startswith("trajectory")))
     panels = (1 if trajectory else 0) + 2 * (1 if statistical_scenes else 0)
     if not panels:
         return None
-    fig, axes = plt.subplots(1, panels, figsize=(5.0 * panels, 3.9), squeeze=False)
+    fig, axes = plt.subplots(1, panels, figsize=(4.6 * panels, 3.7), squeeze=False)
     axes = list(axes[0])
     used_scenes = []
     every_scene = list(dict.fromkeys(l["scene"] for l in lines))
 
     def scene_marker(scene):
         return SCENE_MARKERS[every_scene.index(scene) % len(SCENE_MARKERS)]
-    names = {b: " = ".join([b] + [x for x, y in aliases.items() if y == b]) for b in
-             dict.fromkeys(l["backend"] for l in lines)}
+    names = {b: b + (f" (numbers of {aliases[b]})" if b in aliases else "")
+             for b in dict.fromkeys(l["backend"] for l in lines)}
     if trajectory:
         ax = axes.pop(0)
         scenes = list(dict.fromkeys(l["scene"] for l in trajectory))
         for line in trajectory:
             marker = scene_marker(line["scene"])
             draw_points(ax, trajectory_points(line), colour(line["backend"]), None, marker, annotate=False)
-        ax.set_xscale("log")
-        ax.set_yscale("log")
+        draw_reference_costs(ax, summary, scenes, with_names=False)
         ax.set_title("trajectory scenes: mean error ± SE over phase replicates", fontsize=9)
         ax.set_ylabel("trajectory error / r_min [dimensionless]")
         used_scenes += [(sc, scene_marker(sc)) for sc in scenes]
@@ -140,25 +171,20 @@ def headline(summary, digest, aliases):
         if not statistical_scenes:
             break
         ax = axes.pop(0)
-        for si, scene in enumerate(statistical_scenes):
+        for scene in statistical_scenes:
             marker = scene_marker(scene)
             for backend, stats in digest.statistical_points(summary, scene, check).items():
-                if backend in aliases:
-                    continue
-                draw_points(ax, statistical_line_points(stats), colour(backend), None, marker, annotate=False,
-                            label_unresolved=False)
-            cost = digest.reference_cost(summary, scene)
-            if cost:
-                ax.axvline(cost, color=colour(summary["reference"]), linestyle="--", linewidth=1)
-                ax.annotate(tex(f"{summary['reference']} (exact), {scene}"), (cost, 0.02), xycoords=("data", "axes fraction"),
-                            rotation=90, fontsize=6.5, xytext=(3, 0), textcoords="offset points")
-        ax.set_xscale("log")
-        ax.set_yscale("log")
+                points = statistical_line_points(stats)
+                draw_points(ax, points, colour(backend), None, marker, annotate=False, label_unresolved=False)
+                draw_prediction(ax, points, colour(backend))
+        draw_reference_costs(ax, summary, statistical_scenes, with_names=False)
         ax.set_title(f"{title}: relative difference of means ± SE", fontsize=9)
         ax.set_ylabel(ylabel)
         if check == "pressure":
             used_scenes += [(sc, scene_marker(sc)) for sc in statistical_scenes]
     for ax in fig.axes:
+        ax.set_xscale("log")
+        ax.set_yscale("log")
         ax.set_xlabel("wall time per simulated time unit [s]")
         ax.grid(True, which="both", alpha=0.3)
     handles = [Line2D([], [], color=colour(b), marker="o", label=tex(names[b])) for b in names]
@@ -168,39 +194,41 @@ def headline(summary, digest, aliases):
             seen.add((scene, marker))
             handles.append(Line2D([], [], color="0.3", marker=marker, linestyle="none", label=tex(scene)))
     handles.append(Line2D([], [], color="0.3", marker="o", markerfacecolor="none", linestyle="none",
-                          label="hollow: not resolved (< 2 SE), drawn at 2 SE"))
+                          label="hollow: not resolved, at |Δ| + 1.96 SE"))
+    handles.append(Line2D([], [], color=colour(summary["reference"]), linestyle="--",
+                          label=tex(f"{summary['reference']} (exact): its cost per time unit")))
     if statistical_scenes:
-        handles.append(Line2D([], [], color=colour(summary["reference"]), linestyle="--",
-                              label=tex(f"{summary['reference']} (exact): its cost per time unit")))
-    fig.tight_layout(rect=(0, 0.1, 1, 1))
-    fig.legend(handles=handles, loc="lower center", ncol=min(len(handles), 7), fontsize=7.5, frameon=False)
+        handles.append(Line2D([], [], color="0.3", linestyle=(0, (2, 2)), label="predicted bias of the stepped rule"))
+    fig.tight_layout(rect=(0, 0.14, 1, 1))
+    fig.legend(handles=handles, loc="lower center", ncol=min(len(handles), 6), fontsize=7, frameon=False)
     return _png(fig)
 
 
 def work_precision(summary, scene, digest, aliases):
-    """One scene's work-precision diagram: one line per backend (bit-identical backends once),
-    dt as labels, error bars ±1 SE, unresolved statistical points hollow; for a statistical
-    scene the exact solver's cost per time unit as a dashed line."""
-    lines = [l for l in summary["work_precision"] if l["scene"] == scene and l["points"] and l["backend"] not in aliases]
+    """One scene's work-precision diagram: one line per backend, each at its own cost, dt as
+    labels (once per backend: a backend with another's numbers is labelled by that one's name),
+    error bars ±1 SE, unresolved statistical points hollow at their 95 % upper limit, the
+    stepped rule's predicted bias dashed; the exact solver's cost per time unit as a dashed line."""
+    lines = [l for l in summary["work_precision"] if l["scene"] == scene and l["points"]]
     if not lines:
         return None
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
-    fits = {(f["scene"], f["backend"]): f for f in digest.all_orders(summary)}
+    fits = {(f["scene"], f["backend"]): f for f in digest.orders(summary)}
     statistical = not lines[0]["error_kind"].startswith("trajectory")
     stats = digest.statistical_points(summary, scene, "pressure") if statistical else {}
     for line in lines:
         b = line["backend"]
-        label = " = ".join([b] + [x for x, y in aliases.items() if y == b])
+        label = b + (f" (numbers of {aliases[b]})" if b in aliases else "")
         fit = fits.get((scene, b))
-        if fit and fit["order"] is not None:
-            label += f" (order {fit['order']:.2f})"
+        if fit and fit["order"] is not None and b not in aliases:
+            label += f" (order {fit['order']:.2f}" + (f" ± {fit['order_se']:.2f}" if fit["order_se"] is not None else "") + ")"
         points = statistical_line_points(stats.get(b, [])) if statistical else trajectory_points(line)
-        draw_points(ax, points, colour(b), label)
-    if statistical:
-        cost = digest.reference_cost(summary, scene)
-        if cost:
-            ax.axvline(cost, color=colour(summary["reference"]), linestyle="--", linewidth=1,
-                       label=tex(f"{summary['reference']} (exact): cost only"))
+        draw_points(ax, points, colour(b), label, annotate=b not in aliases)
+        if statistical:
+            draw_prediction(ax, points, colour(b))
+    for _, cost in reference_costs(summary, [scene]):
+        ax.axvline(cost, color=colour(summary["reference"]), linestyle="--", linewidth=1,
+                   label=tex(f"{summary['reference']} (exact): its cost"))
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("wall time per simulated time unit [s]")
@@ -208,20 +236,25 @@ def work_precision(summary, scene, digest, aliases):
                   else "trajectory error / r_min, mean ± SE [dimensionless]")
     ax.set_title(tex(f"{scene}: work against precision"))
     ax.grid(True, which="both", alpha=0.3)
-    _legend(ax)
+    handles, _ = ax.get_legend_handles_labels()
+    if handles:
+        ax.legend(title="backend", fontsize=6.5, title_fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    fig.tight_layout()
     return _png(fig)
+
+
+QUIET = 1e-9  # a panel whose every line stays below this carries no information
 
 
 def conservation(case_results, scene, jumps=None, labels=None):
     """Relative drift of energy and momentum against time, one line per backend; `jumps`:
-    backend -> {'t0', 't1', 'change'}, the interval where its energy jumped, marked."""
+    backend -> {'t0', 't1', 'change'}, the interval where its energy jumped, marked. A panel
+    in which every backend stays below QUIET is left out and named in a note on the figure."""
     if not case_results:
         return None
-    fig, (ax_e, ax_p) = plt.subplots(1, 2, figsize=(10, 3.8))
     labels = labels or {}
-    for index, (backend, result) in enumerate(case_results):
-        style, width = STYLES[index % len(STYLES)]
-        name = labels.get(backend, backend)
+    series = []
+    for backend, result in case_results:
         s = result["series"]
         t = np.asarray(s["time"], dtype=float)
         if t.size == 0:
@@ -230,74 +263,97 @@ def conservation(case_results, scene, jumps=None, labels=None):
         total = np.asarray(s["total_energy"], dtype=float)
         scale = max(float(np.nanmax(kinetic)), 1e-300)
         energy = total if abs(total[0] - kinetic[0]) > 0 else kinetic
-        ax_e.plot(t, (energy - energy[0]) / scale, color=colour(backend), label=tex(name), linestyle=style,
-                  linewidth=width, alpha=0.85)
-        jump = (jumps or {}).get(backend)
-        if jump:
-            ax_e.axvspan(jump["t0"], jump["t1"], color=colour(backend), alpha=0.2)
-            ax_e.annotate(tex(f"{backend}: {100 * jump['change']:+.2g} % in one interval"), (jump["t1"], 0.05),
-                          xycoords=("data", "axes fraction"), fontsize=7, color=colour(backend))
         px = np.asarray(s["momentum_x"], dtype=float)
         py = np.asarray(s["momentum_y"], dtype=float)
         mscale = np.sqrt(2 * max(result.get("total_mass", 0.0), 1e-300) * max(kinetic[0], 1e-300))
-        ax_p.plot(t, np.hypot(px - px[0], py - py[0]) / mscale, color=colour(backend), label=tex(name),
-                  linestyle=style, linewidth=width, alpha=0.85)
-    ax_e.set_xlabel("simulated time [scene time units]")
-    ax_e.set_ylabel("(E(t) - E(0)) / max K [dimensionless]")
-    ax_e.set_title(tex(f"{scene}: energy drift"))
-    ax_p.set_xlabel("simulated time [scene time units]")
-    ax_p.set_ylabel("|P(t) - P(0)| / sqrt(2 M K(0)) [dimensionless]")
-    ax_p.set_title(tex(f"{scene}: momentum drift"))
-    for ax in (ax_e, ax_p):
+        series.append((backend, t, (energy - energy[0]) / scale, np.hypot(px - px[0], py - py[0]) / mscale))
+    panels = [(k, title, ylabel) for k, title, ylabel in (
+        (2, "energy drift", "(E(t) - E(0)) / max K [dimensionless]"),
+        (3, "momentum drift", "|P(t) - P(0)| / sqrt(2 M K(0)) [dimensionless]"))
+        if any(np.nanmax(np.abs(x[k])) >= QUIET for x in series if x[k].size)]
+    if not panels:
+        return None
+    fig, axes = plt.subplots(1, len(panels), figsize=(5 * len(panels), 3.6), squeeze=False)
+    for ax, (k, title, ylabel) in zip(axes[0], panels):
+        for index, x in enumerate(series):
+            style, width = STYLES[index % len(STYLES)]
+            ax.plot(x[1], x[k], color=colour(x[0]), label=tex(labels.get(x[0], x[0])), linestyle=style,
+                    linewidth=width, alpha=0.85)
+            jump = (jumps or {}).get(x[0]) if k == 2 else None
+            if jump:
+                ax.axvspan(jump["t0"], jump["t1"], color=colour(x[0]), alpha=0.2)
+        ax.set_xlabel("simulated time [scene time units]")
+        ax.set_ylabel(ylabel, fontsize=8)
+        ax.set_title(tex(f"{scene}: {title}"), fontsize=9)
         ax.grid(True, alpha=0.3)
-        ax.legend(title="backend", fontsize=8)
+        ax.legend(title="backend", fontsize=6.5, title_fontsize=7, loc="best", framealpha=0.6)
+    if len(panels) == 1:
+        quiet = "momentum" if panels[0][0] == 2 else "energy"
+        fig.text(0.99, 0.01, f"{quiet}: every backend below {QUIET:g}, not drawn", ha="right", fontsize=7, color="0.4")
     fig.tight_layout()
     return _png(fig)
 
 
+FEW_PAIRS = 10  # fewer pairs than this are drawn one marker each: a histogram of one pair is a flat line
+
+
 def overlap_histogram(case_results, scene, labels=None):
-    """Distribution of relative overlap depths in the final state, per backend."""
+    """Distribution of relative overlap depths in the final state, per backend; a backend with
+    fewer than FEW_PAIRS pairs as one marker per pair on its own row, so that it stays visible."""
     depths = [(b, np.asarray(r["overlap_depths"], dtype=float)) for b, r in case_results]
     depths = [(b, d[d > 0]) for b, d in depths]
     if not any(d.size for _, d in depths):
         return None
-    fig, ax = plt.subplots(figsize=(6.4, 3.8))
+    fig, ax = plt.subplots(figsize=(6.4, 3.6))
     low = min(d.min() for _, d in depths if d.size)
     high = max(d.max() for _, d in depths if d.size)
     bins = np.logspace(np.log10(max(low, 1e-17)), np.log10(max(high, low * 10)), 30)
+    row = 0
     for backend, d in depths:
-        if d.size:
-            name = (labels or {}).get(backend, backend)
-            ax.hist(d, bins=bins, histtype="step", color=colour(backend), label=tex(f"{name} ({d.size} pairs)"))
+        if not d.size:
+            continue
+        name = (labels or {}).get(backend, backend)
+        label = tex(f"{name} ({d.size} pair{'s' if d.size > 1 else ''})")
+        if d.size < FEW_PAIRS:
+            row += 1
+            ax.plot(d, np.full(d.size, 0.5 * row), linestyle="none", marker="v", markersize=8, color=colour(backend),
+                    label=label)
+        else:
+            ax.hist(d, bins=bins, histtype="step", linewidth=1.6, color=colour(backend), label=label)
     ax.set_xscale("log")
     ax.set_xlabel("relative overlap depth (r_i + r_j - d) / (r_i + r_j) [dimensionless]")
     ax.set_ylabel("overlapping pairs [count]")
-    ax.set_title(tex(f"{scene}: overlaps in the final state"))
-    ax.legend(title="backend", fontsize=8)
+    ax.set_title(tex(f"{scene}: overlaps in the final state"), fontsize=9)
+    ax.legend(title="backend", fontsize=7, title_fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     ax.grid(True, alpha=0.3)
+    fig.tight_layout()
     return _png(fig)
 
 
 def configuration(result, world, scene, backend):
-    """The disks at the start and at the end of one case, side by side."""
-    fig, axes = plt.subplots(1, 2, figsize=(9, 4.4))
+    """The disks at the start and at the end of one case, side by side, drawn to scale."""
+    fig, axes = plt.subplots(1, 2, figsize=(8, 3.9))
     for ax, key, title in ((axes[0], "initial", "initial (t = 0)"),
                            (axes[1], "final", f"final (t = {result['duration']:g})")):
         snap = result[key]
-        circles = [Circle((x, y), r) for x, y, r in zip(snap["x"], snap["y"], snap["radius"])]
+        diameters = 2 * np.asarray(snap["radius"], dtype=float)
         speeds = np.hypot(snap["vx"], snap["vy"]) if snap["vx"] else np.zeros(0)
-        collection = PatchCollection(circles, cmap="viridis", edgecolor="none")
+        collection = EllipseCollection(diameters, diameters, np.zeros_like(diameters), units="xy",
+                                       offsets=np.column_stack([snap["x"], snap["y"]]), offset_transform=ax.transData,
+                                       cmap="viridis")
         collection.set_array(speeds)
         ax.add_collection(collection)
         if world:
             ax.set_xlim(world[0], world[2])
             ax.set_ylim(world[1], world[3])
         else:
-            ax.autoscale_view()
+            r = float(diameters.max()) if diameters.size else 1.0
+            ax.set_xlim(min(snap["x"]) - r, max(snap["x"]) + r)
+            ax.set_ylim(min(snap["y"]) - r, max(snap["y"]) + r)
         ax.set_aspect("equal")
         ax.set_xlabel("x [scene length units]")
         ax.set_ylabel("y [scene length units]")
-        ax.set_title(tex(f"{scene} ({backend}): {title}"))
+        ax.set_title(tex(f"{scene} ({backend}): {title}"), fontsize=9)
         fig.colorbar(collection, ax=ax, label="speed |v| [length / time]", shrink=0.8)
     fig.tight_layout()
     return _png(fig)

@@ -2,10 +2,13 @@
 """Renders the report of a validation run from DIR/summary.json and DIR/cases/*.toml as
 written by `collide validate`:
 
-  DIR/report/index.html       self-contained (figures embedded as base64 PNG); its first screen
-                              holds the verdict, the per-backend digest, the table of contents
-                              and the headline work-precision figure
-  DIR/report/checks.html      every check of every case, one row each
+  DIR/report/index.html       self-contained (figures embedded as palette PNGs); its first screen
+                              holds the verdict, one verdict per backend with its cost, the
+                              per-backend digest, the table of contents and the headline
+                              work-precision figure
+  DIR/report/checks.html      every check of every case, one row each (filterable), and every
+                              case's timing
+  DIR/report/checks.csv       every check, one row each
   DIR/report/summary.md       the digest in at most about 80 lines (CI logs, pull requests)
   DIR/report/summary-full.md  every check, as Markdown
 
@@ -13,13 +16,19 @@ Called by `collide report DIR`; docs/reading-a-report.md is a guided tour of the
 malformed input file ends the renderer with exit status 2 and a message naming the file.
 """
 import base64
+import csv
 import html
+import io
 import json
+import math
 import os
 import sys
-import math
 import tomllib
 from collections import OrderedDict
+import multiprocessing
+from concurrent.futures import ProcessPoolExecutor, ThreadPoolExecutor
+
+import jinja2
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import animations  # noqa: E402
@@ -28,30 +37,27 @@ import figures  # noqa: E402
 import physics  # noqa: E402
 import safe_output  # noqa: E402
 import stability  # noqa: E402
+import verdicts  # noqa: E402
 from collide_program import run_collide  # noqa: E402
 from digest import ReportInputError, anchor  # noqa: E402
 
-CHECK_ORDER = ["run", "momentum_drift", "energy_drift", "max_overlap", "mean_overlap", "overlapping_pairs",
-               "wall_penetration", "trajectory_error", "pressure", "collision_rate", "speed_distribution",
-               "stability"]
 
+
+TEMPLATES = jinja2.Environment(loader=jinja2.FileSystemLoader(os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                                                           "templates")),
+                               autoescape=jinja2.select_autoescape(["html.j2"]), trim_blocks=False)
+TEMPLATES.filters["md"] = lambda text: str(text).replace("|", "/").replace("\n", " ")
 
 _CASES = {}
 
 
 def load_case(directory, case):
+    """A case's record, read once. `collide report` has checked every listed record before the
+    renderer starts (core/run_reader, validation/case_result), so only the drawn ones are read."""
     key = (directory, case["id"])
     if key not in _CASES:
         _CASES[key] = digest.load_case(directory, case)
     return _CASES[key]
-
-
-def verify_cases(summary, directory):
-    """Reads every finished case's result file, so that a truncated or unreadable one stops
-    the report with its name rather than being skipped or drawn half."""
-    for case in summary["cases"]:
-        if case["status"] == "completed" and case.get("result_file"):
-            load_case(directory, case)
 
 
 def scene_box(path):
@@ -92,67 +98,23 @@ def representative_cases(summary, directory, scene):
     return [(backend, case, load_case(directory, case)) for backend, case in chosen.items()]
 
 
-def left_out_table(summary):
-    reasons = OrderedDict()
-    for c in summary["checks"]:
-        if c["status"] == "left_out":
-            reasons.setdefault((c["check"], c["detail"]), []).append(c["subject"])
-    if not reasons:
-        return "<p>No check was left out.</p>"
-    out = ["<table><tr><th>check</th><th>reason</th><th>cases</th></tr>"]
-    for (check, reason), subjects in reasons.items():
-        scenes = sorted({s.split("__")[0] for s in subjects})
-        out.append(f"<tr><td>{html.escape(check)}</td><td>{html.escape(reason)}</td>"
-                   f"<td>{len(subjects)} ({html.escape(', '.join(scenes))})</td></tr>")
-    out.append("</table>")
-    return "\n".join(out)
-
-
-def timing_table(summary):
-    out = ["<table><tr><th>case</th><th>status</th><th>disks</th><th>simulated time</th><th>wall time [s]</th>"
-           "<th>s per time unit</th><th>steps / events</th><th>contacts / collisions</th><th>warm-up [s]</th></tr>"]
-    for c in summary["cases"]:
-        per_unit = c["wall_seconds"] / c["duration"] if c["duration"] and c["wall_seconds"] is not None else None
-        per_unit = per_unit if c["wall_seconds"] is not None else None
-        out.append(f"<tr class='{'pass' if c['status'] == 'completed' else 'left_out' if c['status'] == 'left_out' else 'fail'}'>"
-                   f"<td>{html.escape(c['id'])}</td><td>{html.escape(c['status'])}</td><td>{c['disks']}</td>"
-                   f"<td>{fmt(c['duration'])}</td><td>{fmt(c['wall_seconds'])}</td><td>{fmt(per_unit)}</td>"
-                   f"<td>{c.get('steps', '')}</td><td>{c.get('contacts', '')}</td><td>{fmt(c.get('warmup_seconds'))}</td></tr>")
-    out.append("</table>")
-    return "\n".join(out)
-
-
-def provenance_table(summary):
-    rows = dict(summary["provenance"])
-    rows["command line"] = summary.get("command_line", "")
-    rows["suite file"] = summary.get("suite_file", "")
-    for scene, seeds in summary.get("seeds", {}).items():
-        rows[f"seeds of {scene}"] = seeds
-    for scene, path in summary.get("scene_files", {}).items():
-        rows[f"scene file of {scene}"] = path
-    devices = sorted({f"{c['backend']}: {v}" for c in summary["cases"] for k, v in c.get("provenance", {}).items()
-                      if "device" in k or "platform" in k})
-    if devices:
-        rows["devices"] = "; ".join(devices)
-    out = ["<table>"] + [f"<tr><th>{html.escape(k)}</th><td>{html.escape(str(v))}</td></tr>" for k, v in rows.items()]
-    return "\n".join(out + ["</table>"])
-
-
 # ---------------------------------------------------------------------------------------------
-# The analysis every part of the report shares, computed once
+# The analysis every part of the report shares, read once
 
 class Analysis:
     def __init__(self, summary):
         self.summary = summary
-        self.fits = digest.all_orders(summary)
+        self.fits = digest.orders(summary)
         self.fit = {(f["scene"], f["backend"]): f for f in self.fits}
-        self.rows = digest.digest(summary, self.fits)
+        self.rows = digest.digest(summary)
+        self.combinations = digest.combinations(summary)
         self.identical = digest.identical_backends(summary)
         self.aliases = {b: a for a, b, _ in self.identical}
         self.scenes = digest.scenes_in_order(summary)
         self.backends = digest.backends_in_order(summary)
         self.stability = stability.has_outcomes(summary)
         self.unexpected = stability.unexpected(summary) if self.stability else []
+        self.verdicts = [] if self.stability else verdicts.all_verdicts(summary, self.rows, self.aliases)
 
     @property
     def passed(self):
@@ -160,70 +122,102 @@ class Analysis:
         happened (its failed checks are the map's findings); any other suite when no check failed."""
         return not self.unexpected if self.stability else self.summary["passed"]
 
+    def combination_totals(self):
+        totals = {"pass": 0, "fail": 0, "left_out": 0, "cannot_run": 0}
+        for counts in self.combinations.values():
+            totals[digest.combination_status(counts)] += 1
+        return totals
+
 
 def verdict_text(a):
     s, counts = a.summary, a.summary["counts"]
     commit = s["provenance"].get("git_commit", "?")[:12] + (" dirty" if s["provenance"].get("git_dirty") == "true" else "")
     word = "PASSED" if a.passed else "FAILED"
+    ran = sum(r["cases"] for r in a.rows)
+    cannot = sum(r["cases_cannot_run"] for r in a.rows)
     if a.stability:
         classified = sum(1 for c in s["cases"] if "outcome" in c)
         tail = (f"{classified} of {len(s['cases'])} cases classified, {len(a.unexpected)} unexpected "
                 f"({counts['fail']} failed checks are the map's findings)")
     else:
-        tail = f"{counts['pass']} checks passed, {counts['fail']} failed, {counts['left_out']} left out"
+        t = a.combination_totals()
+        tail = (f"{t['pass']} (scene, backend, check) combinations pass, {t['fail']} fail, {t['left_out']} do not "
+                f"apply, {t['cannot_run']} cannot run ({counts['pass']} checks passed, {counts['fail']} failed)")
         judged = [r for r in physics.rows(s) if r["verdict"] != "shown"]
         if judged:
             tail += (f"; reference against physics: {sum(r['verdict'] == 'pass' for r in judged)} of "
                      f"{len(judged)} rows pass")
-    return f"{word}: {tail}; {len(s['cases'])} cases in {s['wall_seconds']:.1f} s (commit {commit})"
+    cases = f"{ran} cases ran" + (f", {cannot} could not (the backend cannot run the scene)" if cannot else "")
+    return f"{word}: {tail}; {cases}; {s['wall_seconds']:.1f} s (commit {commit})"
 
 
-def margin_text(worst, link=True):
+def margin_text(row, link=True):
+    worst = row["worst"]
     if worst is None:
         return "n/a"
     m, subject, check = worst
     text = "∞" if m == math.inf else f"{m:.2f}" if 0.01 <= m < 1e4 else fmt(m)
-    where = f"{subject}: {check.replace('_', ' ')}"
-    return f"{text} <span class='where'>({html.escape(where)})</span>" if link else f"{text} ({where})"
+    ties = f", one of {row['ties']} checks at this value" if row["ties"] > 1 else ""
+    where = f"{check.replace('_', ' ')}{ties}" if link else f"{subject}: {check.replace('_', ' ')}{ties}"
+    return (f"{text} <span class='where' title='{html.escape(subject, quote=True)}'>({html.escape(where)})</span>"
+            if link else f"{text} ({where})")
 
 
 def floor_text(fits, limit=1):
     if not fits:
         return ""
-    parts = [f"{f['scene']}: from dt ≈ {f['floor']['dt']:g} at ≈ {f['floor']['error']:.2g}" for f in fits[:limit]]
+    parts = [f"{f['scene']}: from h ≈ {f['floor']['h']:g} at ≈ {f['floor']['error']:.2g}" if f["floor"] else
+             f"{f['scene']}: floor-contaminated order" for f in fits[:limit]]
     if len(fits) > limit:
         parts.append(f"+{len(fits) - limit} more")
     return "; ".join(parts)
 
 
-def digest_table(a):
-    out = ['<table id="digest" class="digest"><tr><th>backend</th><th>cases</th><th>checks passed</th><th>failed</th>'
-           '<th>left out</th><th>worst margin (measured ÷ tolerance; case: check)</th>'
-           '<th>order: trajectory</th><th>order: Z</th><th>error floor</th></tr>']
+def digest_rows(a, link=True):
+    out = []
     for r in a.rows:
-        b = r["backend"]
-        same = f" <span class='where'>(= {html.escape(a.aliases[b])})</span>" if b in a.aliases else ""
-        cls = "fail" if r["fail"] else "pass"
-        out.append(f"<tr><td><a href='#{anchor('backend', b)}'>{html.escape(b)}</a>{same}</td><td>{r['cases']}</td>"
-                   f"<td class='{cls}'>{r['pass']}</td><td class='{cls}'>{r['fail']}</td><td>{r['left_out']}</td>"
-                   f"<td>{margin_text(r['worst'])}</td>"
-                   f"<td>{digest.order_summary(r['orders'].get('trajectory', []))}</td>"
-                   f"<td>{digest.order_summary(r['orders'].get('Z', []))}</td>"
-                   f"<td>{html.escape(floor_text(r['floors']))}</td></tr>")
-    total = {k: sum(r[k] for r in a.rows) for k in ("cases", "pass", "fail", "left_out")}
-    out.append(f"<tr class='total'><td>all</td><td>{total['cases']}</td><td>{total['pass']}</td><td>{total['fail']}</td>"
-               f"<td>{total['left_out']}</td><td colspan='4'>orders: least-squares slope of log error against log dt on "
-               "the asymptotic range (<a href='#orders'>§3</a>); Z: resolved points only</td></tr>")
-    out.append("</table>")
-    return "\n".join(out)
+        c = r["combinations"]
+        out.append({"backend": r["backend"], "name": r["backend"] + (f" (= {a.aliases[r['backend']]})" if r["backend"] in a.aliases else ""),
+                    "anchor": digest.anchor("backend", r["backend"]), "cases": r["cases"],
+                    "cases_cannot_run": r["cases_cannot_run"], "pass": r["pass"], "fail": r["fail"],
+                    "left_out": r["left_out"], "c_pass": c["pass"], "c_fail": c["fail"], "c_left_out": c["left_out"],
+                    "c_cannot_run": c["cannot_run"], "worst": margin_text(r, link),
+                    "order_trajectory": digest.order_summary(r["orders"].get("trajectory", [])),
+                    "order_z": digest.order_summary(r["orders"].get("Z", [])),
+                    "floor": floor_text(r["floors"], 1 if link else 3)})
+    return out
+
+
+DIGEST = jinja2.Template("""<table id="digest" class="digest"><tr><th>backend</th><th>verdict</th><th>trusted for</th>
+<th>not for</th><th>cost ÷ exact solver's</th><th>cases run (cannot)</th><th>(scene, check) pass / fail / n.a. / cannot run</th>
+<th>worst margin</th><th>order: traj.</th><th>order: Z</th></tr>
+{% for r in rows %}<tr id="verdict-{{ r.anchor }}"><td><a href="#{{ r.anchor }}">{{ r.name }}</a></td>
+<td class="{{ 'fail' if r.failed else 'pass' }}">{{ r.verdict }}</td><td>{{ r.trusted }}</td><td>{{ r.not_for }}</td><td>{{ r.cost }}</td>
+<td>{{ r.cases }}{% if r.cases_cannot_run %} ({{ r.cases_cannot_run }}){% endif %}</td>
+<td class="{{ 'fail' if r.c_fail else 'pass' }}">{{ r.c_pass }} / {{ r.c_fail }} / {{ r.c_left_out }} / {{ r.c_cannot_run }}</td>
+<td>{{ r.worst|safe }}</td><td>{{ r.order_trajectory }}</td><td>{{ r.order_z }}</td></tr>
+{% endfor %}<tr class="total"><td colspan="10">Cost: wall seconds per simulated time unit at the backend's cheapest sweep
+point, over the exact solver's, per scene (<a href="#timings">§5</a>). Counts are (scene, check) combinations, one per check
+of a scene whatever its sweep points and seeds (the checks behind them: {{ checks }}). Worst margin: measured ÷ tolerance,
+quantised counts left out (<a href="#checks">§2</a>). Orders: fitted by <code>collide validate</code> on the asymptotic
+range; * marks a floor-contaminated one; floors in <a href="#orders">§3</a>.</td></tr></table>""", autoescape=True)
+
+
+def digest_table(a):
+    c = a.summary["counts"]
+    verdict_of = {v["backend"]: v for v in a.verdicts}
+    empty = {"verdict": "", "trusted": "", "not_for": "", "cost": "", "failed": False}
+    rows = [dict(r, **{k: v for k, v in verdict_of.get(r["backend"], empty).items() if k in empty})
+            for r in digest_rows(a)]
+    return DIGEST.render(rows=rows, checks=f"{c['pass']} passed, {c['fail']} failed, {c['left_out']} left out")
 
 
 def identical_line(a):
     if not a.identical:
         return ""
     parts = [f"<b>{html.escape(b)}</b> gives the same numbers as <b>{html.escape(x)}</b> bit for bit ({n} compared "
-             "values: every check value and work-precision point), so it is drawn once, labelled "
-             f"“{html.escape(x)} = {html.escape(b)}”" for x, b, n in a.identical]
+             "values: every check value and work-precision point); its errors are drawn once, its costs at its own "
+             "measured cost" for x, b, n in a.identical]
     return "<p class='identical'>" + "; ".join(parts) + ".</p>"
 
 
@@ -236,15 +230,14 @@ def toc(a):
     items += ["<li><a href='#headline'>Work against precision (headline)</a></li>",
               "<li><a href='#failures'>1. Failures</a></li>",
               "<li><a href='#checks'>2. Checks by scene and backend</a> · <a href='checks.html'>every check</a></li>",
-              "<li><a href='#orders'>3. Orders, floors and resolution</a></li>",
+              "<li><a href='#orders'>3. Orders, floors, resolution and power</a></li>",
               "<li><a href='#scenes'>4. Scenes</a>: " + ", ".join(
-                  f"<a href='#{anchor('scene', sc)}'>{html.escape(sc)}</a>" for sc in a.scenes) + "</li>",
-              "<li><a href='#timings'>5. Timings</a></li>", "<li><a href='#provenance'>6. Provenance</a></li>"]
-    backends = ", ".join(f"<a href='#{anchor('backend', b)}'>{html.escape(b)}</a>" for b in a.backends)
-    return (f"<nav id='toc'><b>Contents</b><ul>{''.join(items)}</ul><p>Checks of backend: {backends}</p>"
-            "<p class='where'>Margin: measured ÷ tolerance (above 1 fails). Trajectory error: “worst” is the worst "
-            "phase replicate (the check), “mean ± SE” the mean over replicates (the figures). A statistical "
-            "difference below 2 standard errors is drawn hollow: not resolved.</p></nav>")
+                  f"<a href='#{digest.anchor('scene', sc)}'>{html.escape(sc)}</a>" for sc in a.scenes) + "</li>",
+              "<li><a href='#timings'>5. Timings and the machine</a></li>", "<li><a href='#provenance'>6. Provenance</a></li>"]
+    return (f"<nav id='toc'><b>Contents</b><ul>{''.join(items)}</ul>"
+            "<p class='where'>Margin: measured ÷ tolerance (above 1 fails). Cost: wall seconds per simulated time "
+            "unit at the backend's cheapest sweep point, over the exact solver's. A statistical difference below 2 "
+            "standard errors is drawn hollow at its 95 % upper limit |Δ| + 1.96 SE: not resolved.</p></nav>")
 
 
 def headline_figure(a):
@@ -254,15 +247,14 @@ def headline_figure(a):
     if png is None:
         return (f"<p id='headline'>No work-precision data: it needs the reference backend "
                 f"'{html.escape(a.summary['reference'])}' and a scene compared by trajectory or statistics.</p>")
-    return image(png, "<b>Work against precision, every backend.</b> Horizontal: wall-clock seconds per unit of "
-                 "simulated time (after a warm-up, mean over replicates). Vertical: left, the trajectory error "
-                 "against the exact solver (mean over phase replicates ± 1 SE, one marker shape per scene); middle "
-                 "and right, the relative difference between the replicate means of pressure Z and collision rate "
-                 "and the exact solver's (± 1 combined SE). Points are joined in the order of dt (coarse on the "
-                 "left). A hollow point is not resolved (difference below 2 SE) and sits at its 2 SE bound. The "
-                 f"dashed lines are the exact solver '{html.escape(a.summary['reference'])}' own cost per time unit: "
-                 "its error is statistical only. Down and to the left is better.",
-                 "headline work-precision figure", "headline")
+    return image(png, "<b>Work against precision, every backend at its own cost.</b> Horizontal: wall-clock seconds "
+                 "per unit of simulated time (after a warm-up, mean over replicates). Vertical: left, the trajectory "
+                 "error against the exact solver (mean over phase replicates ± 1 SE, one marker shape per scene); "
+                 "middle and right, the relative difference between the replicate means of pressure Z and collision "
+                 "rate and the exact solver's (± 1 combined SE); thin dashes: the stepped rule's predicted bias. A "
+                 "hollow point is not resolved (below 2 SE) and sits at its 95 % upper limit |Δ| + 1.96 SE. The "
+                 f"vertical dashed lines are the exact solver '{html.escape(a.summary['reference'])}' own cost per "
+                 "time unit on each scene. Down and to the left is better.", "headline work-precision figure", "headline")
 
 
 def failures(a):
@@ -276,14 +268,13 @@ def failures(a):
     if not failed:
         return "<p class='pass'>Every applicable check passed.</p>"
     out = ["<table><tr><th>case</th><th>check</th><th>diagnostic</th></tr>"]
-    for c in failed:
+    for c in failed[:200]:
         out.append(f"<tr class='fail'><td>{html.escape(c['subject'])}</td><td>{html.escape(c['check'])}</td>"
                    f"<td><pre>{html.escape(c['detail'])}</pre></td></tr>")
     out.append("</table>")
+    if len(failed) > 200:
+        out.append(f"<p>... and {len(failed) - 200} more on <a href='checks.html'>checks.html</a>.</p>")
     return "\n".join(out)
-
-
-CHECK_LABELS = {"trajectory_error": "trajectory error (worst replicate)"}
 
 
 def predicted_text(c, percent=False):
@@ -297,74 +288,91 @@ def predicted_text(c, percent=False):
         # (docs/stepping-rules.md, "Energy at e = 1"), so the model predicts its size, not a sign.
         return f"drifts {100 * abs(v or 0):.2g} % where the rule is expected to drift {100 * p:.2g}{unc} %"
     if c.get("check") in ("pressure", "collision_rate"):
-        # The value is then the distance from the predicted difference in standard deviations;
-        # the prediction is the stepped rule's bias against the reference (Z, or collisions per
-        # disk per time), signed.
         unc = f" ± {u:.2g}" if isinstance(u, (int, float)) else ""
         what = "Z" if c["check"] == "pressure" else "the rate"
         return f"the rule is expected to shift {what} by {p:+.3g}{unc} from the reference"
     return f"expected {fmt(p)}" + (f" ± {fmt(u)}" if isinstance(u, (int, float)) else "")
 
 
-def cell(c, name):
-    title = html.escape(c["detail"], quote=True)
-    if c["status"] == "left_out":
-        return f"<td class='left_out' title='{title}'>left out</td>"
-    if name == "run" and c["status"] == "pass":
-        text = "ok"
-    elif name == "stability":
-        text = html.escape(c["detail"].split(":")[0])
-    else:
-        text = f"{fmt(c.get('value'))} {html.escape(c.get('comparison', ''))} {fmt(c.get('tolerance'))}"
-        extra = predicted_text(c)
-        if extra:
-            text += f" <span class='where'>({html.escape(extra)})</span>"
-    return f"<td class='{html.escape(c['status'])}' title='{title}'>{text}</td>"
-
-
-def check_tables(a):
-    """Case tables collapsed by scene and backend, each sorted by worst margin (failures first)."""
-    by = OrderedDict()
+def check_matrix(a):
+    """One table per scene: a row per backend, a column per check; each cell the counts of its
+    cases or groups and the worst margin."""
+    worst = {}
     for c in a.summary["checks"]:
-        b = c.get("backend") or digest.subject_backend(c["subject"], {x: 1 for x in a.backends})
-        scene = c.get("scene") or c["subject"].split("__")[0]
-        by.setdefault(scene, OrderedDict()).setdefault(b, OrderedDict()).setdefault(c["subject"], {})[c["check"]] = c
-    out = []
-    seen_backends = set()
-    for scene, backends in by.items():
-        n_fail = sum(1 for bs in backends.values() for cs in bs.values() for c in cs.values() if c["status"] == "fail")
-        n_subjects = sum(len(bs) for bs in backends.values())
-        out.append(f"<details class='scene' id='{anchor('checks', scene)}'{' open' if n_fail else ''}>"
-                   f"<summary><b>{html.escape(scene)}</b>: {n_subjects} rows, {n_fail} failed checks</summary>")
-        for b, subjects in backends.items():
-            ident = "" if b in seen_backends else f" id='{anchor('backend', b)}'"
-            seen_backends.add(b)
-
-            def worst(item):
-                ms = [digest.margin(c) for c in item[1].values()]
-                fails = sum(1 for c in item[1].values() if c["status"] == "fail")
-                return (-fails, -max([m for m in ms if m is not None], default=-1))
-            rows = sorted(subjects.items(), key=worst)
-            present = [n for n in CHECK_ORDER if any(n in cs for cs in subjects.values())]
-            fails = sum(1 for cs in subjects.values() for c in cs.values() if c["status"] == "fail")
-            top = max((m for cs in subjects.values() for c in cs.values() if (m := digest.margin(c)) is not None),
-                      default=None)
-            out.append(f"<details class='backend'{ident}{' open' if fails else ''}><summary>{html.escape(b)}: "
-                       f"{len(subjects)} rows, {fails} failed, worst margin {fmt(top)}</summary>")
-            out.append("<table class='checks'><tr><th>case (scene__backend__sweep__seed)</th><th>worst margin</th>")
-            out += [f"<th>{html.escape(CHECK_LABELS.get(n, n.replace('_', ' ')))}</th>" for n in present] + ["</tr>"]
-            for subject, checks in rows:
-                ms = [m for c in checks.values() if (m := digest.margin(c)) is not None]
-                out.append(f"<tr><td class='subject'>{html.escape(subject)}</td><td>{fmt(max(ms)) if ms else ''}</td>")
-                out += [cell(checks[n], n) if n in checks else "<td></td>" for n in present]
-                out.append("</tr>")
-            out.append("</table></details>")
-        out.append("</details>")
-    # A backend with no checks still gets its anchor (the digest links to it).
-    for b in a.backends:
-        if b not in seen_backends:
-            out.append(f"<p id='{anchor('backend', b)}'>{html.escape(b)}: no checks.</p>")
+        m = digest.margin(c)
+        key = (c["scene"], c["backend"], c["check"])
+        if m is not None and (key not in worst or m > worst[key][0]):
+            worst[key] = (m, c.get("quantised", False))
+    names = digest.check_order(a.summary)
+    out, anchored = [], set()
+    for scene in a.scenes:
+        keys = [k for k in a.combinations if k[0] == scene]
+        present = [n for n in names if any(k[2] == n for k in keys)]
+        backends = list(OrderedDict.fromkeys(k[1] for k in keys))
+        fails = sum(a.combinations[k]["fail"] for k in keys)
+        out.append(f"<details class='scene' id='{digest.anchor('checks', scene)}'{' open' if fails else ''}>"
+                   f"<summary><b>{html.escape(scene)}</b>: {len(keys)} (backend, check) combinations, {fails} failed "
+                   "checks</summary><table class='checks'><tr><th>backend</th>"
+                   + "".join(f"<th>{html.escape(n.replace('_', ' '))}</th>" for n in present) + "</tr>")
+        for b in backends:
+            ident = "" if b in anchored else f" id='{digest.anchor('backend', b)}'"  # the digest's links land here
+            anchored.add(b)
+            out.append(f"<tr{ident}><td>{html.escape(b)}</td>")
+            for n in present:
+                counts = a.combinations.get((scene, b, n))
+                if not counts:
+                    out.append("<td></td>")
+                    continue
+                status = digest.combination_status(counts)
+                text = {"pass": f"{counts['pass']} ✓", "fail": f"{counts['fail']} ✗ of {counts['pass'] + counts['fail']}",
+                        "left_out": "n/a", "cannot_run": "cannot run"}[status]
+                if status == "pass" and counts["left_out"]:
+                    text += f", {counts['left_out']} n/a"
+                m = worst.get((scene, b, n))
+                if m and status in ("pass", "fail"):
+                    text += f" · {'≡' if m[1] else ''}{fmt(m[0])}"
+                out.append(f"<td class='{status}'>{text}</td>")
+            out.append("</tr>")
+        out.append("</table></details>")
+    for b in a.backends:  # a backend without checks still gets its anchor
+        if b not in anchored:
+            out.append(f"<p id='{digest.anchor('backend', b)}'>{html.escape(b)}: no checks.</p>")
     return "\n".join(out)
+
+
+def left_out_table(a):
+    """Left-out checks grouped by why: how many (scene, backend, check) combinations and checks."""
+    cases = digest.subject_cases(a.summary)
+    reasons = OrderedDict()
+    for c in a.summary["checks"]:
+        if c["status"] != "left_out":
+            continue
+        covered = cases.get(c["subject"], [])
+        kind = "cannot run" if covered and all(x["status"] == "left_out" for x in covered) else "does not apply"
+        reason = c["detail"] if kind == "does not apply" else (covered[0].get("diagnostic") or c["detail"])
+        entry = reasons.setdefault((kind, c["check"], reason), {"checks": 0, "combos": set(), "scenes": set()})
+        entry["checks"] += 1
+        entry["combos"].add((c["scene"], c["backend"]))
+        entry["scenes"].add(c["scene"])
+    if not reasons:
+        return "<p>No check was left out.</p>"
+    out = ["<table><tr><th>kind</th><th>check</th><th>reason</th><th>(scene, backend) combinations</th><th>checks</th>"
+           "<th>scenes</th></tr>"]
+    for (kind, check, reason), e in reasons.items():
+        out.append(f"<tr><td>{kind}</td><td>{html.escape(check)}</td><td>{html.escape(reason)}</td><td>{len(e['combos'])}</td>"
+                   f"<td>{e['checks']}</td><td>{html.escape(', '.join(sorted(e['scenes'])))}</td></tr>")
+    out.append("</table>")
+    return "\n".join(out)
+
+
+def statistical_point_text(p):
+    if p["resolved"]:
+        text = f"{p['dt']:g}: {p['relative']:+.3g} ± {p['se']:.2g} ({p['sigmas']:.1f} SE)"
+    else:
+        text = f"{p['dt']:g}: {p['relative']:+.3g} ± {p['se']:.2g} (not resolved; |Δ| ≤ {p['upper']:.2g} at 95 %)"
+    if p["predicted"] is not None:
+        text += f", predicted {p['predicted']:+.3g}"
+    return text + f"; detectable ≥ {p['detectable']:.2g}; {fmt(p['seconds'])} s"
 
 
 def orders_table(a):
@@ -374,7 +382,7 @@ def orders_table(a):
                 f"'{html.escape(s['reference'])}' and a scene compared by trajectory or statistics.</p>")
     out = ["<table><tr><th>scene</th><th>backend</th><th>error measure</th>"
            "<th>points (dt: error ± SE; s per time unit)</th><th>order on the asymptotic range</th>"
-           "<th>floor</th><th>straight fit through every point</th></tr>"]
+           "<th>floor</th></tr>"]
     for line in s["work_precision"]:
         fit = a.fit.get((line["scene"], line["backend"]))
         b = line["backend"]
@@ -383,17 +391,55 @@ def orders_table(a):
             pts = "; ".join(f"{p['dt']:g}: {fmt(p['error'])} ± {fmt(p.get('error_standard_error'))}; "
                             f"{fmt(p['seconds_per_time_unit'])} s" for p in line["points"])
         else:
-            measure = "|Z − Z_ref| / Z_ref, means ± combined SE"
-            stats = digest.statistical_points(s, line["scene"], "pressure").get(b, [])
-            pts = "; ".join(f"{p['dt']:g}: {fmt(p['error'])} ± {fmt(p['se'])} = {p['sigmas']:.1f} SE"
-                            f"{'' if p['resolved'] else ' (not resolved)'}; {fmt(p['seconds'])} s" for p in stats)
+            measure = "(Z − Z_ref) / Z_ref, means ± combined SE"
+            pts = "<br>".join(html.escape(statistical_point_text(p))
+                              for p in digest.statistical_points(s, line["scene"], "pressure").get(b, []))
         same = f" (= {html.escape(a.aliases[b])})" if b in a.aliases else ""
-        floor = html.escape(digest.describe_floor(fit["floor"])) if fit["floor"] else ""
         out.append(f"<tr><td>{html.escape(line['scene'])}</td><td>{html.escape(b)}{same}</td><td>{measure}</td>"
-                   f"<td>{pts}</td><td>{html.escape(digest.describe_order(fit))}</td><td>{floor}</td>"
-                   f"<td>{fmt(line.get('order')) if line.get('order') is not None else ''}</td></tr>")
+                   f"<td>{pts}</td><td>{html.escape(digest.describe_order(fit))}</td>"
+                   f"<td>{html.escape(digest.describe_floor(fit))}</td></tr>")
     out.append("</table>")
     return "\n".join(out)
+
+
+def bias_fit_rows(summary):
+    out = []
+    for f in summary.get("bias_fits", []):
+        name = "c_Z" if f["observable"] == "pressure" else "c_ν"
+        z = (f["constant"] - f["model"]) / math.hypot(f["standard_error"], f["model_uncertainty"])
+        out.append({"backend": f["backend"], "name": name, "fitted": f"{f['constant']:.3g} ± {f['standard_error']:.2g}",
+                    "model": f"{f['model']:.3g} ± {f['model_uncertainty']:.2g}", "z": f"{z:+.1f}",
+                    "chi2": f"{f['chi2']:.1f} on {f['degrees_of_freedom']}",
+                    "chi2_model": f"{f['chi2_model']:.1f} on {f['points']}", "points": f["points"]})
+    return out
+
+
+BIAS_FITS = jinja2.Template("""{% if rows %}<h3 id="bias-fits">The stepped rules' bias, fitted over the whole run</h3>
+<p>Each statistical check above judges one sweep point. Fitted jointly over every point of a backend, the bias constant
+(docs/validation.md, “The stepped rules' statistics bias”) says whether the points agree with the model together:
+χ² of the fitted constant on n − 1 degrees of freedom, and of the model's own constant on n.</p>
+<table id="bias-fit-table"><tr><th>backend</th><th>constant</th><th>fitted (this run)</th><th>model</th>
+<th>(fitted − model) / SE</th><th>χ² fitted</th><th>χ² model</th></tr>
+{% for r in rows %}<tr><td>{{ r.backend }}</td><td>{{ r.name }}</td><td>{{ r.fitted }}</td><td>{{ r.model }}</td><td>{{ r.z }}</td>
+<td>{{ r.chi2 }}</td><td>{{ r.chi2_model }}</td></tr>{% endfor %}</table>{% endif %}""", autoescape=True)
+
+
+def explain_requests(a, chosen_by_scene):
+    """The energy jumps of the cases shown, for scenes where energy is conserved (its check
+    applies): {scene: {backend: (case, jump)}}."""
+    out = {}
+    for scene, chosen in chosen_by_scene.items():
+        conserved = (scene, "energy_drift") in {(k[0], k[2]) for k, v in a.combinations.items()
+                                               if v["pass"] or v["fail"]}
+        if not conserved:
+            continue
+        for backend, case, result in chosen:
+            if backend == a.summary["reference"] or backend in a.aliases:
+                continue
+            j = digest.energy_jumps(result)
+            if j:
+                out.setdefault(scene, {})[backend] = (case, j)
+    return out
 
 
 def explain_jump(directory, case, jump):
@@ -415,85 +461,154 @@ def explain_jump(directory, case, jump):
     return f" In detail: {html.escape(found['description'])}.{share}"
 
 
-def jump_notes(scene, chosen, a, directory):
-    """Energy jumps of the cases shown, for scenes where energy is conserved (its check applies),
-    each named down to its step and disks by `collide explain`."""
-    conserved = any(c["check"] == "energy_drift" and c["status"] != "left_out" and c.get("scene") == scene
-                    for c in a.summary["checks"])
-    jumps, notes = {}, []
-    if not conserved:
-        return jumps, ""
-    for backend, case, result in chosen:
-        if backend == a.summary["reference"] or backend in a.aliases:
-            continue
-        j = digest.energy_jumps(result)
-        if not j:
-            continue
-        jumps[backend] = j
-        detail = explain_jump(directory, case, j)
+def jump_notes(a, jumps, explained):
+    notes = []
+    for backend, (case, j) in jumps.items():
         notes.append(f"<li><b>{html.escape(backend)}</b> ({html.escape(case['id'])}): the energy changes by "
                      f"{100 * j['change']:+.2g} % of max K between t = {j['t0']:g} and t = {j['t1']:g}, one output "
-                     f"interval; the median interval changes it by {100 * j['median']:.2g} %.{detail}</li>")
+                     f"interval; the median interval changes it by {100 * j['median']:.2g} %.{explained[case['id']]}</li>")
     if not notes:
-        return jumps, ""
-    box2d = any(digest.base_backend(b) == "box2d" for b in jumps)
-    return jumps, ("<p>Energy jumps in the cases shown:</p><ul>" + "".join(notes) + "</ul><p>Why the stepped rule "
-                   "changes the energy in one step where several contacts meet (three disks in contact at once, a disk "
-                   "touching a wall and a disk; `collide explain` reruns a case and names them): "
-                   "docs/stepping-rules.md, section 7, “Energy at e = 1”. An isolated pair keeps its energy at e = 1 "
-                   "in the stepped rules." + (" Where Box2D's isolated pair loses energy, look first at its "
-                   "restitution threshold, below which it makes a collision inelastic (docs/box2d-baseline.md)."
-                   if box2d else "") + "</p>")
+        return ""
+    box2d = any(digest.facts(a.summary, b).get("base") == "box2d" for b in jumps)
+    return ("<p>Energy jumps in the cases shown:</p><ul>" + "".join(notes) + "</ul><p>Why the stepped rule "
+            "changes the energy in one step where several contacts meet (three disks in contact at once, a disk "
+            "touching a wall and a disk; `collide explain` reruns a case and names them): "
+            "docs/stepping-rules.md, section 7, “Energy at e = 1”. An isolated pair keeps its energy at e = 1 "
+            "in the stepped rules." + (" Where Box2D's isolated pair loses energy, look first at its "
+            "restitution threshold, below which it makes a collision inelastic (docs/box2d-baseline.md)."
+            if box2d else "") + "</p>")
+
+
+def scene_section(summary, directory, a, scene, chosen, jumps):
+    """One scene's figures and notes, as a list of HTML parts; the energy-jump notes are a
+    placeholder ("JUMPS", scene, jumps) filled in once `collide explain` has answered."""
+    parts = [f"<h3 id='{digest.anchor('scene', scene)}'>{html.escape(scene)}</h3>"]
+    if not chosen:
+        return parts + ["<p>No case of this scene finished; see the failures above.</p>"]
+    shown = [(b, r) for b, _, r in chosen if b not in a.aliases]
+    labels = {b: " = ".join([b] + [x for x, y in a.aliases.items() if y == b]) for b, _ in shown}
+    parts.append(image(figures.work_precision(summary, scene, digest, a.aliases),
+                       f"<b>Work against precision, {html.escape(scene)}.</b> Each point is one time step "
+                       "(labelled dt) of one backend at its own cost: horizontal, the wall-clock seconds it needs "
+                       "per unit of simulated time (after a warm-up, mean over replicates); vertical, its error "
+                       f"against the exact event-driven reference '{html.escape(summary['reference'])}' with ± 1 "
+                       "SE (hollow: not resolved, drawn at the 95 % upper limit |Δ| + 1.96 SE; the vertical "
+                       "dashed line: the exact solver's own cost). Down and to the left is better. The order in "
+                       "the legend is the one validate fitted on the asymptotic range (§3).",
+                       "work-precision diagram"))
+    which = ", ".join(f"{b} at dt = {c['dt']:g}, seed {c['seed']}" for b, c, _ in chosen)
+    drift = figures.conservation(shown, scene, {b: j for b, (_, j) in jumps.items()}, labels)
+    parts.append(image(drift, f"<b>Conservation, {html.escape(scene)}.</b> Change of the energy (total energy under "
+                       "gravity, else kinetic) since t = 0, divided by the largest kinetic energy seen, and of "
+                       "the total momentum, divided by sqrt(2 M K(0)); a panel where every backend stays below "
+                       f"{figures.QUIET:g} is not drawn (the figure says which). Backends are drawn with different "
+                       "dashes and widths, so lines that coincide stay visible. "
+                       f"Cases shown: {html.escape(which)}.", "conservation time series")
+                 if drift else f"<p>Energy and momentum stay within {figures.QUIET:g} of their start in every "
+                               f"case shown ({html.escape(which)}): no conservation figure.</p>")
+    parts.append(("JUMPS", scene, jumps))
+    hist = figures.overlap_histogram(shown, scene, labels)
+    if hist:
+        parts.append(image(hist, f"<b>Overlaps, {html.escape(scene)}.</b> How deep overlapping pairs of disks "
+                           "intersect in the final state, relative to their contact distance (0 = touching, 1 = "
+                           f"concentric); a backend with fewer than {figures.FEW_PAIRS} pairs is drawn as one marker "
+                           "per pair. Hard disks never overlap; stepped solvers detect contacts only after they "
+                           f"happen, so some overlap is part of their rule. Cases shown: {html.escape(which)}.",
+                           "overlap histogram"))
+    else:
+        parts.append("<p>No overlapping pairs in the final state of the cases shown.</p>")
+    backend, case, result = chosen[0]
+    box = scene_box(summary.get("scene_files", {}).get(scene, ""))
+    parts.append(image(figures.configuration(result, box, scene, backend),
+                       f"<b>Configuration, {html.escape(scene)}.</b> The disks (drawn to scale, coloured by "
+                       f"speed) at the start and at the end of the case {html.escape(case['id'])}, inside the "
+                       "scene's box.", "initial and final configuration"))
+    parts.append(animations.section(summary, directory, scene, image))  # motion strips, if frames were stored
+    return parts
+
+
+_SHARED = {}  # what the drawing processes inherit when forked (nothing is pickled but a scene name)
+
+
+def _scene_section_worker(scene):
+    s = _SHARED
+    return scene_section(s["summary"], s["directory"], s["a"], scene, s["chosen"][scene], s["requests"].get(scene, {}))
 
 
 def scene_sections(summary, directory, a=None):
+    """Every scene's section. The figures are drawn by forked processes, one scene each, as many
+    at a time as there are cores; `collide explain` reruns each jump's case meanwhile, side by side."""
     a = a or Analysis(summary)
-    parts = []
-    for scene in a.scenes:
-        chosen = representative_cases(summary, directory, scene)
-        parts.append(f"<h3 id='{anchor('scene', scene)}'>{html.escape(scene)}</h3>")
-        if not chosen:
-            parts.append("<p>No case of this scene finished; see the failures above.</p>")
+    chosen_by_scene = OrderedDict((scene, representative_cases(summary, directory, scene)) for scene in a.scenes)
+    requests = explain_requests(a, chosen_by_scene)
+    cores = max(1, os.cpu_count() or 1)
+    with ThreadPoolExecutor(max_workers=cores) as threads:
+        futures = {case["id"]: threads.submit(explain_jump, directory, case, j)
+                   for jumps in requests.values() for case, j in jumps.values()}
+        _SHARED.update(summary=summary, directory=directory, a=a, chosen=chosen_by_scene, requests=requests)
+        try:
+            with ProcessPoolExecutor(max_workers=cores, mp_context=multiprocessing.get_context("fork")) as pool:
+                sections = list(pool.map(_scene_section_worker, a.scenes))
+        finally:
+            _SHARED.clear()
+        explained = {k: f.result() for k, f in futures.items()}
+    return "\n".join(jump_notes(a, p[2], explained) if isinstance(p, tuple) else p
+                     for parts in sections for p in parts)
+
+
+def machine_text(summary):
+    """The machine the timings come from: processor, cores, load, and how many threads each
+    case ran with times the cases run at once (summary.json's machine, execution, provenance)."""
+    m = summary.get("machine") or {}
+    jobs = (summary.get("execution") or {}).get("jobs", "?")
+    threads = OrderedDict()
+    for c in summary["cases"]:
+        for k, v in (c.get("provenance") or {}).items():
+            if k.endswith(".threads"):
+                threads.setdefault(c["backend"], set()).add(v)
+    cores = m.get("cores")
+    parts = [f"Processor: {html.escape(m.get('cpu_model', '?'))}, {cores} cores; load average when the run ended "
+             f"{fmt(m.get('load_1min'))} (1 min), {fmt(m.get('load_5min'))} (5 min), {fmt(m.get('load_15min'))} (15 min); "
+             f"{html.escape(str(jobs))} cases at a time (--jobs)."]
+    for b, values in threads.items():
+        t = max(int(v) for v in values if str(v).isdigit()) if any(str(v).isdigit() for v in values) else None
+        if t is None:
             continue
-        results = [(b, r) for b, _, r in chosen]
-        shown = [(b, r) for b, r in results if b not in a.aliases]
-        labels = {b: " = ".join([b] + [x for x, y in a.aliases.items() if y == b]) for b, _ in shown}
-        parts.append(image(figures.work_precision(summary, scene, digest, a.aliases),
-                           f"<b>Work against precision, {html.escape(scene)}.</b> Each point is one time step "
-                           "(labelled dt) of one backend: horizontal, the wall-clock seconds it needs per unit of "
-                           "simulated time (after a warm-up, mean over replicates); vertical, its error against the "
-                           f"exact event-driven reference '{html.escape(summary['reference'])}' with ± 1 SE: the mean "
-                           "over phase replicates for trajectories, the difference of replicate means for Z (hollow: "
-                           "not resolved, below 2 SE; dashed: the exact solver's own cost). Down and to the left is "
-                           "better. The order in the legend is fitted on the asymptotic range (§3).",
-                           "work-precision diagram"))
-        which = ", ".join(f"{b} at dt = {c['dt']:g}, seed {c['seed']}" for b, c, _ in chosen)
-        jumps, notes = jump_notes(scene, chosen, a, directory)
-        parts.append(image(figures.conservation(shown, scene, jumps, labels),
-                           f"<b>Conservation, {html.escape(scene)}.</b> Left: change of the energy (total energy "
-                           "under gravity, else kinetic) since t = 0, divided by the largest kinetic energy seen. "
-                           "Right: change of the total momentum, divided by sqrt(2 M K(0)). Exact dynamics keeps both "
-                           "at zero where the scene conserves them (the checks say where it does not). Backends are "
-                           "drawn with different dashes and widths, so lines that coincide stay visible. "
-                           f"Cases shown: {html.escape(which)}.", "conservation time series"))
-        parts.append(notes)
-        hist = figures.overlap_histogram(shown, scene, labels)
-        if hist:
-            parts.append(image(hist, f"<b>Overlaps, {html.escape(scene)}.</b> Histogram of how deep overlapping "
-                               "pairs of disks intersect in the final state, relative to their contact distance "
-                               "(0 = touching, 1 = concentric). Hard disks never overlap; stepped solvers detect "
-                               "contacts only after they happen, so some overlap is part of their rule. "
-                               f"Cases shown: {html.escape(which)}.", "overlap histogram"))
-        else:
-            parts.append("<p>No overlapping pairs in the final state of the cases shown.</p>")
-        backend, case, result = chosen[0]
-        box = scene_box(summary.get("scene_files", {}).get(scene, ""))
-        parts.append(image(figures.configuration(result, box, scene, backend),
-                           f"<b>Configuration, {html.escape(scene)}.</b> The disks (drawn to scale, coloured by "
-                           f"speed) at the start and at the end of the case {html.escape(case['id'])}, inside the "
-                           "scene's box.", "initial and final configuration"))
-        parts.append(animations.section(summary, directory, scene, image))  # motion strips, if frames were stored
-    return "\n".join(parts)
+        busy = t * int(jobs) if str(jobs).isdigit() else None
+        over = f", oversubscribing the {cores} cores" if busy and cores and busy > cores else ""
+        parts.append(f"{html.escape(b)}: {t} threads per case × {jobs} cases at a time = {busy} threads{over}.")
+    return "<p>" + " ".join(parts) + "</p>"
+
+
+COSTS = jinja2.Template("""<table id="costs"><tr><th>scene</th><th>backend</th><th>cheapest sweep point</th>
+<th>s per time unit (mean)</th><th>fastest – slowest replicate</th><th>÷ exact solver's</th></tr>
+{% for c in costs %}<tr><td>{{ c.scene }}</td><td>{{ c.backend }}</td><td>{{ c.group }}</td><td>{{ c.mean }}</td>
+<td>{{ c.spread }}</td><td>{{ c.ratio }}</td></tr>{% endfor %}</table>""", autoescape=True)
+
+
+def timings(summary):
+    rows = [{"scene": c["scene"], "backend": c["backend"], "group": c["group"], "mean": fmt(c["seconds_per_time_unit"]),
+             "spread": f"{fmt(c['fastest_replicate'])} – {fmt(c['slowest_replicate'])} ({c['replicates']})",
+             "ratio": fmt(c.get("relative_to_reference"))} for c in summary.get("costs", [])]
+    return ("<p>Wall time is spent in the solver's advance_to() only (metrics and output excluded), measured after an "
+            "untimed warm-up run, each case in its own process. " + machine_text(summary)[3:] +
+            COSTS.render(costs=rows) + "<p>Every case's timing: <a href='checks.html#timings'>checks.html</a>.</p>")
+
+
+def provenance_table(summary):
+    rows = dict(summary["provenance"])
+    rows["command line"] = summary.get("command_line", "")
+    rows["suite file"] = summary.get("suite_file", "")
+    for scene, seeds in summary.get("seeds", {}).items():
+        rows[f"seeds of {scene}"] = seeds
+    for scene, path in summary.get("scene_files", {}).items():
+        rows[f"scene file of {scene}"] = path
+    devices = sorted({f"{c['backend']}: {v}" for c in summary["cases"] for k, v in c.get("provenance", {}).items()
+                      if "device" in k or "platform" in k})
+    if devices:
+        rows["devices"] = "; ".join(devices)
+    out = ["<table>"] + [f"<tr><th>{html.escape(k)}</th><td>{html.escape(str(v))}</td></tr>" for k, v in rows.items()]
+    return "\n".join(out + ["</table>"])
 
 
 STYLE = """
@@ -503,103 +618,80 @@ table { border-collapse: collapse; margin: 0.4em 0 1.2em 0; font-size: 12px; }
 th, td { border: 1px solid #ccc; padding: 2px 5px; text-align: left; vertical-align: top; }
 td.pass, tr.pass td:nth-child(2) { background: #dff0d8; }
 td.fail, tr.fail td { background: #f2dede; }
-td.left_out { background: #eee; color: #777; }
+td.left_out, td.cannot_run { background: #eee; color: #777; }
 td.subject { font-family: monospace; word-break: break-all; max-width: 260px; }
 table.checks { font-size: 10.5px; } table.checks td { white-space: nowrap; }
-table.digest { font-size: 12px; margin: 0.2em 0 0.4em 0; } table.digest tr.total td { background: #f6f6f6; }
+table.digest { font-size: 11.5px; margin: 0.2em 0 0.4em 0; } table.digest tr.total td { background: #f6f6f6; }
+table#verdicts td:nth-child(2) { max-width: 420px; }
 .where { color: #666; font-size: 10.5px; }
 .top { display: flex; gap: 14px; align-items: flex-start; }
 .top .main { flex: 1 1 auto; min-width: 0; overflow-x: auto; }
-nav#toc { flex: 0 0 290px; font-size: 12px; border: 1px solid #ddd; padding: 4px 8px; background: #fafafa; }
+nav#toc { flex: 0 0 260px; font-size: 12px; border: 1px solid #ddd; padding: 4px 8px; background: #fafafa; }
 nav#toc ul { margin: 2px 0; padding-left: 16px; } nav#toc p { margin: 4px 0; }
 div.physics-top { display: flex; gap: 12px; align-items: flex-start; } div.physics-top figure { margin: 0; }
 table.physics { font-size: 11px; } table.physics td.pass { background: #dfd; } table.physics td.fail { background: #fdd; }
 figure { margin: 0.6em 0 1.6em 0; } figure img { max-width: 100%; border: 1px solid #ddd; }
 figure#headline { margin-top: 0.2em; } figure#headline img { max-height: 440px; }
 figcaption { font-size: 12px; color: #444; max-width: 1300px; }
-p.verdict { font-size: 18px; font-weight: bold; margin: 0.2em 0; } .pass { color: #2a7a2a; } .failed { color: #b02020; }
+p.verdict { font-size: 16px; font-weight: bold; margin: 0.2em 0; } .pass { color: #2a7a2a; } .failed { color: #b02020; }
 p.identical { font-size: 12px; margin: 0.2em 0; }
-details { margin: 0.2em 0 0.2em 0.5em; } details.backend { margin-left: 1.5em; }
+details { margin: 0.2em 0 0.2em 0.5em; }
 pre { white-space: pre-wrap; margin: 0; font-size: 11px; }
 """
 
 
 def write_html(summary, directory, path, a=None):
     a = a or Analysis(summary)
-    verdict = verdict_text(a)
     stability_first = ""
     if a.stability:
         stability_first = ("<h2 id='stability-first'>First failure of each backend</h2><p class='where'>Each cell: the "
                            "first failure on that scene (smallest failing dt, then smallest swept value) and failed / "
                            "classified cases; hover for the measured value. Maps and the full table: "
                            "<a href='#stability'>Stability</a>.</p>" + stability.first_failure_matrix(summary))
-    body = f"""<!DOCTYPE html><html><head><meta charset="utf-8">
-<title>collide validation report: {html.escape(summary['suite'])}</title><style>{STYLE}</style></head><body>
-<h1>Validation report: suite '{html.escape(summary['suite'])}'</h1>
-<div class="top"><div class="main">
-<p class="verdict {'pass' if a.passed else 'failed'}" id="verdict">{html.escape(verdict)}.</p>
-{stability_first}
-{'<h2>Digest</h2>' if a.stability else ''}{digest_table(a)}
-{identical_line(a)}
-</div>{toc(a)}</div>
-{physics.section(summary, image)}
-{headline_figure(a)}
-<p>{html.escape(summary.get('description', ''))}</p>
-{stability.section(summary, image) if a.stability else ''}
-<h2 id="failures">1. Failures</h2>{failures(a)}
-<h2 id="checks">2. Checks by scene and backend</h2>
-<p>One row per case (statistical comparisons: per sweep group, over its replicates), one column per check, collapsed
-by scene and backend and sorted by margin, failures and the closest calls first. A cell shows the measured value, how
-it must compare with the tolerance, and the tolerance; green passes, red fails, grey is left out (hover for the reason).
-The trajectory error here is the worst phase replicate; the figures show the mean ± SE. Every check in one list:
-<a href="checks.html">checks.html</a>. Definitions and the derivation of every tolerance: docs/validation.md.</p>
-{check_tables(a)}
-<h3 id="left-out">Left-out checks and why</h3>{left_out_table(summary)}
-<h2 id="orders">3. Orders, floors and resolution</h2>
-<p>The observed order is the least-squares slope of log error against log dt on the asymptotic range: sorted from
-coarse to fine, the range ends where the error stops falling (every later local slope below {digest.FLAT_SLOPE}); the
-points below it are the floor, named in the table (for a float backend, rounding accumulates there). For Z only
-resolved points (difference ≥ {digest.RESOLVED_SE:g} SE) enter the fit. The last column is the straight fit through
-every point that the summary records, for comparison.</p>
-{orders_table(a)}
-<h2 id="scenes">4. Scenes</h2>{scene_sections(summary, directory, a)}
-<h2 id="timings">5. Timings</h2>
-<p>Wall time is spent in the solver's advance_to() only (metrics and output excluded), measured after an untimed
-warm-up run. Each case runs in its own process; timings on a shared machine are noisy.</p>
-{timing_table(summary)}
-<h2 id="provenance">6. Provenance</h2>{provenance_table(summary)}
-<script>
-// A link into a collapsed table opens the <details> around its target.
-function openTarget() {{
-  const t = location.hash && document.getElementById(decodeURIComponent(location.hash.slice(1)));
-  for (let e = t; e; e = e.parentElement) if (e.tagName === "DETAILS") e.open = true;
-  if (t) t.scrollIntoView();
-}}
-window.addEventListener("hashchange", openTarget);
-openTarget();
-</script>
-</body></html>"""
-    safe_output.write_text(path, body)
+    M = jinja2.Markup if hasattr(jinja2, "Markup") else __import__("markupsafe").Markup
+    page = TEMPLATES.get_template("index.html.j2").render(
+        suite=summary["suite"], style=M(STYLE), passed=a.passed, verdict=verdict_text(a),
+        stability_first=M(stability_first), verdicts=a.verdicts, digest_table=M(digest_table(a)),
+        identical=M(identical_line(a)), toc=M(toc(a)), physics=M(physics.section(summary, image)),
+        headline=M(headline_figure(a)), description=summary.get("description", ""),
+        stability_section=M(stability.section(summary, image) if a.stability else ""), failures=M(failures(a)),
+        check_matrix=M(check_matrix(a)), left_out=M(left_out_table(a)), orders_table=M(orders_table(a)),
+        bias_fits=M(BIAS_FITS.render(rows=bias_fit_rows(summary))), scenes=M(scene_sections(summary, directory, a)),
+        timings=M(timings(summary)), provenance=M(provenance_table(summary)))
+    safe_output.write_text(path, page)
+
+
+def check_rows(summary):
+    for c in summary["checks"]:
+        lo = c["status"] == "left_out"
+        yield {"subject": c["subject"], "check": c["check"], "status": c["status"],
+               "value": "" if lo else fmt(c.get("value")),
+               "tolerance": "" if lo else c.get("comparison", "") + " " + fmt(c.get("tolerance")),
+               "margin": fmt(digest.margin(c)) + (" (quantised)" if c.get("quantised") else ""),
+               "predicted": predicted_text(c, c["check"] == "energy_drift"), "detail": c["detail"]}
 
 
 def write_checks_html(summary, path):
-    out = [f"""<!DOCTYPE html><html><head><meta charset="utf-8"><title>Every check: {html.escape(summary['suite'])}</title>
-<style>{STYLE}</style></head><body><h1>Every check of suite '{html.escape(summary['suite'])}'</h1>
-<p><a href="index.html">Back to the report</a>. One row per check, in the order of the run. Margin: measured ÷
-tolerance (tolerance ÷ measured for a lower bound), above 1 fails.</p>
-<table class="checks"><tr><th>case or group</th><th>check</th><th>status</th><th>value</th><th>tolerance</th>
-<th>margin</th><th>expected by the rule</th><th>detail</th></tr>"""]
+    cases = [{"id": c["id"], "status": c["status"], "disks": c["disks"], "duration": fmt(c["duration"]),
+              "wall": fmt(c["wall_seconds"]), "per_unit": fmt(c.get("seconds_per_time_unit")),
+              "steps": c.get("steps", ""), "contacts": c.get("contacts", ""), "warmup": fmt(c.get("warmup_seconds")),
+              "cls": "pass" if c["status"] == "completed" else "left_out" if c["status"] == "left_out" else "fail"}
+             for c in summary["cases"]]
+    safe_output.write_text(path, TEMPLATES.get_template("checks.html.j2").render(
+        suite=summary["suite"], style=STYLE, rows=check_rows(summary), cases=cases))
+
+
+CSV_FIELDS = ("subject", "scene", "backend", "check", "status", "value", "comparison", "tolerance", "margin",
+              "quantised", "predicted", "predicted_uncertainty", "detail")
+
+
+def write_checks_csv(summary, path):
+    buffer = io.StringIO()
+    writer = csv.DictWriter(buffer, fieldnames=CSV_FIELDS, extrasaction="ignore", lineterminator="\n")
+    writer.writeheader()
     for c in summary["checks"]:
-        lo = c["status"] == "left_out"
-        pct = c["check"] == "energy_drift"
-        out.append(f"<tr><td class='subject'>{html.escape(c['subject'])}</td><td>{html.escape(c['check'])}</td>"
-                   f"<td class='{html.escape(c['status'])}'>{html.escape(c['status'])}</td>"
-                   f"<td>{'' if lo else fmt(c.get('value'))}</td>"
-                   f"<td>{'' if lo else html.escape(c.get('comparison', '')) + ' ' + fmt(c.get('tolerance'))}</td>"
-                   f"<td>{fmt(digest.margin(c))}</td><td>{html.escape(predicted_text(c, pct))}</td>"
-                   f"<td>{html.escape(c['detail'])}</td></tr>")
-    out.append("</table></body></html>")
-    safe_output.write_text(path, "\n".join(out))
+        writer.writerow({k: c.get(k, "") for k in CSV_FIELDS})
+    safe_output.write_text(path, buffer.getvalue())
 
 
 def md(text):
@@ -607,38 +699,29 @@ def md(text):
 
 
 def write_markdown(summary, path, a=None, full_name="summary-full.md"):
-    """The digest, in at most about 80 lines: verdict, per-backend table, failures (the first
-    20), orders and floors; every check is in summary-full.md."""
+    """The digest, in at most about 80 lines: verdict, per-backend verdicts and table, failures
+    (the first 20), orders and floors; every check is in summary-full.md."""
     a = a or Analysis(summary)
-    lines = [f"# Validation report: suite '{summary['suite']}'", "", f"**{verdict_text(a)}.**", "",
-             "| backend | cases | passed | failed | left out | worst margin | order: trajectory | order: Z | floor |",
-             "|---|---|---|---|---|---|---|---|---|"]
-    for r in a.rows:
-        b = r["backend"] + (f" (= {a.aliases[r['backend']]})" if r["backend"] in a.aliases else "")
-        lines.append(f"| {md(b)} | {r['cases']} | {r['pass']} | {r['fail']} | {r['left_out']} | "
-                     f"{md(margin_text(r['worst'], link=False))} | {digest.order_summary(r['orders'].get('trajectory', []))} | "
-                     f"{digest.order_summary(r['orders'].get('Z', []))} | {md(floor_text(r['floors'], 3))} |")
-    for x, b, n in a.identical:
-        lines += ["", f"{b} gives the same numbers as {x} bit for bit ({n} compared values)."]
-    lines += [""] + physics.markdown(summary)
-    lines += ["## Failures", ""]
     if a.stability:
-        lines += [f"- UNEXPECTED {md(u)}" for u in a.unexpected[:20]] or \
-                 ["Nothing unexpected (every case classified, the exact solver stable, no crash)."]
-        lines += stability.markdown(summary)[:40]
+        failures_ = [f"- UNEXPECTED {md(u)}" for u in a.unexpected[:20]] or \
+                    ["Nothing unexpected (every case classified, the exact solver stable, no crash)."]
+        failures_ += stability.markdown(summary)[:40]
     else:
         failed = [c for c in summary["checks"] if c["status"] == "fail"]
-        lines += [f"- `{c['subject']}` {c['check']}: {md(c['detail'].splitlines()[0] if c['detail'] else '')}"
-                  for c in failed[:20]] or ["None."]
+        failures_ = [f"- `{c['subject']}` {c['check']}: {md(c['detail'].splitlines()[0] if c['detail'] else '')}"
+                     for c in failed[:20]] or ["None."]
         if len(failed) > 20:
-            lines.append(f"- ... and {len(failed) - 20} more in [{full_name}]({full_name})")
-    lines += ["", "## Orders and floors", "", "| scene | backend | order (asymptotic range) | floor |", "|---|---|---|---|"]
-    for f in a.fits:
-        if f["backend"] in a.aliases:
-            continue
-        lines.append(f"| {md(f['scene'])} | {md(f['backend'])} | {md(digest.describe_order(f))} | "
-                     f"{md(digest.describe_floor(f['floor'])) if f['floor'] else ''} |")
-    lines += ["", f"Every check: [{full_name}]({full_name}); figures: index.html."]
+            failures_.append(f"- ... and {len(failed) - 20} more in [{full_name}]({full_name})")
+    text = TEMPLATES.get_template("summary.md.j2").render(
+        suite=summary["suite"], verdict=verdict_text(a), verdicts=a.verdicts,
+        rows=[dict(r, worst=margin_text(next(x for x in a.rows if x["backend"] == r["backend"]), link=False))
+              for r in digest_rows(a, link=False)],
+        identical=[f"{b} gives the same numbers as {x} bit for bit ({n} compared values)." for x, b, n in a.identical],
+        physics=physics.markdown(summary), failures=failures_,
+        fits=[{"scene": f["scene"], "backend": f["backend"], "order": digest.describe_order(f),
+               "floor": digest.describe_floor(f)} for f in a.fits if f["backend"] not in a.aliases],
+        full_name=full_name)
+    lines = text.splitlines()
     if len(lines) > 80:  # keep the digest a screen long whatever the suite
         lines = lines[:78] + ["", f"(cut at 80 lines; everything: [{full_name}]({full_name}))"]
     safe_output.write_text(path, "\n".join(lines) + "\n")
@@ -653,24 +736,19 @@ def write_markdown_full(summary, path, a=None):
     lines += stability.markdown(summary)
     lines += ["", "## Checks", "", "| case | check | status | value | tolerance | margin | note |",
               "|---|---|---|---|---|---|---|"]
-    for c in summary["checks"]:
-        lo = c["status"] == "left_out"
+    for r, c in zip(check_rows(summary), summary["checks"]):
         note = c["detail"].splitlines()[0] if c["detail"] else ""
-        extra = predicted_text(c, c["check"] == "energy_drift")
-        lines.append(f"| `{c['subject']}` | {c['check']} | {c['status']} | {'' if lo else fmt(c.get('value'))} "
-                     f"| {'' if lo else c.get('comparison', '') + ' ' + fmt(c.get('tolerance'))} | {fmt(digest.margin(c))} "
-                     f"| {md(note + ('; ' + extra if extra else ''))} |")
-    lines += ["", "## Observed convergence order", "", "| scene | backend | order (asymptotic range) | floor | fit through every point |",
-              "|---|---|---|---|---|"]
+        lines.append(f"| `{r['subject']}` | {r['check']} | {r['status']} | {r['value']} | {r['tolerance']} | {r['margin']} "
+                     f"| {md(note + ('; ' + r['predicted'] if r['predicted'] else ''))} |")
+    lines += ["", "## Observed convergence order", "", "| scene | backend | order (asymptotic range) | floor |",
+              "|---|---|---|---|"]
     for f in a.fits:
-        line = next(l for l in summary["work_precision"] if l["scene"] == f["scene"] and l["backend"] == f["backend"])
         lines.append(f"| {md(f['scene'])} | {md(f['backend'])} | {md(digest.describe_order(f))} | "
-                     f"{md(digest.describe_floor(f['floor'])) if f['floor'] else ''} | "
-                     f"{fmt(line.get('order')) if line.get('order') is not None else md(line.get('order_note', ''))} |")
+                     f"{md(digest.describe_floor(f))} |")
     safe_output.write_text(path, "\n".join(lines) + "\n")
 
 
-REPORT_FILES = ("index.html", "checks.html", "summary.md", "summary-full.md")
+REPORT_FILES = ("index.html", "checks.html", "checks.csv", "summary.md", "summary-full.md")
 
 
 def check_outputs(out):
@@ -686,11 +764,11 @@ def render(directory):
     out = os.path.join(directory, "report")
     check_outputs(out)
     summary = digest.load_summary(directory)
-    verify_cases(summary, directory)
     safe_output.make_output_directory(out)
     a = Analysis(summary)
     write_html(summary, directory, os.path.join(out, "index.html"), a)
     write_checks_html(summary, os.path.join(out, "checks.html"))
+    write_checks_csv(summary, os.path.join(out, "checks.csv"))
     write_markdown(summary, os.path.join(out, "summary.md"), a)
     write_markdown_full(summary, os.path.join(out, "summary-full.md"), a)
     return out

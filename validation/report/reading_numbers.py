@@ -28,13 +28,21 @@ def g(x):
 
 def numbers(directory):
     s = digest.load_summary(directory)
-    fits = digest.all_orders(s)
-    rows = {r["backend"]: r for r in digest.digest(s, fits)}
-    n = {"cases": str(len(s["cases"])), "pass": str(s["counts"]["pass"]), "fail": str(s["counts"]["fail"]),
+    fits = digest.orders(s)
+    rows = {r["backend"]: r for r in digest.digest(s)}
+    totals = {"pass": 0, "fail": 0, "left_out": 0, "cannot_run": 0}
+    for counts in digest.combinations(s).values():
+        totals[digest.combination_status(counts)] += 1
+    n = {"cases": str(len(s["cases"])), "cases_ran": str(sum(r["cases"] for r in rows.values())),
+         "cases_cannot_run": str(sum(r["cases_cannot_run"] for r in rows.values())),
+         **{f"combinations.{k}": str(v) for k, v in totals.items()},
+         "index_kb": str(round(os.path.getsize(os.path.join(directory, "report", "index.html")) / 1000))
+         if os.path.exists(os.path.join(directory, "report", "index.html")) else "?", "pass": str(s["counts"]["pass"]), "fail": str(s["counts"]["fail"]),
          "left_out": str(s["counts"]["left_out"]), "wall": f"{s['wall_seconds']:.1f}",
          "backends": ", ".join(f"`{b}`" for b in rows)}
     for b, r in rows.items():
         n[f"{b}.cases"] = str(r["cases"])
+        n[f"{b}.ties"] = str(r["ties"])
         n[f"{b}.pass"] = str(r["pass"])
         n[f"{b}.left_out"] = str(r["left_out"])
         if r["worst"]:
@@ -44,10 +52,8 @@ def numbers(directory):
     for f in fits:
         key = f"{f['scene']}.{f['backend']}"
         n[f"{key}.order"] = digest.describe_order(f)
-        if f["floor"]:
-            n[f"{key}.floor"] = digest.describe_floor(f["floor"])
-        if f["class"] == "Z":
-            n[f"{key}.resolved"] = f"{f['resolved']} of {f['measured']}"
+        if f["floor"] or f["bending"]:
+            n[f"{key}.floor"] = digest.describe_floor(f)
     for line in s["work_precision"]:
         if not line["error_kind"].startswith("trajectory"):
             continue
@@ -62,6 +68,16 @@ def numbers(directory):
                 n[f"{key}.z_error"] = g(p["error"])
                 n[f"{key}.z_se"] = g(p["se"])
                 n[f"{key}.z_sigmas"] = f"{p['sigmas']:.1f}"
+                n[f"{key}.z_upper"] = g(p["upper"])
+                n[f"{key}.z_detectable"] = g(p["detectable"])
+    for f in s.get("bias_fits", []):
+        key = f"bias.{f['backend']}.{f['observable']}"
+        n[f"{key}.constant"] = f"{f['constant']:.2f} ± {f['standard_error']:.2f}"
+        n[f"{key}.model"] = f"{f['model']:.2f} ± {f['model_uncertainty']:.2f}"
+        n[f"{key}.chi2_model"] = f"{f['chi2_model']:.1f} on {f['points']}"
+    for c in s.get("costs", []):
+        if c.get("relative_to_reference"):
+            n[f"relative_cost.{c['scene']}.{c['backend']}"] = f"{c['relative_to_reference']:.0f}"
     for a, b, count in digest.identical_backends(s):
         n[f"identical.{b}"] = f"{b} gives the same numbers as {a} bit for bit ({count} compared values)"
     for c in s["checks"]:

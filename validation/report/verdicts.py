@@ -1,0 +1,135 @@
+"""The first screen's answer to "which backend can I trust, for what, at what cost": one verdict
+per backend, laid out from summary.json's numbers (its checks, its costs per scene, its
+statistical differences, its tolerances beside the exact solver's). Nothing is measured here.
+"""
+from collections import OrderedDict
+
+import digest
+
+
+def _times(x):
+    return f"{x:.2g}×" if x < 10 else f"{x:.0f}×"
+
+
+def cost_text(summary, backend):
+    """'1.2–600× (5 scenes); cheapest on 5 of 5' from summary.json's costs (the cheapest sweep
+    group of each scene, wall seconds per simulated time unit, over the reference's)."""
+    costs = [c for c in summary.get("costs", []) if c["backend"] == backend]
+    if not costs:
+        return "not measured (no case ran)"
+    cheapest = cheapest_by_scene(summary)
+    wins = sum(1 for c in costs if cheapest.get(c["scene"]) == backend)
+    scenes = len({c["scene"] for c in costs})
+    tail = f"; the cheapest on {wins} of {scenes} scene{'s' if scenes > 1 else ''}" if wins else ""
+    if backend == summary["reference"]:
+        fastest = min(c["seconds_per_time_unit"] for c in costs)
+        slowest = max(c["seconds_per_time_unit"] for c in costs)
+        return f"1× ({fastest:.2g}–{slowest:.2g} s per time unit){tail}"
+    ratios = [c["relative_to_reference"] for c in costs if c.get("relative_to_reference")]
+    if not ratios:
+        return f"{min(c['seconds_per_time_unit'] for c in costs):.2g} s per time unit (no reference cost){tail}"
+    low, high = min(ratios), max(ratios)
+    span = _times(low) if len(ratios) == 1 or _times(low) == _times(high) else f"{_times(low)}–{_times(high)}"
+    return f"{span} ({len(ratios)} scene{'s' if len(ratios) > 1 else ''}){tail}"
+
+
+def cheapest_by_scene(summary):
+    best = {}
+    for c in summary.get("costs", []):
+        if c["scene"] not in best or c["seconds_per_time_unit"] < best[c["scene"]][1]:
+            best[c["scene"]] = (c["backend"], c["seconds_per_time_unit"])
+    return {scene: b for scene, (b, _) in best.items()}
+
+
+def scene_status(summary, backend):
+    """scene -> 'pass', 'fail' or 'cannot_run' from the (scene, backend, check) combinations."""
+    out = OrderedDict()
+    for (scene, b, _), counts in digest.combinations(summary).items():
+        if b != backend:
+            continue
+        status = digest.combination_status(counts)
+        now = out.get(scene)
+        if status == "fail" or now is None or (now in ("left_out", "cannot_run") and status == "pass"):
+            out[scene] = status
+    return out
+
+
+def loosest_tolerance(summary, backend):
+    """(ratio, check, tolerance) of the check whose tolerance is the largest multiple of the
+    median tolerance the other non-reference backends have for it, or None."""
+    others = {}
+    for c in summary["checks"]:
+        if c["backend"] not in (backend, summary["reference"]) and c["status"] != "left_out" and c.get("tolerance"):
+            others.setdefault(c["check"], {})[c["backend"]] = c["tolerance"]
+    worst = None
+    for c in summary["checks"]:
+        if c["backend"] != backend or c["status"] == "left_out" or c.get("comparison") != "<=":
+            continue
+        values = sorted(others.get(c["check"], {}).values())
+        if not values or not c.get("tolerance"):
+            continue
+        median = values[len(values) // 2]
+        if median > 0 and (worst is None or c["tolerance"] / median > worst[0]):
+            worst = (c["tolerance"] / median, c["check"], c["tolerance"])
+    return worst
+
+
+def largest_value(summary, backend, check):
+    values = [(c["value"], c["scene"]) for c in summary["checks"]
+              if c["backend"] == backend and c["check"] == check and c["status"] != "left_out"
+              and isinstance(c.get("value"), (int, float))]
+    return max(values, default=None)
+
+
+def pressure_offsets(summary, backend):
+    """The largest resolved pressure difference in standard errors, and whether every pressure
+    check of the backend was left out (then the difference is shown, never judged)."""
+    sigmas = [p["sigmas"] for scene in digest.scenes_in_order(summary)
+              for p in digest.statistical_points(summary, scene, "pressure").get(backend, []) if p["resolved"]]
+    checks = [c for c in summary["checks"] if c["backend"] == backend and c["check"] == "pressure"]
+    left_out = bool(checks) and all(c["status"] == "left_out" for c in checks)
+    return (max(sigmas) if sigmas else None), left_out
+
+
+def verdict(summary, row, aliases):
+    """{'backend', 'verdict', 'trusted', 'not_for', 'cost', 'failed', 'anchor'} for one digest row."""
+    b = row["backend"]
+    status = scene_status(summary, b)
+    trusted = [s for s, v in status.items() if v == "pass"]
+    cannot = [s for s, v in status.items() if v == "cannot_run"]
+    failed = [s for s, v in status.items() if v == "fail"]
+    parts = []
+    if b == summary["reference"]:
+        parts.append("exact (the reference)")
+    elif row["fail"]:
+        parts.append(f"FAILS {row['fail']} checks")
+    else:
+        parts.append(f"passes {row['pass']} checks")
+    if b in aliases:
+        parts.append(f"the same numbers as {aliases[b]}, bit for bit")
+    loose = loosest_tolerance(summary, b) if b != summary["reference"] else None
+    if loose and loose[0] >= 5:
+        parts.append(f"against its own loose tolerance: {loose[1].replace('_', ' ')} ≤ {loose[2]:.3g}, "
+                     f"{loose[0]:.0f}× the other backends'")
+    drift = largest_value(summary, b, "energy_drift")
+    if drift and drift[0] >= 0.01:
+        parts.append(f"energy drift up to {100 * drift[0]:.3g} % ({drift[1]})")
+    sigmas, left_out = pressure_offsets(summary, b)
+    if sigmas is not None and (left_out or not digest.facts(summary, b).get("stepping_rule")) and sigmas >= 3:
+        parts.append(f"gas pressure off by up to {sigmas:.0f} SE" + (" (that check is left out)" if left_out else ""))
+    not_for = []
+    if failed:
+        not_for.append("fails on " + ", ".join(failed))
+    if cannot:
+        not_for.append("cannot run " + ", ".join(cannot))
+    if b in aliases:
+        pass
+    trusted_text = (f"every scene it runs ({len(trusted)})" if trusted and not failed and
+                    len(trusted) + len(cannot) == len(status) else ", ".join(trusted) or "none")
+    return {"backend": b, "verdict": "; ".join(parts), "trusted": trusted_text,
+            "not_for": "; ".join(not_for) or "—", "cost": cost_text(summary, b), "failed": bool(row["fail"]),
+            "anchor": digest.anchor("backend", b)}
+
+
+def all_verdicts(summary, rows, aliases):
+    return [verdict(summary, r, aliases) for r in rows]
