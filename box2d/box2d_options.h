@@ -47,9 +47,12 @@ struct Box2dOptions {
 // The preset called `name` ("tuned" or "shipped"); nullopt for any other name.
 std::optional<Box2dOptions> box2d_preset(const std::string& name);
 
-// Reads scene.backend_options["box2d"] (all values are text): the preset, then every other key
-// on top of it. Throws std::runtime_error naming the scene, the key and what was expected on an
-// unknown key or a bad value.
+// The largest iteration or sub-step count a key accepts.
+inline constexpr int max_box2d_iterations = 1000000;
+
+// Reads scene.backend_options["box2d"] through core/option_reader.h: the preset, then every
+// other key on top of it. Throws BackendOptionError naming where the key was set, the key and
+// what was expected on an unknown key or a bad value.
 Box2dOptions parse_box2d_options(const Scene& scene);
 
 }  // namespace collide

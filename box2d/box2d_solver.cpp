@@ -3,6 +3,7 @@
 #include <box2d/box2d.h>
 
 #include "core/number_text.h"
+#include "core/option_reader.h"
 #include "core/representability.h"
 #include "physics/step_schedule.h"
 
@@ -138,19 +139,12 @@ std::optional<std::string> box2d_supports(const Scene& scene) {
     return std::nullopt;
 }
 
+// The caller's options: only `iterations` (a suite's sweep of the velocity iterations, which
+// replaces the scene's); the scene's [backend.box2d] table is read at load (box2d_options.h).
 Box2dSolver::Box2dSolver(const BackendOptions& options) {
-    const auto it = options.extra.find("iterations");
-    if (it == options.extra.end()) return;
-    std::size_t used = 0;
-    int value = 0;
-    try {
-        value = std::stoi(it->second, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used != it->second.size() || value < 1)
-        throw std::invalid_argument("box2d: option iterations = '" + it->second + "': expected a positive integer");
-    iterations_ = value;
+    OptionReader given("box2d", nullptr, options.extra);
+    if (const auto n = given.find_int("iterations", 1, max_box2d_iterations, "a positive integer")) iterations_ = int(*n);
+    given.refuse_unknown();
 }
 Box2dSolver::~Box2dSolver() = default;
 

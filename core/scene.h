@@ -100,6 +100,10 @@ struct Scene {
     // Backend-specific settings, [backend.NAME] tables: name -> key -> value as text.
     // Each backend validates its own keys.
     std::map<std::string, std::map<std::string, std::string>> backend_options;
+    // Where each of those values was set, for messages (core/option_reader.h): "FILE:LINE" for a
+    // scene file's key, "--set backend.NAME.KEY" for the command line's; absent for a value set
+    // in code or by a Python keyword (whoever changes a value drops or replaces its origin).
+    std::map<std::string, std::map<std::string, std::string>> backend_option_origins;
 
     bool has_gravity() const { return physics.gravity_x != 0 || physics.gravity_y != 0; }
     bool has_friction() const { return physics.friction != 0; }

@@ -221,7 +221,8 @@ ParticleGenerator read_particles(const TomlFields& block, const World& world) {
     return g;
 }
 
-// [backend.NAME] tables: plain values kept as text; each backend validates its own keys. A
+// [backend.NAME] tables: plain values kept as text, with where each was set; each backend
+// reads its own keys through core/option_reader.h, which refuses unknown ones. A
 // table for no backend (a typo) is refused here, as is what backend_key_problem refuses (any
 // key under [backend.step]).
 void read_backend_options(const TomlFields& root, Scene& scene) {
@@ -234,10 +235,16 @@ void read_backend_options(const TomlFields& root, Scene& scene) {
             if (!problem.empty()) options.fail(key.str(), problem);
         }
         auto& out = scene.backend_options[std::string(name.str())];
+        auto& origins = scene.backend_option_origins[std::string(name.str())];
         for (const auto& [key, value] : options.raw()) {
             const auto text = backend_value_text(value);
             if (!text) options.fail(key.str(), backend_value_expected);
             out[std::string(key.str())] = *text;
+            // A node without a line was not read from the file: --set added it (scene_overrides.h).
+            const auto line = value.source().begin.line;
+            origins[std::string(key.str())] =
+                line > 0 ? options.file() + ":" + std::to_string(line)
+                         : "--set backend." + std::string(name.str()) + "." + shortened(key.str());
         }
     }
 }

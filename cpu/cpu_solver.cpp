@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <climits>
 #include <stdexcept>
 #include <string>
 
+#include "core/option_reader.h"
 #include "core/phase_timer.h"
 #include "core/representability.h"
 #include "physics/step_schedule.h"
@@ -16,38 +18,22 @@ namespace collide::cpu {
 CpuSolver::CpuSolver(const BackendOptions& options) : options_(options) {
     if (options.threads < 0) throw std::invalid_argument("cpu: thread count must be >= 0, got " + std::to_string(options.threads));
     threads_ = options.threads > 0 ? options.threads : omp_get_max_threads();
-    apply_settings(options.extra, "backend options");
+    read_settings(nullptr);  // (bad options are refused at once)
 }
 
-void CpuSolver::apply_settings(const std::map<std::string, std::string>& settings, const std::string& where) {
-    for (const auto& [key, value] : settings) {
-        if (key == "specialise") {
-            if (value != "on" && value != "off")
-                throw std::invalid_argument("cpu: " + where + ": specialise = \"" + value + "\": expected \"on\" or \"off\"");
-            specialise_ = value == "on";
-        } else if (key == "sort_interval") {
-            std::size_t used = 0;
-            int k = -1;
-            try { k = std::stoi(value, &used); } catch (const std::exception&) { used = 0; }
-            if (used != value.size() || k < 0)
-                throw std::invalid_argument("cpu: " + where + ": sort_interval = \"" + value +
-                                            "\": expected an integer >= 0 (0: never reorder)");
-            sort_interval_ = k;
-        } else {
-            throw std::invalid_argument("cpu: " + where + ": unknown setting \"" + key +
-                                        "\" (known: specialise, sort_interval)");
-        }
-    }
+// The settings: the scene's [backend.cpu] table (none before load), then the caller's options,
+// which win (core/option_reader.h).
+void CpuSolver::read_settings(const Scene* scene) {
+    OptionReader settings("cpu", scene, options_.extra);
+    specialise_ = settings.get_choice("specialise", {"on", "off"}, "on") == "on";
+    sort_interval_ = int(settings.get_int("sort_interval", kDefaultSortInterval, 0, INT_MAX,
+                                          "an integer >= 0 (0: never reorder)"));
+    settings.refuse_unknown();
 }
 
 void CpuSolver::load(const Scene& scene, const ParticleState<double>& initial) {
     scene_ = scene;
-    // Settings: defaults, then the scene's [backend.cpu] table, then the options (which win).
-    specialise_ = true;
-    sort_interval_ = kDefaultSortInterval;
-    if (auto it = scene.backend_options.find("cpu"); it != scene.backend_options.end())
-        apply_settings(it->second, "scene [backend.cpu]");
-    apply_settings(options_.extra, "backend options");
+    read_settings(&scene);
     const std::size_t n = initial.size();
     if (n >= std::size_t(UINT32_MAX)) throw std::invalid_argument("cpu: at most 2^32 - 1 disks (32-bit indices)");
     require_representable(scene, initial, Precision::single, Method::stepping_rules, "cpu");

@@ -46,7 +46,7 @@ public:
     static constexpr int kDefaultSortInterval = 1;
 
 private:
-    void apply_settings(const std::map<std::string, std::string>& settings, const std::string& where);
+    void read_settings(const Scene* scene);
     void step_collide_first(float dt);
     void substep_integrate_first(float h);
 

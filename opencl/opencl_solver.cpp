@@ -4,9 +4,11 @@
 #include <chrono>
 #include <climits>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 
 #include "physics/step_schedule.h"
+#include "core/option_reader.h"
 #include "core/representability.h"
 #include "core/uniform_grid.h"
 #include "device_grid.h"
@@ -42,24 +44,6 @@ constexpr std::int64_t group_disk_passes_per_launch = std::int64_t(1) << 22;
 // Move the disks into cell order at every grid build (docs/opencl-backend.md measures 0, 1
 // and larger intervals).
 constexpr int default_sort_interval = 1;
-
-// The option sort_interval: an integer >= 0, 0 = never reorder.
-int parse_sort_interval(const std::map<std::string, std::string>& extra) {
-    const auto it = extra.find("sort_interval");
-    if (it == extra.end()) return default_sort_interval;
-    const std::string& text = it->second;
-    std::size_t used = 0;
-    long k = -1;
-    try {
-        k = std::stol(text, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used != text.size() || k < 0 || k > INT_MAX)
-        throw std::invalid_argument("opencl: option sort_interval = '" + text +
-                                    "': expected an integer >= 0 (0: never reorder)");
-    return int(k);
-}
 
 template <typename Real>
 class OpenclSolver : public Solver {
@@ -136,7 +120,7 @@ private:
     void load_checked(const Scene& scene, const ParticleState<double>& initial) {
         scene_ = scene;
         options_ = requested_;
-        merge_scene_options(scene);
+        read_options(scene);
         n_ = initial.size();
         if (n_ >= std::size_t(UINT32_MAX)) throw std::invalid_argument("opencl: at most 2^32 - 1 disks (32-bit indices)");
         // Before the device is opened: a scene the kernels' precision cannot hold needs no device.
@@ -152,11 +136,7 @@ private:
                                      "' does not offer; use --real float or another --cl-device");
         session_ = open_session(device, kernel_build_options(scene, initial, real_double, device));
         check_layout();
-        grid_mode_ = options_.extra.count("grid") ? options_.extra.at("grid") : default_grid_mode(session_.device, n_);
-        if (grid_mode_ != "host" && grid_mode_ != "device" && grid_mode_ != "group")
-            throw std::invalid_argument("opencl: option grid = '" + grid_mode_ +
-                                        "': expected \"host\", \"device\" or \"group\"");
-        sort_interval_ = parse_sort_interval(options_.extra);
+        grid_mode_ = grid_choice_.empty() ? default_grid_mode(session_.device, n_) : grid_choice_;
 
         const double r_max = n_ ? *std::max_element(initial.radius.begin(), initial.radius.end()) : 1.0;
         host_grid_.configure(scene.world, 2 * r_max);
@@ -167,16 +147,17 @@ private:
         choose_local_size();
     }
 
-    // Keys of the scene's [backend.opencl] table, unless the caller set them already.
-    void merge_scene_options(const Scene& scene) {
-        const auto table = scene.backend_options.find("opencl");
-        if (table == scene.backend_options.end()) return;
-        for (const auto& [key, value] : table->second) {
-            if (key != "grid" && key != "local_size" && key != "sort_interval")
-                throw std::invalid_argument("opencl: scene '" + scene.name + "', [backend.opencl]: unknown key '" + key +
-                                            "' (expected grid, local_size or sort_interval)");
-            options_.extra.emplace(key, value);  // does not replace an explicit option
-        }
+    // The options, the caller's winning over the scene's [backend.opencl] table, read and
+    // checked before any device work (core/option_reader.h); choose_local_size checks
+    // local_size against the device.
+    void read_options(const Scene& scene) {
+        OptionReader settings("opencl", &scene, requested_.extra);
+        grid_choice_ = settings.get_choice("grid", {"host", "device", "group"}, "");
+        sort_interval_ = int(settings.get_int("sort_interval", default_sort_interval, 0, INT_MAX,
+                                              "an integer >= 0 (0: never reorder)"));
+        local_size_.reset();
+        if (settings.has("local_size")) local_size_ = settings.get_string("local_size", "");
+        settings.refuse_unknown();
     }
 
     // The kernel compiler must see the layout the host sees (particle_layout.h).
@@ -254,8 +235,8 @@ private:
     // A user-chosen work-group size must fit the device and the compiled kernels.
     void choose_local_size() {
         local_ = cl::NullRange;
-        if (!options_.extra.count("local_size")) return;
-        const std::string text = options_.extra.at("local_size");
+        if (!local_size_) return;
+        const std::string text = *local_size_;
         std::size_t size = 0, used = 0;
         try {
             size = std::stoul(text, &used);
@@ -471,7 +452,9 @@ private:
     }
 
     const BackendOptions requested_;  // as created
-    BackendOptions options_;          // requested_ plus the scene's [backend.opencl] keys
+    BackendOptions options_;          // requested_, for this load
+    std::string grid_choice_;         // read_options(): "host", "device", "group" or "" (the device's default)
+    std::optional<std::string> local_size_;
     Scene scene_;
     std::size_t n_ = 0;
     std::int64_t step_count_ = 0;

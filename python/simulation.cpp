@@ -50,6 +50,7 @@ void set_table_option(Scene& scene, const std::string& backend, const std::strin
     const auto text = backend_value_text(*node);
     if (!text) throw py::value_error(name + ": expected " + std::string(backend_value_expected));
     scene.backend_options[backend][key] = *text;
+    scene.backend_option_origins[backend].erase(key);  // (not the file's value any more)
 }
 
 }  // namespace

@@ -45,7 +45,10 @@ private:
 Scene scene_for_variant(const Scene& scene, const BackendVariant& variant) {
     Scene out = scene;
     auto& table = out.backend_options[variant.base];
-    for (const auto& [key, value] : variant.settings) table[key] = value;
+    for (const auto& [key, value] : variant.settings) {
+        table[key] = value;
+        out.backend_option_origins[variant.base].erase(key);  // (the suite's value, not the file's)
+    }
     return out;
 }
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <set>
 #include <sstream>
 #include <toml++/toml.h>
 
@@ -27,106 +26,70 @@ const char* to_string(Comparison c) {
 
 namespace {
 
-// Reads keys of one TOML table and reports every problem as "file:line: key: expected ...".
-class TableReader {
-public:
-    TableReader(const toml::table& table, std::string file, std::string where)
-        : table_(table), file_(std::move(file)), where_(std::move(where)) {}
+// The suite file is read with the scene reader's strict typed reads (core/toml_fields.h): every
+// problem is "file:line: key = value: expected ...". parse_suite turns their SceneError into
+// SuiteError. The helpers below are the optional reads a suite needs beyond TomlFields'.
+std::optional<std::string> optional_string(const TomlFields& f, std::string_view key) {
+    if (!f.has(key)) return std::nullopt;
+    return f.string(key);
+}
 
-    [[noreturn]] void fail(const std::string& key, const std::string& expected) const {
-        std::ostringstream msg;
-        msg << file_;
-        const toml::node* node = table_.get(key);
-        const auto& source = node ? node->source() : table_.source();
-        if (source.begin.line) msg << ":" << source.begin.line;
-        msg << ": " << where_ << (where_.empty() ? "" : ".") << key << ": expected " << expected;
-        throw SuiteError(msg.str());
+std::optional<double> optional_positive(const TomlFields& f, std::string_view key) {
+    if (!f.has(key)) return std::nullopt;
+    const double v = f.number(key);
+    f.require(v > 0, key, "a positive number");
+    return v;
+}
+
+std::optional<bool> optional_boolean(const TomlFields& f, std::string_view key) {
+    if (!f.has(key)) return std::nullopt;
+    return f.boolean(key, false);
+}
+
+// An optional non-empty array of positive numbers (integers unless T is floating point).
+template <typename T>
+std::vector<T> positive_array(const TomlFields& f, std::string_view key, const std::string& what) {
+    std::vector<T> out;
+    const toml::node* node = f.node(key);
+    if (!node) return out;
+    const toml::array* array = node->as_array();
+    if (!array || array->empty()) f.fail(key, "a non-empty array of " + what);
+    for (const auto& element : *array) {
+        const auto v = element.value<T>();
+        const bool typed = std::is_floating_point_v<T> ? element.is_number() : element.is_integer();
+        if (!v || !(*v > 0) || !typed) f.fail(key, "an array of " + what);
+        out.push_back(*v);
     }
+    return out;
+}
 
-    std::optional<std::string> string(const std::string& key) const {
-        const toml::node* node = table_.get(key);
-        if (!node) return std::nullopt;
-        if (!node->is_string()) fail(key, "a string");
-        return node->value<std::string>();
+// An optional non-empty array of strings (empty when the key is absent).
+std::vector<std::string> strings(const TomlFields& f, std::string_view key, const std::string& what) {
+    std::vector<std::string> out;
+    const toml::node* node = f.node(key);
+    if (!node) return out;
+    const toml::array* array = node->as_array();
+    if (!array || array->empty()) f.fail(key, "a non-empty array of " + what);
+    for (const auto& element : *array) {
+        if (!element.is_string()) f.fail(key, what);
+        out.push_back(*element.value<std::string>());
     }
-
-    std::optional<double> positive(const std::string& key) const {
-        const toml::node* node = table_.get(key);
-        if (!node) return std::nullopt;
-        const auto v = node->value<double>();
-        if (!v || !(*v > 0)) fail(key, "a positive number");
-        return v;
-    }
-
-    std::optional<bool> boolean(const std::string& key) const {
-        const toml::node* node = table_.get(key);
-        if (!node) return std::nullopt;
-        if (!node->is_boolean()) fail(key, "true or false");
-        return node->value<bool>();
-    }
-
-    template <typename T>
-    std::vector<T> positive_array(const std::string& key, const std::string& what) const {
-        std::vector<T> out;
-        const toml::node* node = table_.get(key);
-        if (!node) return out;
-        const toml::array* array = node->as_array();
-        if (!array || array->empty()) fail(key, "a non-empty array of " + what);
-        for (const auto& element : *array) {
-            const auto v = element.value<T>();
-            if (!v || !(*v > 0)) fail(key, "an array of " + what);
-            if constexpr (std::is_floating_point_v<T>) {
-                if (!element.is_number()) fail(key, "an array of " + what);
-            } else if (!element.is_integer()) {
-                fail(key, "an array of " + what);
-            }
-            out.push_back(*v);
-        }
-        return out;
-    }
-
-    // An optional non-empty array of strings (empty when the key is absent).
-    std::vector<std::string> strings(const std::string& key, const std::string& what) const {
-        std::vector<std::string> out;
-        const toml::node* node = table_.get(key);
-        if (!node) return out;
-        const toml::array* array = node->as_array();
-        if (!array || array->empty()) fail(key, "a non-empty array of " + what);
-        for (const auto& element : *array) {
-            if (!element.is_string()) fail(key, what);
-            out.push_back(*element.value<std::string>());
-        }
-        return out;
-    }
-
-    void only(const std::set<std::string>& allowed) const {
-        for (const auto& [key, node] : table_) {
-            if (allowed.count(std::string(key.str()))) continue;
-            std::string list;
-            for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
-            fail(std::string(key.str()), "no such key here (allowed: " + list + ")");
-        }
-    }
-
-private:
-    const toml::table& table_;
-    std::string file_;
-    std::string where_;
-};
+    return out;
+}
 
 void read_tolerances(const toml::table& root, const std::string& file, ToleranceTable& out) {
     const toml::node* node = root.get("tolerances");
     if (!node) return;
     const toml::table* table = node->as_table();
-    if (!table) TableReader(root, file, "").fail("tolerances", "a table of [tolerances.<backend>] tables");
+    if (!table) TomlFields(root, "", file).fail("tolerances", "a table of [tolerances.<backend>] tables");
     for (const auto& [backend, sub] : *table) {
         const std::string name(backend.str());
         const toml::table* limits = sub.as_table();
-        if (!limits) TableReader(*table, file, "tolerances").fail(name, "a table of check = limit");
+        if (!limits) TomlFields(*table, "tolerances", file).fail(name, "a table of check = limit");
         auto& target = name == "default" ? out.all_backends : out.per_backend[name];
         for (const auto& [key, value] : *limits) {
             const std::string k(key.str());
-            TableReader reader(*limits, file, "tolerances." + name);
+            const TomlFields reader(*limits, "tolerances." + name, file);
             Tolerances probe;
             try {
                 tolerance_field(probe, k);
@@ -160,7 +123,7 @@ const std::vector<std::string>& known_checks() {
 
 // leave_out = ["pressure", ...] and leave_out_reason = "...": both or neither, names known.
 void read_variant_leave_out(const toml::table& settings, const std::string& file, BackendVariant& v) {
-    TableReader r(settings, file, "variant." + v.label);
+    const TomlFields r(settings, "variant." + v.label, file);
     const toml::node* list = settings.get("leave_out");
     const toml::node* reason = settings.get("leave_out_reason");
     if (!list && !reason) return;
@@ -187,10 +150,10 @@ std::vector<BackendVariant> read_variants(const toml::table& root, const std::st
     const toml::node* node = root.get("variant");
     if (!node) return out;
     const toml::table* table = node->as_table();
-    if (!table) TableReader(root, file, "").fail("variant", "a table of [variant.\"backend[name]\"] tables");
+    if (!table) TomlFields(root, "", file).fail("variant", "a table of [variant.\"backend[name]\"] tables");
     for (const auto& [key, sub] : *table) {
         const std::string label(key.str());
-        TableReader r(*table, file, "variant");
+        const TomlFields r(*table, "variant", file);
         if (!is_variant_label(label)) r.fail(label, "a label \"backend[name]\" (name: lower-case letters, digits, _ or -)");
         const std::string base = label.substr(0, label.find('['));
         const toml::table* settings = sub.as_table();
@@ -200,7 +163,7 @@ std::vector<BackendVariant> read_variants(const toml::table& root, const std::st
         for (const auto& [k, value] : *settings) {
             if (k.str() == "leave_out" || k.str() == "leave_out_reason") continue;
             if (!value.is_string() && !value.is_number() && !value.is_boolean())
-                TableReader(*settings, file, "variant." + label).fail(std::string(k.str()), "a string, number or boolean");
+                TomlFields(*settings, "variant." + label, file).fail(std::string(k.str()), "a string, number or boolean");
             v.settings[std::string(k.str())] = value.is_string() ? *value.value<std::string>() : toml_value_text(value);
         }
         out.push_back(std::move(v));
@@ -216,12 +179,12 @@ std::vector<SceneParameter> read_parameter_sweeps(const toml::table& t, const st
     std::vector<SceneParameter> out;
     const toml::node* node = t.get("set");
     if (!node) return out;
-    TableReader r(t, file, where);
+    const TomlFields r(t, where, file);
     const toml::table* table = node->as_table();
     if (!table || table->empty()) r.fail("set", "a table of \"scene.key.path\" = [values]");
     for (const auto& [key, value] : *table) {
         const std::string path(key.str());
-        TableReader inner(*table, file, where + ".set");
+        const TomlFields inner(*table, where + ".set", file);
         if (value.is_table())
             inner.fail(path, "an array of numbers (quote a dotted path: \"" + path + ".…\" = [...])");
         const toml::array* values = value.as_array();
@@ -237,10 +200,10 @@ std::vector<SceneParameter> read_parameter_sweeps(const toml::table& t, const st
 }
 
 // `physics = ["equation_of_state", ...]`: each a row of physics_row_kinds().
-std::vector<std::string> read_physics_rows(const TableReader& r) {
+std::vector<std::string> read_physics_rows(const TomlFields& r) {
     std::string names;
     for (const auto& k : physics_row_kinds()) names += (names.empty() ? "" : ", ") + std::string("\"") + k.name + "\"";
-    std::vector<std::string> rows = r.strings("physics", "an array of row names from " + names);
+    std::vector<std::string> rows = strings(r, "physics", "an array of row names from " + names);
     for (const std::string& row : rows) {
         const auto& kinds = physics_row_kinds();
         if (std::none_of(kinds.begin(), kinds.end(), [&](const PhysicsRowKind& k) { return row == k.name; }))
@@ -251,12 +214,12 @@ std::vector<std::string> read_physics_rows(const TableReader& r) {
 
 SuiteScene read_scene(const toml::table& t, const std::string& file, int index, const std::string& dir,
                       const std::string& scene_dir) {
-    TableReader r(t, file, "[[scene]] #" + std::to_string(index));
-    r.only({"name", "path", "compare", "dt", "substeps", "iterations", "seeds", "duration", "output_interval", "set",
+    const TomlFields r(t, "[[scene]] #" + std::to_string(index), file);
+    r.allow_only({"name", "path", "compare", "dt", "substeps", "iterations", "seeds", "duration", "output_interval", "set",
             "frames", "physics", "backends"});
     SuiteScene s;
-    const auto name = r.string("name");
-    const auto path = r.string("path");
+    const auto name = optional_string(r, "name");
+    const auto path = optional_string(r, "path");
     if (!name && !path) r.fail("name", "the scene's name (a file in the scene directory) or a path");
     namespace fs = std::filesystem;
     fs::path file_path = path ? fs::path(*path) : fs::path(scene_dir) / (*name + ".toml");
@@ -266,20 +229,20 @@ SuiteScene read_scene(const toml::table& t, const std::string& file, int index, 
         r.fail(path ? "path" : "name", "an existing scene file (" + file_path.string() + " does not exist)");
     s.path = file_path.string();
     s.name = name ? *name : file_path.stem().string();
-    const std::string compare = r.string("compare").value_or("none");
+    const std::string compare = optional_string(r, "compare").value_or("none");
     if (compare == "trajectory") s.comparison = Comparison::trajectory;
     else if (compare == "statistics") s.comparison = Comparison::statistics;
     else if (compare != "none") r.fail("compare", "\"trajectory\", \"statistics\" or \"none\"");
-    s.dt = r.positive_array<double>("dt", "positive time steps");
-    s.substeps = r.positive_array<int>("substeps", "positive integers");
-    s.iterations = r.positive_array<int>("iterations", "positive integers");
-    s.seeds = r.positive_array<std::uint64_t>("seeds", "positive integer seeds");
-    s.duration = r.positive("duration");
-    s.output_interval = r.positive("output_interval");
-    s.frames = r.boolean("frames");
+    s.dt = positive_array<double>(r, "dt", "positive time steps");
+    s.substeps = positive_array<int>(r, "substeps", "positive integers");
+    s.iterations = positive_array<int>(r, "iterations", "positive integers");
+    s.seeds = positive_array<std::uint64_t>(r, "seeds", "positive integer seeds");
+    s.duration = optional_positive(r, "duration");
+    s.output_interval = optional_positive(r, "output_interval");
+    s.frames = optional_boolean(r, "frames");
     s.set = read_parameter_sweeps(t, file, "[[scene]] #" + std::to_string(index));
     s.physics = read_physics_rows(r);
-    s.backends = r.strings("backends", "an array of backend names");
+    s.backends = strings(r, "backends", "an array of backend names");
     // Where the run settings a case may break are set (checked against the scene later).
     s.line = int(t.source().begin.line);
     for (const char* key : {"output_interval", "duration", "dt"})
@@ -287,25 +250,16 @@ SuiteScene read_scene(const toml::table& t, const std::string& file, int index, 
     return s;
 }
 
-}  // namespace
-
-Suite parse_suite(const std::string& text, const std::string& file, const std::string& dir) {
-    toml::table root;
-    try {
-        root = toml::parse(text, file);
-    } catch (const toml::parse_error& e) {
-        std::ostringstream msg;
-        msg << file << ":" << e.source().begin.line << ": not valid TOML: " << e.description();
-        throw SuiteError(msg.str());
-    }
-    TableReader r(root, file, "");
-    r.only({"name", "description", "scene_dir", "backends", "reference", "seeds", "time_limit",
+// The suite's tables, read with TomlFields (their SceneError becomes SuiteError in parse_suite).
+Suite read_suite(const toml::table& root, const std::string& file, const std::string& dir) {
+    const TomlFields r(root, "", file);
+    r.allow_only({"name", "description", "scene_dir", "backends", "reference", "seeds", "time_limit",
             "warmup_fraction", "stability", "output", "tolerances", "scene", "variant", "reference_dir", "solver"});
     Suite suite;
     suite.source_path = file;
-    suite.name = r.string("name").value_or(std::filesystem::path(file).stem().string());
-    suite.description = r.string("description").value_or("");
-    suite.reference = r.string("reference").value_or("event");
+    suite.name = optional_string(r, "name").value_or(std::filesystem::path(file).stem().string());
+    suite.description = optional_string(r, "description").value_or("");
+    suite.reference = optional_string(r, "reference").value_or("event");
     if (const toml::node* b = root.get("backends")) {
         if (b->is_string() && b->value<std::string>() == "all") {
             suite.backends = {"all"};
@@ -320,29 +274,29 @@ Suite parse_suite(const std::string& text, const std::string& file, const std::s
     } else {
         suite.backends = {"all"};
     }
-    if (auto seeds = r.positive_array<std::uint64_t>("seeds", "positive integer seeds"); !seeds.empty())
+    if (auto seeds = positive_array<std::uint64_t>(r, "seeds", "positive integer seeds"); !seeds.empty())
         suite.seeds = seeds;
-    suite.time_limit_seconds = r.positive("time_limit").value_or(suite.time_limit_seconds);
+    suite.time_limit_seconds = optional_positive(r, "time_limit").value_or(suite.time_limit_seconds);
     if (const toml::node* w = root.get("warmup_fraction")) {
         const auto v = w->value<double>();
         if (!v || *v < 0 || *v > 1) r.fail("warmup_fraction", "a number in [0, 1]");
         suite.warmup_fraction = *v;
     }
-    suite.stability = r.boolean("stability").value_or(false);
+    suite.stability = optional_boolean(r, "stability").value_or(false);
     if (const toml::node* o = root.get("output")) {
         if (!o->is_table()) r.fail("output", "a table");
-        TableReader out(*o->as_table(), file, "output");
-        out.only({"hdf5", "frames", "max_overlap_samples", "max_trajectory_disks"});
-        suite.output.hdf5 = out.boolean("hdf5").value_or(true);
-        suite.output.frames = out.boolean("frames").value_or(false);
-        if (auto v = out.positive("max_overlap_samples")) suite.output.max_overlap_samples = std::size_t(*v);
-        if (auto v = out.positive("max_trajectory_disks")) suite.output.max_trajectory_disks = std::size_t(*v);
+        const TomlFields out(*o->as_table(), "output", file);
+        out.allow_only({"hdf5", "frames", "max_overlap_samples", "max_trajectory_disks"});
+        suite.output.hdf5 = optional_boolean(out, "hdf5").value_or(true);
+        suite.output.frames = optional_boolean(out, "frames").value_or(false);
+        if (auto v = optional_positive(out, "max_overlap_samples")) suite.output.max_overlap_samples = std::size_t(*v);
+        if (auto v = optional_positive(out, "max_trajectory_disks")) suite.output.max_trajectory_disks = std::size_t(*v);
     }
     read_tolerances(root, file, suite.tolerances);
     suite.variants = read_variants(root, file);
     add_solvers(suite, read_solver_tables(root, file, dir));
-    const std::string scene_dir = r.string("scene_dir").value_or("../../data/scenes");
-    const std::filesystem::path reference_dir = r.string("reference_dir").value_or("../../data/references");
+    const std::string scene_dir = optional_string(r, "scene_dir").value_or("../../data/scenes");
+    const std::filesystem::path reference_dir = optional_string(r, "reference_dir").value_or("../../data/references");
     suite.reference_dir = (reference_dir.is_relative() ? std::filesystem::path(dir) / reference_dir : reference_dir)
                               .lexically_normal().string();
     const toml::node* scenes = root.get("scene");
@@ -352,6 +306,24 @@ Suite parse_suite(const std::string& text, const std::string& file, const std::s
     for (const auto& node : *scenes->as_array())
         suite.scenes.push_back(read_scene(*node.as_table(), file, ++index, dir, scene_dir));
     return suite;
+}
+
+}  // namespace
+
+Suite parse_suite(const std::string& text, const std::string& file, const std::string& dir) {
+    toml::table root;
+    try {
+        root = toml::parse(text, file);
+    } catch (const toml::parse_error& e) {
+        std::ostringstream msg;
+        msg << file << ":" << e.source().begin.line << ": not valid TOML: " << e.description();
+        throw SuiteError(msg.str());
+    }
+    try {
+        return read_suite(root, file, dir);
+    } catch (const SceneError& e) {
+        throw SuiteError(e.what());
+    }
 }
 
 Suite load_suite(const std::string& path) {

@@ -26,6 +26,10 @@ void add_compare_command(CLI::App& app);   // two validation results side by sid
 // the scene; every command that runs a scene says it in these words (run_command.cpp).
 void require_support(const BackendInfo& backend, const Scene& scene);
 
+// --threads, --real and --cl-device, the options of a command that runs a backend
+// (backend_cli_options.cpp).
+void add_backend_options(CLI::App& cmd, BackendOptions& options);
+
 // `--set PATH=VALUE` (repeatable) on a command that reads a scene (core/scene_overrides.h);
 // each word is checked as PATH=VALUE when parsed, the paths and values when applied.
 void add_set_option(CLI::App& cmd, std::vector<SceneOverride>& overrides);

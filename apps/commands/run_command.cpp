@@ -152,10 +152,7 @@ void add_run_command(CLI::App& app) {
     cmd->add_option("-b,--backend", args->backend, "Backend name (see `collide backends`)")->capture_default_str();
     cmd->add_option("-o,--out", args->out, "HDF5 output file (written atomically)");
     cmd->add_flag("--frames", args->frames, "Also store positions and velocities at every output time");
-    cmd->add_option("--threads", args->options.threads, "Threads for multi-threaded backends (0 = all)");
-    cmd->add_option("--real", args->options.real, "Precision for backends that offer both")
-        ->check(CLI::IsMember({"float", "double"}));
-    cmd->add_option("--cl-device", args->options.device, "OpenCL device (index or name substring)");
+    add_backend_options(*cmd, args->options);
     add_set_option(*cmd, args->overrides);
     cmd->callback([args] { execute(*args); });
 }

@@ -63,10 +63,7 @@ void add_view_command(CLI::App& app) {
     cmd->add_option("--frames", args->view.frames, "Stop after N frames (frame 0 is the initial state)");
     cmd->add_option("--screenshot", args->view.screenshot, "Write the last frame as PNG");
     cmd->add_option("--size", args->size, "Window or image size WIDTHxHEIGHT")->capture_default_str();
-    cmd->add_option("--threads", args->options.threads, "Threads for multi-threaded backends (0 = all)");
-    cmd->add_option("--real", args->options.real, "Precision for backends that offer both")
-        ->check(CLI::IsMember({"float", "double"}));
-    cmd->add_option("--cl-device", args->options.device, "OpenCL device (index or name substring)");
+    add_backend_options(*cmd, args->options);
     add_set_option(*cmd, args->overrides);
     cmd->callback([args] { execute(*args); });
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -9,6 +10,7 @@
 #include "core/disk_overlap.h"
 #include "core/scene_features.h"
 #include "core/metrics.h"
+#include "core/option_reader.h"
 #include "core/representability.h"
 #include "core/target_time.h"
 #include "physics/collision_rule.h"
@@ -27,19 +29,6 @@ std::string describe(double v) {
     s.precision(17);
     s << v;
     return s.str();
-}
-
-// Parses the whole text with parse (std::stod or std::stoll, which alone would accept "7x");
-// nothing if it is not a number or has anything after one.
-template <typename Parse>
-auto parse_whole(const std::string& text, Parse parse) -> std::optional<decltype(parse(text, nullptr))> {
-    std::size_t used = 0;
-    try {
-        const auto value = parse(text, &used);
-        if (used == text.size()) return value;
-    } catch (const std::exception&) {
-    }
-    return std::nullopt;
 }
 
 }  // namespace
@@ -174,37 +163,16 @@ void EventSolver::read_options(std::size_t n) {
     // enough that a column settling on a floor under gravity stays resolvable in double (with
     // 1e-6 the gaps fall below the rounding of the positions and the loop stalls). The counter
     // `tc_elastic` says how many collisions were made elastic.
-    tc_ = 1e-4 * time_scale_;
-    std::int64_t renumber_interval = CellOrderRenumbering::default_interval(n);
-    bool prefetch = n >= prefetch_from_disks;
+    OptionReader options("event", &scene_);
+    tc_ = options.get_double("tc", 1e-4 * time_scale_, 0, "a duration >= 0");
+    const std::int64_t renumber_interval = options.get_int("renumber_interval", CellOrderRenumbering::default_interval(n),
+                                                           1, INT64_MAX, "a whole number of events >= 1");
+    const std::string prefetch = options.get_choice("prefetch", {"auto", "on", "off"}, "auto");
+    options.refuse_unknown();
+    renumbering_.set_interval(renumber_interval);
     // Stage 3 of the pipeline where the cells hold a disk or more on average.
     const bool second_records = double(n) >= double(cells_.cells_x()) * double(cells_.cells_y());
-    const auto options = scene_.backend_options.find("event");
-    const std::string where = "event: scene '" + scene_.name + "' [backend.event]";
-    if (options != scene_.backend_options.end())
-        for (const auto& [key, value] : options->second) {
-            if (key == "tc") {
-                const auto tc = parse_whole(value, [](const std::string& t, std::size_t* used) { return std::stod(t, used); });
-                if (!tc || !(*tc >= 0) || !std::isfinite(*tc))
-                    throw std::runtime_error(where + " tc = '" + value + "': expected a duration >= 0");
-                tc_ = *tc;
-            } else if (key == "renumber_interval") {
-                const auto interval =
-                    parse_whole(value, [](const std::string& t, std::size_t* used) { return std::stoll(t, used); });
-                if (!interval || *interval < 1)
-                    throw std::runtime_error(where + " renumber_interval = '" + value +
-                                             "': expected a whole number of events >= 1");
-                renumber_interval = *interval;
-            } else if (key == "prefetch") {
-                if (value != "auto" && value != "on" && value != "off")
-                    throw std::runtime_error(where + " prefetch = '" + value + "': expected \"auto\", \"on\" or \"off\"");
-                if (value != "auto") prefetch = value == "on";
-            } else {
-                throw std::runtime_error(where + ": unknown key '" + key + "' (known: tc, renumber_interval, prefetch)");
-            }
-        }
-    renumbering_.set_interval(renumber_interval);
-    prefetch_.configure(prefetch, second_records);
+    prefetch_.configure(prefetch == "auto" ? n >= prefetch_from_disks : prefetch == "on", second_records);
 }
 
 // The checks are shared with the plain solver (hard_disk_input.h): both refuse the same starts.

@@ -20,7 +20,7 @@ Scene scene_with(std::map<std::string, std::string> table) {
 std::string error_of(std::map<std::string, std::string> table) {
     try {
         parse_box2d_options(scene_with(std::move(table)));
-    } catch (const std::runtime_error& e) {
+    } catch (const std::exception& e) {
         return e.what();
     }
     return "";

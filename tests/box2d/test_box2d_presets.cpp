@@ -6,6 +6,7 @@
 #include <box2d/box2d.h>
 
 #include "box2d/box2d_solver.h"
+#include "core/option_reader.h"
 #include "tests/support/test_scenes.h"
 
 namespace collide {
@@ -84,7 +85,7 @@ TEST(Box2dPresets, UnknownPresetIsNamedWithTheValidOnes) {
     try {
         solver.load(preset_scene("default"), test::make_state({{5, 2, 1, 0, 0.5, 1}}));
         FAIL() << "an unknown preset must stop the load";
-    } catch (const std::runtime_error& e) {
+    } catch (const BackendOptionError& e) {
         const std::string message = e.what();
         EXPECT_NE(message.find("preset"), std::string::npos) << message;
         EXPECT_NE(message.find("'default'"), std::string::npos) << message;

@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "box2d/box2d_solver.h"
+#include "core/option_reader.h"
 #include "core/metrics.h"
 #include "core/run_driver.h"
 #include "tests/support/test_scenes.h"
@@ -171,7 +172,7 @@ TEST(Box2dSolver, UnknownOptionStopsTheLoad) {
     Scene scene = test::box_scene(10, 10);
     scene.backend_options["box2d"] = {{"sleep", "false"}};
     Box2dSolver solver;
-    EXPECT_THROW(solver.load(scene, test::make_state({{5, 5, 1, 0, 0.5, 1}})), std::runtime_error);
+    EXPECT_THROW(solver.load(scene, test::make_state({{5, 5, 1, 0, 0.5, 1}})), BackendOptionError);
 }
 
 }  // namespace
