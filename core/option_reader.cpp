@@ -107,7 +107,8 @@ std::string OptionReader::get_choice(std::string_view key, std::initializer_list
     std::string list;
     std::size_t k = 0;
     for (std::string_view c : choices) {
-        list += (k == 0 ? "" : k + 1 == choices.size() ? " or " : ", ") + ("\"" + std::string(c) + "\"");
+        if (k > 0) list.append(k + 1 == choices.size() ? " or " : ", ");
+        list.append(1, '"').append(c).append(1, '"');
         ++k;
     }
     fail(key, list);
