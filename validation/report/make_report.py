@@ -26,7 +26,7 @@ import sys
 import tomllib
 from collections import OrderedDict
 import multiprocessing
-from concurrent.futures import ProcessPoolExecutor, ThreadPoolExecutor
+from concurrent.futures import ProcessPoolExecutor, ThreadPoolExecutor, as_completed
 
 import jinja2
 
@@ -35,6 +35,7 @@ import animations  # noqa: E402
 import digest  # noqa: E402
 import figures  # noqa: E402
 import physics  # noqa: E402
+import progress  # noqa: E402
 import safe_output  # noqa: E402
 import stability  # noqa: E402
 import verdicts  # noqa: E402
@@ -535,6 +536,19 @@ def _scene_section_worker(scene):
     return scene_section(s["summary"], s["directory"], s["a"], scene, s["chosen"][scene], s["requests"].get(scene, {}))
 
 
+def _with_progress(pool, scenes):
+    """Each scene's section from the pool, in scene order, with a progress line on the way
+    (progress.py: in place on a terminal, quiet in short logs)."""
+    futures = [pool.submit(_scene_section_worker, scene) for scene in scenes]
+    line = progress.ProgressLine()
+    done = 0
+    for _ in as_completed(futures):
+        done += 1
+        line.update(done / len(futures), f"report: {done} of {len(futures)} scenes drawn")
+    line.finish()
+    return [f.result() for f in futures]
+
+
 def scene_sections(summary, directory, a=None):
     """Every scene's section. The figures are drawn by forked processes, one scene each, as many
     at a time as there are cores; `collide explain` reruns each jump's case meanwhile, side by side."""
@@ -548,7 +562,7 @@ def scene_sections(summary, directory, a=None):
         _SHARED.update(summary=summary, directory=directory, a=a, chosen=chosen_by_scene, requests=requests)
         try:
             with ProcessPoolExecutor(max_workers=cores, mp_context=multiprocessing.get_context("fork")) as pool:
-                sections = list(pool.map(_scene_section_worker, a.scenes))
+                sections = _with_progress(pool, a.scenes)
         finally:
             _SHARED.clear()
         explained = {k: f.result() for k, f in futures.items()}
