@@ -95,7 +95,7 @@ def test_gil_released_while_advancing_and_other_threads_are_told_to_wait(root):
     import threading
     import time
     sim = collide.Simulation(collide.Scene.from_file(str(root / "data" / "scenes" / "box_gas_1000.toml")), "event")
-    worker = threading.Thread(target=sim.advance_to, args=(10.0,))
+    worker = threading.Thread(target=sim.advance_to, args=(100.0,))  # long enough (~10^5 collisions) to be caught
     worker.start()
     refused = 0
     while worker.is_alive():  # this loop runs at all only because advance_to released the GIL
@@ -107,4 +107,4 @@ def test_gil_released_while_advancing_and_other_threads_are_told_to_wait(root):
         time.sleep(0.01)
     worker.join()
     assert refused > 0
-    assert sim.time == 10.0 and sim.metrics()["overlapping_pairs"] == 0
+    assert sim.time == 100.0 and sim.metrics()["overlapping_pairs"] == 0
