@@ -4,6 +4,8 @@
 // ENOTDIR (a file where a directory should be), EACCES (no permission).
 #include "output_file.h"
 
+#include "fd_io.h"
+
 #include <fcntl.h>
 #include <limits.h>
 #include <sys/stat.h>
@@ -118,17 +120,6 @@ std::string temporary_path_for(const std::string& target) {
     return (fs::path(directory_of(target)) / name).string();
 }
 
-// write(2) until all is written; false with errno set on failure (a full disk: ENOSPC).
-bool write_all(int fd, const std::string& bytes) {
-    for (std::size_t done = 0; done < bytes.size();) {
-        const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-        if (n < 0 && errno == EINTR) continue;
-        if (n < 0) return false;
-        done += std::size_t(n);
-    }
-    return true;
-}
-
 }  // namespace
 
 std::string input_path_problem(const std::string& path, bool directory) {
@@ -198,7 +189,7 @@ AtomicOutputFile::~AtomicOutputFile() {
 void AtomicOutputFile::write(const std::string& bytes) {
     const int fd = ::open(temporary_.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
     if (fd < 0) refuse(path_, "cannot open '" + temporary_ + "' (" + std::strerror(errno) + ")");
-    const bool written = write_all(fd, bytes);
+    const bool written = write_fully(fd, bytes.data(), bytes.size());  // (core/fd_io.h)
     const int error = errno;
     // A full disk may show only at close (NFS, quotas): both results count.
     const bool closed = ::close(fd) == 0;

@@ -2,25 +2,23 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
 #include "core/disk_overlap.h"
+#include "core/number_text.h"
 #include "core/representability.h"
 #include "core/uniform_grid.h"
 #include "physics/stepping_laws.h"
 
 namespace collide {
-namespace {
-
-std::string describe(double v) {
-    std::ostringstream s;
-    s.precision(17);
-    s << v;
-    return s.str();
+std::optional<std::string> outside_event_model(const SceneFeatures& f) {
+    if (f.friction) return "friction: hard disks of the event-driven model are smooth (no tangential impulse)";
+    if (f.damping) return "damping: a velocity-dependent drag is not free flight between events";
+    if (f.gravity && f.stones)
+        return "gravity with stones: a falling disk moves on a parabola relative to a fixed stone, so their "
+               "collision time is a quartic root, which this solver does not compute";
+    return std::nullopt;
 }
-
-}  // namespace
 
 // An event-driven run jumps from collision to collision, so its cost grows with the number of
 // events, not with the duration: disks at 1e30 length/time cross the box ~1e30 times and the
@@ -34,35 +32,35 @@ void reject_endless_run(const std::string& who, const Scene& scene, const Partic
     for (std::size_t i = 0; i < s.size(); ++i) crossings += std::hypot(s.vx[i], s.vy[i]) * scene.run.duration / box;
     if (crossings > max_event_estimate)
         throw std::runtime_error(who + ": scene '" + scene.name + "': the disks would cross the box about " +
-                                 describe(crossings) + " times in duration " + describe(scene.run.duration) +
-                                 ", each crossing at least one event; more than " + describe(max_event_estimate) +
+                                 round_trip_text(crossings) + " times in duration " + round_trip_text(scene.run.duration) +
+                                 ", each crossing at least one event; more than " + round_trip_text(max_event_estimate) +
                                  " events cannot finish (speeds too large for the box, or the duration too long)");
 }
 
 void check_hard_disk_input(const std::string& who, const Scene& scene, const ParticleState<double>& s) {
     const Physics& p = scene.physics;
     if (!(p.restitution >= 0 && p.restitution <= 1))
-        throw std::runtime_error(who + ": scene '" + scene.name + "': restitution e = " + describe(p.restitution) +
+        throw std::runtime_error(who + ": scene '" + scene.name + "': restitution e = " + round_trip_text(p.restitution) +
                                  " must lie in [0, 1] (e > 1 would create energy at every collision)");
     if (!(p.wall_restitution >= 0 && p.wall_restitution <= 1))
         throw std::runtime_error(who + ": scene '" + scene.name + "': wall restitution " +
-                                 describe(p.wall_restitution) + " must lie in [0, 1]");
+                                 round_trip_text(p.wall_restitution) + " must lie in [0, 1]");
     const World& w = scene.world;
     for (std::size_t i = 0; i < s.size(); ++i) {
         const std::string particle = who + ": particle " + std::to_string(i) + " ";
         if (!(s.radius[i] > 0) || !std::isfinite(s.radius[i]))
-            throw std::runtime_error(particle + "has radius " + describe(s.radius[i]) + "; hard disks need a radius > 0");
+            throw std::runtime_error(particle + "has radius " + round_trip_text(s.radius[i]) + "; hard disks need a radius > 0");
         if (!(s.mass[i] > 0) || !std::isfinite(s.mass[i]))
-            throw std::runtime_error(particle + "has mass " + describe(s.mass[i]) + "; expected a mass > 0");
+            throw std::runtime_error(particle + "has mass " + round_trip_text(s.mass[i]) + "; expected a mass > 0");
         for (double v : {s.x[i], s.y[i], s.vx[i], s.vy[i]})
             if (!std::isfinite(v)) throw std::runtime_error(particle + "has a non-finite position or velocity");
         if (scene.periodic()) continue;
         const double r = s.radius[i], slack = hard_disk_overlap_tolerance * 2 * r;
         if (s.x[i] - r < w.xmin - slack || s.x[i] + r > w.xmax + slack || s.y[i] - r < w.ymin - slack ||
             s.y[i] + r > w.ymax + slack)
-            throw std::runtime_error(particle + "at (" + describe(s.x[i]) + ", " + describe(s.y[i]) + ") with radius " +
-                                     describe(r) + " reaches outside the walls [" + describe(w.xmin) + ", " +
-                                     describe(w.xmax) + "] x [" + describe(w.ymin) + ", " + describe(w.ymax) + "]");
+            throw std::runtime_error(particle + "at (" + round_trip_text(s.x[i]) + ", " + round_trip_text(s.y[i]) + ") with radius " +
+                                     round_trip_text(r) + " reaches outside the walls [" + round_trip_text(w.xmin) + ", " +
+                                     round_trip_text(w.xmax) + "] x [" + round_trip_text(w.ymin) + ", " + round_trip_text(w.ymax) + "]");
     }
     // Then the numbers: masses, speeds, the collision denominator in double (a speed that does
     // not fit is named as such before the run is called endless).
@@ -92,9 +90,9 @@ void reject_overlapping_disks(const std::string& who, const Scene& scene, const 
             if (!centres_closer_than(dx, dy, sigma * (1 - hard_disk_overlap_tolerance))) return;
             const double distance = std::hypot(dx, dy);
             throw std::runtime_error(who + ": initial state overlaps: particles " + std::to_string(i) + " and " +
-                                     std::to_string(j) + " overlap by " + describe(sigma - distance) +
-                                     " (centre distance " + describe(distance) + ", contact distance " +
-                                     describe(sigma) + ")");
+                                     std::to_string(j) + " overlap by " + round_trip_text(sigma - distance) +
+                                     " (centre distance " + round_trip_text(distance) + ", contact distance " +
+                                     round_trip_text(sigma) + ")");
         });
     }
 }

@@ -3,12 +3,19 @@
 // valid hard-disk start is.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "core/particle_state.h"
 #include "core/scene.h"
+#include "core/scene_features.h"
 
 namespace collide {
+
+// What neither event-driven solver models, with the reason (empty if the scene is inside the
+// model): friction and damping (no free flight between events), and gravity with stones (a
+// quartic collision time). Each solver adds its own limits after these.
+std::optional<std::string> outside_event_model(const SceneFeatures& features);
 
 // Initial states may touch or reach a wall to within this fraction of the contact distance
 // (e.g. a lattice with spacing exactly 2r, rounded); anything deeper is an input error.

@@ -44,14 +44,10 @@ using event_time::never;
 
 std::optional<std::string> PlainEventSolver::supports(const Scene& scene) {
     const SceneFeatures f = scene_features(scene);
-    if (f.friction) return "friction: hard disks of the event-driven model are smooth (no tangential impulse)";
-    if (f.damping) return "damping: a velocity-dependent drag is not free flight between events";
+    if (auto reason = outside_event_model(f)) return reason;  // (shared with `event`)
     if (f.restitution != 1 || f.wall_restitution != 1)
         return "restitution below 1: inelastic disks can collapse (infinitely many collisions in a finite time), "
                "and the plain solver leaves out the TC model that prevents it (the `event` backend has it)";
-    if (f.gravity && f.stones)
-        return "gravity with stones: a falling disk moves on a parabola relative to a fixed stone, so their "
-               "collision time is a quartic root, which this solver does not compute";
     return std::nullopt;
 }
 

@@ -1,5 +1,7 @@
 #include "case_isolation.h"
 
+#include "core/fd_io.h"
+
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
@@ -129,28 +131,6 @@ int run_and_record(const CaseSpec& spec, const IsolationOptions& options,
     redirect_output_to_log(spec, options);
     // _exit: the child must not run the parent's atexit handlers or flush its stdio buffers twice.
     ::_exit(run_and_record(spec, options, run_case));
-}
-
-bool write_fully(int fd, const void* data, std::size_t size) {
-    const char* p = static_cast<const char*>(data);
-    while (size > 0) {
-        const ssize_t n = ::write(fd, p, size);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) return false;
-        p += n, size -= std::size_t(n);
-    }
-    return true;
-}
-
-bool read_fully(int fd, void* data, std::size_t size) {
-    char* p = static_cast<char*>(data);
-    while (size > 0) {
-        const ssize_t n = ::read(fd, p, size);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) return false;
-        p += n, size -= std::size_t(n);
-    }
-    return true;
 }
 
 // A worker's life: a case per request until the runner closes the pipe. A case that throws

@@ -2,14 +2,13 @@
 // suite side by side (validation/report/compare.py does the work): checks that changed status,
 // observables that moved beyond their combined error bars, bit-identical cases. Exit status 1
 // on a significant regression, for a user's own CI (docs/your-solver.md).
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <memory>
 #include <string>
 
 #include "apps/input_paths.h"
+#include "apps/python_script.h"
 #include "apps/resource_path.h"
 #include "commands.h"
 
@@ -25,21 +24,11 @@ struct CompareArgs {
 void execute(const CompareArgs& args) {
     const std::string script = resource_path("validation/report") + "/compare.py";
     const std::string sigma = std::to_string(args.sigma), allow = std::to_string(args.allow);
-    std::fflush(stdout);
-    const pid_t pid = ::fork();
-    if (pid < 0) throw std::runtime_error("fork failed");
-    if (pid == 0) {
-        ::execl(COLLIDE_PYTHON, COLLIDE_PYTHON, script.c_str(), args.dir_a.c_str(), args.dir_b.c_str(), "--sigma",
-                sigma.c_str(), "--allow", allow.c_str(), static_cast<char*>(nullptr));
-        std::perror(COLLIDE_PYTHON);
-        ::_exit(127);
-    }
-    int status = 0;
-    ::waitpid(pid, &status, 0);
+    const int status = run_python_script(script, {args.dir_a, args.dir_b, "--sigma", sigma, "--allow", allow});
     // 1: a regression, listed above; 2: the directories cannot be compared, named above.
-    if (WIFEXITED(status) && (WEXITSTATUS(status) == 1 || WEXITSTATUS(status) == 2)) throw CLI::RuntimeError(WEXITSTATUS(status));
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-        throw std::runtime_error(std::string("the comparison failed (") + COLLIDE_PYTHON + " " + script + ")");
+    if (status == 1 || status == 2) throw CLI::RuntimeError(status);
+    if (status != 0)
+        throw std::runtime_error(std::string("the comparison failed (") + python_interpreter() + " " + script + ")");
 }
 
 }  // namespace

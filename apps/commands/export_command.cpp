@@ -2,13 +2,12 @@
 // VisIt, OVITO, ASE or HOOMD (core/run_export.h, docs/exporting.md). XDMF and XYZ are written
 // here; GSD by python/collide/gsd_export.py (the `gsd` package), run as `collide report` runs
 // its renderer.
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
 
+#include "apps/python_script.h"
 #include "apps/resource_path.h"
 #include "apps/input_paths.h"
 #include "commands.h"
@@ -23,20 +22,12 @@ struct ExportArgs {
     std::string run, out, format;
 };
 
-// fork + exec (no shell, so no quoting of file names); the script names its own errors.
+// The script names its own errors (apps/python_script.h runs it).
 void write_gsd(const std::string& run, const std::string& out) {
     const std::string script = resource_path("python/collide") + "/gsd_export.py";
-    const pid_t pid = ::fork();
-    if (pid < 0) throw std::runtime_error("fork failed");
-    if (pid == 0) {
-        ::execl(COLLIDE_PYTHON, COLLIDE_PYTHON, script.c_str(), run.c_str(), out.c_str(), static_cast<char*>(nullptr));
-        std::perror(COLLIDE_PYTHON);
-        ::_exit(127);
-    }
-    int status = 0;
-    ::waitpid(pid, &status, 0);
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-        throw std::runtime_error("no GSD file written (" + std::string(COLLIDE_PYTHON) + " " + script + ", reason above)");
+    if (run_python_script(script, {run, out}) != 0)
+        throw std::runtime_error("no GSD file written (" + std::string(python_interpreter()) + " " + script +
+                                 ", reason above)");
 }
 
 void execute(const ExportArgs& args) {

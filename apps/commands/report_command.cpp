@@ -1,8 +1,6 @@
 // `collide report DIR`: renders DIR/report/index.html (self-contained, figures embedded) and
 // DIR/report/summary.md from the results of `collide validate`, with the Python renderer in
 // validation/report/ run by the interpreter CMake found (Debian's matplotlib, numpy, h5py).
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
@@ -19,6 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "apps/python_script.h"
 #include "apps/resource_path.h"
 #include "apps/input_paths.h"
 #include "commands.h"
@@ -116,30 +115,18 @@ void execute(const std::string& dir) {
     check_report_outputs(dir + "/report");  // first: refused at once, before reading every run file
     check_case_files(dir);
     const std::string script = resource_path("validation/report") + "/make_report.py";
-    // fork + exec (not system()): no shell, so directory names need no quoting.
-    const pid_t pid = ::fork();
-    if (pid < 0) throw std::runtime_error("fork failed");
-    if (pid == 0) {
-        // The renderer calls this program back (`collide render` for motion strips, `collide
-        // explain` for energy jumps): tell it which one, unless the caller chose another.
-        std::error_code error;
-        const auto self = std::filesystem::read_symlink("/proc/self/exe", error);
-        if (!error) ::setenv("COLLIDE_EXECUTABLE", self.c_str(), 0);
-        ::execl(COLLIDE_PYTHON, COLLIDE_PYTHON, script.c_str(), dir.c_str(), static_cast<char*>(nullptr));
-        std::perror(COLLIDE_PYTHON);
-        ::_exit(127);
-    }
-    int status = 0;
-    ::waitpid(pid, &status, 0);
+    // The renderer calls this program back (`collide render` for motion strips, `collide
+    // explain` for energy jumps): run_python_script tells it which one.
+    const int status = run_python_script(script, {dir});
     // Exit status 2: an input file is malformed; the renderer has named it and what is wrong.
-    if (WIFEXITED(status) && WEXITSTATUS(status) == 2)
+    if (status == 2)
         throw std::runtime_error("no report written: " + dir + " holds a malformed input (named above)");
     // Exit status 3: an output path was refused (safe_output.py, the twin of the check above,
     // for what changed after it).
-    if (WIFEXITED(status) && WEXITSTATUS(status) == 3)
+    if (status == 3)
         throw std::runtime_error("no report written: an output path was refused (named above)");
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-        throw std::runtime_error(std::string("the report renderer failed (") + COLLIDE_PYTHON + " " + script + ")");
+    if (status != 0)
+        throw std::runtime_error(std::string("the report renderer failed (") + python_interpreter() + " " + script + ")");
 }
 
 }  // namespace

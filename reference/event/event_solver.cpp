@@ -4,10 +4,10 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <sstream>
 #include <stdexcept>
 
 #include "core/disk_overlap.h"
+#include "core/number_text.h"
 #include "core/scene_features.h"
 #include "core/metrics.h"
 #include "core/option_reader.h"
@@ -24,25 +24,10 @@ namespace {
 
 using event_time::never;
 
-std::string describe(double v) {
-    std::ostringstream s;
-    s.precision(17);
-    s << v;
-    return s.str();
-}
-
 }  // namespace
 
 std::optional<std::string> EventSolver::supports(const Scene& scene) {
-    const SceneFeatures f = scene_features(scene);
-    if (f.friction)
-        return "friction: hard disks of the event-driven model are smooth (no tangential impulse)";
-    if (f.damping)
-        return "damping: a velocity-dependent drag is not free flight between events";
-    if (f.gravity && f.stones)
-        return "gravity with stones: a falling disk moves on a parabola relative to a fixed stone, "
-               "so their collision time is a quartic root, which this solver does not compute";
-    return std::nullopt;
+    return outside_event_model(scene_features(scene));
 }
 
 // ---------------------------------------------------------------------------------------
@@ -108,8 +93,8 @@ void EventSolver::load(const Scene& scene, const ParticleState<double>& initial)
         cell_size = dilute_size;
     cells_.configure(w, cell_size, n);
     if (scene.periodic() && (cells_.cells_x() < 3 || cells_.cells_y() < 3))
-        throw std::runtime_error("event: periodic box " + describe(w.width()) + " x " + describe(w.height()) +
-                                 " is narrower than 3 contact distances (2 r_max = " + describe(2 * r_max) +
+        throw std::runtime_error("event: periodic box " + round_trip_text(w.width()) + " x " + round_trip_text(w.height()) +
+                                 " is narrower than 3 contact distances (2 r_max = " + round_trip_text(2 * r_max) +
                                  "); the minimum-image convention needs at least 3 cells per axis");
     for (std::uint32_t i = 0; i < n; ++i) cells_.insert(disks_, i, cells_.column_of(disks_[i].x), cells_.row_of(disks_[i].y));
     reject_overlaps();
@@ -251,7 +236,7 @@ void EventSolver::check_progress(std::uint32_t i) {
                              : p.kind == EventKind::wall ? "wall " + std::to_string(p.border)
                                                          : "a cell border";
     throw std::runtime_error("event: no progress in simulated time: " + std::to_string(events_since_mark_) +
-                             " events at t = " + describe(now_) + " within " + describe(resolution) +
+                             " events at t = " + round_trip_text(now_) + " within " + round_trip_text(resolution) +
                              "; the last one between particle " + std::to_string(original_[i]) + " and " + with +
                              ". Likely an inelastic collapse (set [backend.event] tc > 0) or a disk "
                              "resting on a wall under gravity");
@@ -540,7 +525,7 @@ SolverStats EventSolver::stats() const {
 }
 
 std::map<std::string, std::string> EventSolver::provenance() const {
-    return {{"event.tc", describe(tc_)},
+    return {{"event.tc", round_trip_text(tc_)},
             {"event.cells", std::to_string(cells_.cells_x()) + "x" + std::to_string(cells_.cells_y())},
             {"event.prefetch", prefetch_.describe()}};
 }
