@@ -28,6 +28,8 @@
 #include "core/run_driver.h"
 #include "core/scene_loader.h"
 
+#include "opencl/opencl_solver.h"
+
 namespace collide::bench {
 namespace {
 
@@ -158,7 +160,7 @@ void run_suite(const BenchArgs& args, BenchReport& report) {
         for (const char* grid : {"group", "host", "device"})
             for (const bool reorder : {true, false}) {
                 if (stopped || !wanted(args, "opencl")) break;
-                if (grid == std::string("group") && (!reorder || n > 4096)) continue;  // never reorders; small N
+                if (grid == std::string("group") && (!reorder || std::size_t(n) > opencl::group_grid_up_to)) continue;  // never reorders; small N
                 BackendOptions options;
                 options.extra["grid"] = grid;
                 if (!reorder) options.extra.emplace("sort_interval", "0");  // else the backend's default

@@ -7,11 +7,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <sstream>
 
 #include "core/number_text.h"
-#include "core/output_file.h"
 #include "core/target_time.h"
 #include "npy.h"
 #include "program_call.h"
@@ -48,14 +46,25 @@ private:
     std::string path_;
 };
 
+// At most `limit` bytes of the file: a solver's output may be large, and only its head is read.
 std::string read_text(const std::string& path, std::uintmax_t limit) {
     std::error_code ec;
     const auto size = fs::file_size(path, ec);
     if (ec) return {};
     std::ifstream in(path, std::ios::binary);
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (size > limit) text.resize(limit);
+    std::string text(std::size_t(std::min<std::uintmax_t>(size, limit)), '\0');
+    in.read(text.data(), std::streamsize(text.size()));
+    text.resize(std::size_t(in.gcount()));
     return text;
+}
+
+// A request file in the call's private directory, deleted after the call: no atomic rename or
+// fsync is needed (nothing else can see it), only a complete write.
+void write_request_file(const std::string& path, const std::string& bytes) {
+    std::ofstream out(path, std::ios::binary);
+    out.write(bytes.data(), std::streamsize(bytes.size()));
+    out.close();
+    if (!out) throw std::runtime_error(path + ": could not write the request (disk full?)");
 }
 
 std::string times_text(const std::vector<double>& times) {
@@ -179,7 +188,7 @@ Answer parse_answer(const std::string& text) {
 
 class ExternalSolver : public Solver {
 public:
-    explicit ExternalSolver(ExternalSolverSpec spec) : spec_(std::move(spec)) {}
+    explicit ExternalSolver(ExternalSolverSpec spec) : spec_(std::move(spec)), files_sha256_(file_hashes()) {}
 
     std::string name() const override { return spec_.name; }
 
@@ -224,7 +233,7 @@ public:
         if (!spec_.python_class.empty()) p["solver_python_class"] = spec_.python_class;
         if (!spec_.rule.empty()) p["solver_rule"] = spec_.rule;
         if (!version_.empty()) p["solver_version"] = version_;
-        if (const std::string hashes = file_hashes(); !hashes.empty()) p["solver_files_sha256"] = hashes;
+        if (!files_sha256_.empty()) p["solver_files_sha256"] = files_sha256_;
         return p;
     }
 
@@ -249,9 +258,9 @@ private:
 
     void call(const std::vector<double>& times) {
         RequestDirectory dir;
-        write_file_atomically(dir.file("request.txt"), request_text(spec_, scene_, state_.size(), time_, times));
-        write_file_atomically(dir.file("initial.npy"), state_npy(state_));
-        write_file_atomically(dir.file("scene.toml"), scene_.source_text);
+        write_request_file(dir.file("request.txt"), request_text(spec_, scene_, state_.size(), time_, times));
+        write_request_file(dir.file("initial.npy"), state_npy(state_));
+        write_request_file(dir.file("scene.toml"), scene_.source_text);
         const ProgramOutcome outcome = call_program(spec_.command, dir.path(), spec_.directory.empty() ? "." : spec_.directory,
                                                     dir.file("output.txt"), spec_.call_time_limit);
         ++calls_;
@@ -335,9 +344,9 @@ private:
         std::vector<std::string> words;
         std::istringstream in(spec_.command);
         // A class's command is the interpreter and collide's runner: its own file is what counts.
-        if (spec_.python_class.empty())
+        if (spec_.python_class.empty()) {
             for (std::string w; in >> w;) words.push_back(w);
-        if (!spec_.python_class.empty()) {
+        } else {
             const std::string module = spec_.python_class.substr(0, spec_.python_class.rfind(':'));
             std::string file = module;
             if (file.size() < 3 || file.compare(file.size() - 3, 3, ".py") != 0) {
@@ -363,6 +372,7 @@ private:
     }
 
     ExternalSolverSpec spec_;
+    std::string files_sha256_;  // file_hashes(), once: the files a run's provenance names
     Scene scene_;
     ParticleState<double> state_;
     double time_ = 0;
@@ -386,6 +396,16 @@ std::string solver_name_problem(const std::string& name) {
 std::string rule_problem(const std::string& rule) {
     if (rule.empty() || rule == "collide-first" || rule == "integrate-first") return "";
     return "\"collide-first\" or \"integrate-first\" (the stepping rule it implements), not \"" + rule + "\"";
+}
+
+std::string spec_problem(const ExternalSolverSpec& spec) {
+    if (std::string why = solver_name_problem(spec.name); !why.empty()) return "expected " + why;
+    if (spec.command.empty() == spec.python_class.empty())
+        return "expected either a command (a program) or a Python class (\"module:Class\"), not both or neither";
+    if (!spec.python_class.empty() && spec.python_class.find(':') == std::string::npos)
+        return "python: expected \"module:Class\" or \"file.py:Class\", not \"" + spec.python_class + "\"";
+    if (std::string why = rule_problem(spec.rule); !why.empty()) return "rule: expected " + why;
+    return "";
 }
 
 ExternalSolverSpec parse_solver_option(const std::string& text) {

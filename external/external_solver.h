@@ -40,6 +40,12 @@ std::string solver_name_problem(const std::string& name);
 // "" or what is wrong with a rule name.
 std::string rule_problem(const std::string& rule);
 
+// "" when `spec` is complete and valid (name, exactly one of command and python_class, a class
+// as "module:Class", the rule), else what is wrong, e.g. "rule: expected ...". Every way a
+// solver is named (a suite's [solver.NAME], --solver, Python's solvers=) is checked by it;
+// the suite file also names the key's line.
+std::string spec_problem(const ExternalSolverSpec& spec);
+
 // The spec of NAME=COMMAND (`--solver`); throws std::invalid_argument naming the fault.
 ExternalSolverSpec parse_solver_option(const std::string& text);
 

@@ -29,9 +29,8 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 // cross the bus twice per step and sort on one core while thousands wait, so the grid stays
 // on the device.
 std::string default_grid_mode(const DeviceEntry& device, std::size_t n) {
-    constexpr std::size_t group_up_to = 4096;
     constexpr std::size_t cpu_device_grid_from = 50'000;
-    if (n <= group_up_to) return "group";
+    if (n <= group_grid_up_to) return "group";
     if (device.type == "CPU" && n < cpu_device_grid_from) return "host";
     return "device";
 }
@@ -51,7 +50,7 @@ public:
     using Particle = typename Layout<Real>::Particle;
     using StepParams = typename Layout<Real>::StepParams;
 
-    explicit OpenclSolver(const BackendOptions& options) : requested_(options), options_(options) {}
+    explicit OpenclSolver(const BackendOptions& options) : requested_(options) {}
 
     std::string name() const override { return "opencl"; }
     double time() const override { return double(step_count_) * scene_.run.dt; }
@@ -113,13 +112,12 @@ public:
         return {{"opencl_platform", d.platform_name}, {"opencl_device", d.device_name},
                 {"opencl_device_version", d.device_version}, {"opencl_driver", d.driver_version},
                 {"opencl_build_options", session_.build_options}, {"grid", grid_mode_},
-                {"sort_interval", std::to_string(grid_mode_ == "group" ? 0 : sort_interval_)}, {"real", sizeof(Real) == 8 ? "double" : "float"}};
+                {"sort_interval", std::to_string(sort_interval_)}, {"real", sizeof(Real) == 8 ? "double" : "float"}};
     }
 
 private:
     void load_checked(const Scene& scene, const ParticleState<double>& initial) {
         scene_ = scene;
-        options_ = requested_;
         read_options(scene);
         n_ = initial.size();
         if (n_ >= std::size_t(UINT32_MAX)) throw std::invalid_argument("opencl: at most 2^32 - 1 disks (32-bit indices)");
@@ -130,13 +128,14 @@ private:
         grid_builds_ = 0;
         stats_ = SolverStats{};
         const bool real_double = sizeof(Real) == 8;
-        const DeviceEntry device = select_device(options_.device);
+        const DeviceEntry device = select_device(requested_.device);
         if (real_double && !device.fp64)
             throw std::runtime_error("opencl: --real double needs fp64, which device '" + device.device_name +
                                      "' does not offer; use --real float or another --cl-device");
         session_ = open_session(device, kernel_build_options(scene, initial, real_double, device));
         check_layout();
         grid_mode_ = grid_choice_.empty() ? default_grid_mode(session_.device, n_) : grid_choice_;
+        if (grid_mode_ == "group") sort_interval_ = 0;  // the group kernel never reorders the disks
 
         const double r_max = n_ ? *std::max_element(initial.radius.begin(), initial.radius.end()) : 1.0;
         host_grid_.configure(scene.world, 2 * r_max);
@@ -452,7 +451,6 @@ private:
     }
 
     const BackendOptions requested_;  // as created
-    BackendOptions options_;          // requested_, for this load
     std::string grid_choice_;         // read_options(): "host", "device", "group" or "" (the device's default)
     std::optional<std::string> local_size_;
     Scene scene_;

@@ -32,6 +32,10 @@ namespace collide::opencl {
 
 std::unique_ptr<Solver> make_opencl_solver(const BackendOptions& options);
 
+// The largest N the default grid choice gives grid = "group" (one work-group, many steps per
+// launch): below it launches cost more than the work.
+inline constexpr std::size_t group_grid_up_to = 4096;
+
 // The -D flags and other options the solver builds its kernels with for this scene.
 std::string kernel_build_options(const Scene& scene, const ParticleState<double>& initial, bool real_double,
                                  const DeviceEntry& device);

@@ -97,10 +97,8 @@ py::dict validate(const std::string& suite_path, const std::string& out, int job
         spec.python_class = python_class;
         spec.rule = rule;
         spec.origin = "solvers[\"" + name + "\"]";
-        if (std::string why = external::solver_name_problem(name); !why.empty())
-            throw validation::SuiteError(spec.origin + ": expected " + why);
-        if (std::string why = external::rule_problem(rule); !why.empty())
-            throw validation::SuiteError(spec.origin + ": rule: expected " + why);
+        if (std::string problem = external::spec_problem(spec); !problem.empty())
+            throw validation::SuiteError(spec.origin + ": " + problem);
         specs.push_back(spec);
     }
     validation::add_solvers(suite, specs);

@@ -34,9 +34,9 @@ Scene scene_of_case(const Scene& base, const SuiteScene& entry, const CaseSpec& 
 
 }  // namespace
 
-ReplayedCase replay_case(const std::string& suite_path, const std::string& case_id,
-                         const std::vector<BackendInfo>& available, const std::vector<SceneOverride>& overrides) {
-    const Suite suite = load_suite(suite_path);
+ReplayedCase replay_case(const Suite& suite, const std::string& case_id, const std::vector<BackendInfo>& available,
+                         const std::vector<SceneOverride>& overrides) {
+    const std::string& suite_path = suite.source_path;
     const std::vector<Scene> scenes = load_suite_scenes(suite);
     const std::vector<BackendInfo> backends = select_backends(suite, available);
     const std::vector<CaseSpec> specs = plan_cases(suite, scenes, backends);

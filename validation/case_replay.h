@@ -31,8 +31,9 @@ struct ReplayedCase {
 // `overrides` (`collide explain --set`) change the case's scene file as `collide run --set`
 // does; a run setting they name (run.dt, ...) or the seed wins over the suite's own for the case.
 // Such a case is a what-if: it no longer retraces the recorded run.
-ReplayedCase replay_case(const std::string& suite_path, const std::string& case_id,
-                         const std::vector<BackendInfo>& available, const std::vector<SceneOverride>& overrides = {});
+// `suite` is the loaded suite file (load_suite), read once by the caller.
+ReplayedCase replay_case(const Suite& suite, const std::string& case_id, const std::vector<BackendInfo>& available,
+                         const std::vector<SceneOverride>& overrides = {});
 
 // Throws std::runtime_error, naming what differs, unless the rebuilt case ran with the run
 // settings, disk count and initial state (bit for bit) that the case's record holds: a suite or

@@ -137,7 +137,6 @@ double collision_frequency(const CaseResult& r, const SceneFeatures& f) {
 }
 
 // The backends that run the stepping rules (docs/stepping-rules.md).
-bool stepped_backend(const std::string& b) { return follows_stepping_rules(b); }
 
 }  // namespace
 
@@ -174,7 +173,7 @@ std::vector<CheckResult> case_checks(const CaseResult& r, const SceneFeatures& f
 
     const EnergyCheck energy = energy_check(f);
     if (energy.kind == EnergyKind::none) c.left_out("energy_drift", energy.reason);
-    else if (energy.kind == EnergyKind::kinetic && stepped_backend(r.spec.backend) && r.duration > 0 && r.disks > 0) {
+    else if (energy.kind == EnergyKind::kinetic && follows_stepping_rules(r.spec.backend) && r.duration > 0 && r.disks > 0) {
         // The stepped rules lose or gain energy when one disk takes two impulses from one
         // Jacobi snapshot; the bound is the drift the rule itself predicts for this case's
         // collision frequency, dt, duration and size (docs/stepping-rules.md, "Energy at e = 1").

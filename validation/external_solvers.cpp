@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/toml_fields.h"
 #include "solver_tables.h"
 #include "statistics_bias_model.h"
 
@@ -14,13 +15,7 @@ namespace {
 constexpr double call_share_of_case_limit = 0.45;
 
 [[noreturn]] void fail(const std::string& file, const toml::node& node, const std::string& where, const std::string& expected) {
-    std::string msg = file;
-    if (node.source().begin.line) {
-        msg += ':';
-        msg += std::to_string(node.source().begin.line);
-    }
-    msg += ": ";
-    throw SuiteError(msg + where + ": expected " + expected);
+    throw SuiteError(location(file, int(node.source().begin.line)) + where + ": expected " + expected);
 }
 
 std::string string_key(const toml::table& t, const std::string& key, const std::string& file, const std::string& where) {
@@ -31,12 +26,6 @@ std::string string_key(const toml::table& t, const std::string& key, const std::
 }
 
 }  // namespace
-
-std::string shell_quote(const std::string& word) {
-    std::string out = "'";
-    for (char c : word) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
-}
 
 std::vector<external::ExternalSolverSpec> read_solver_tables(const toml::table& root, const std::string& file,
                                                              const std::string& dir) {
@@ -67,6 +56,7 @@ std::vector<external::ExternalSolverSpec> read_solver_tables(const toml::table& 
             fail(file, *t->get("python"), where + ".python", "\"module:Class\" or \"file.py:Class\"");
         if (const std::string why = external::rule_problem(spec.rule); !why.empty())
             fail(file, *t->get("rule"), where + ".rule", why);
+        // (the checks above, with each key's line, are those of external::spec_problem)
         out.push_back(std::move(spec));
     }
     return out;

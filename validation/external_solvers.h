@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/backend_registry.h"
+#include "core/shell_quote.h"
 #include "external/external_solver.h"
 #include "suite.h"
 
@@ -31,8 +32,5 @@ void add_solvers(Suite& suite, const std::vector<external::ExternalSolverSpec>& 
 // backends (statistics_bias_model.h). Throws SuiteError for a name a built-in backend has.
 std::vector<BackendInfo> backends_with_solvers(const Suite& suite, std::vector<BackendInfo> built_in,
                                                const PythonRunner& python);
-
-// A word quoted for /bin/sh ('...' with every ' written '\'').
-std::string shell_quote(const std::string& word);
 
 }  // namespace collide::validation

@@ -89,11 +89,19 @@ std::vector<double> pooled_speeds(const Group& g) {
 // `expected` (a stepped backend: statistics_bias_model.h) the same distance is measured from
 // the rule's predicted difference instead, |(mu - mu_ref) - predicted| / sqrt(se^2 + se_ref^2
 // + u^2) <= z_max, and the prediction is recorded in the check.
-void z_check(CheckResult& c, const Group& g, const Group& ref, double (*value)(const CaseResult&),
-             double z_max, const std::string& what,
+// One observable's replicate means on the two sides: what z_check judges and what
+// statistical_difference records, computed once.
+struct ReplicateMeans {
+    MeanAndError a, b;  // the backend's, the reference's
+};
+ReplicateMeans replicate_means(const Group& g, const Group& ref, double (*value)(const CaseResult&)) {
+    return {mean_and_error(replicate_values(g, value)), mean_and_error(replicate_values(ref, value))};
+}
+
+void z_check(CheckResult& c, const ReplicateMeans& m, const Group& ref, double z_max, const std::string& what,
              const std::function<BiasPrediction(const MeanAndError& nu_ref)>& expected = {}) {
-    const auto a = mean_and_error(replicate_values(g, value));
-    const auto b = mean_and_error(replicate_values(ref, value));
+    const MeanAndError& a = m.a;
+    const MeanAndError& b = m.b;
     if (a.count < 2 || b.count < 2) {
         c.status = CheckStatus::left_out;
         c.detail = "needs at least 2 finished replicates on both sides for an error bar";
@@ -119,11 +127,10 @@ void z_check(CheckResult& c, const Group& g, const Group& ref, double (*value)(c
 
 // The numbers behind a z_check, for the summary: the report draws and states them (never by
 // reading the check's prose). Empty when the check has no error bar (fewer than 2 replicates).
-std::optional<StatisticalDifference> statistical_difference(const Group& g, const Group& ref,
-                                                            double (*value)(const CaseResult&),
-                                                            const CheckResult& check, double z_max) {
-    const auto a = mean_and_error(replicate_values(g, value));
-    const auto b = mean_and_error(replicate_values(ref, value));
+std::optional<StatisticalDifference> statistical_difference(const ReplicateMeans& m, const CheckResult& check,
+                                                            double z_max) {
+    const MeanAndError& a = m.a;
+    const MeanAndError& b = m.b;
     if (a.count < 2 || b.count < 2 || !std::isfinite(a.mean) || !std::isfinite(b.mean) || b.mean == 0)
         return std::nullopt;
     StatisticalDifference d;
@@ -248,16 +255,17 @@ Comparisons compare_with_reference(const Suite& suite, const std::vector<CaseRes
                 };
             }
             CheckResult pressure = make_check(g, "pressure");
-            if (auto why = pressure_left_out(features[spec.scene_index])) pressure.detail = *why;
-            else z_check(pressure, g, *ref, mean_compressibility, tol.statistics_z, "Z = P/(rho kT) (contact-shell estimator)", pressure_model);
+            const auto pressure_left_out_why = pressure_left_out(features[spec.scene_index]);
+            const ReplicateMeans z = pressure_left_out_why ? ReplicateMeans{} : replicate_means(g, *ref, mean_compressibility);
+            if (pressure_left_out_why) pressure.detail = *pressure_left_out_why;
+            else z_check(pressure, z, *ref, tol.statistics_z, "Z = P/(rho kT) (contact-shell estimator)", pressure_model);
             out.checks.push_back(pressure);
             CheckResult rate = make_check(g, "collision_rate");
-            z_check(rate, g, *ref, collision_rate, tol.statistics_z, "collisions per disk per time", rate_model);
+            const ReplicateMeans nu = replicate_means(g, *ref, collision_rate);
+            z_check(rate, nu, *ref, tol.statistics_z, "collisions per disk per time", rate_model);
             out.checks.push_back(rate);
-            if (pressure.status != CheckStatus::left_out)
-                point.pressure = statistical_difference(g, *ref, mean_compressibility, pressure, tol.statistics_z);
-            if (rate.status != CheckStatus::left_out)
-                point.collision_rate = statistical_difference(g, *ref, collision_rate, rate, tol.statistics_z);
+            if (pressure.status != CheckStatus::left_out) point.pressure = statistical_difference(z, pressure, tol.statistics_z);
+            if (rate.status != CheckStatus::left_out) point.collision_rate = statistical_difference(nu, rate, tol.statistics_z);
             CheckResult speed = make_check(g, "speed_distribution");
             const auto ks = ks_two_sample(pooled_speeds(g), pooled_speeds(*ref));
             speed.value = ks.p_value;

@@ -187,8 +187,8 @@ void check_output_places(const std::string& dir, const std::vector<CaseSpec>& sp
 
 int default_jobs() { return std::max(1u, std::thread::hardware_concurrency()); }
 
-bool runs_in_worker(const CaseSpec& spec) {
-    return spec.left_out.empty() && spec.backend.substr(0, spec.backend.find('[')) == "opencl";
+bool runs_in_worker(const CaseSpec& spec, const BackendInfo& backend) {
+    return spec.left_out.empty() && backend.keeps_process;
 }
 
 SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& available, const RunnerOptions& options) {
@@ -225,7 +225,8 @@ SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& avail
     std::map<std::string, const BackendInfo*> by_name;
     for (const BackendInfo& b : backends) by_name[b.name] = &b;
     outcome.jobs = options.jobs > 0 ? options.jobs : default_jobs();
-    IsolationOptions isolation{outcome.jobs, suite.time_limit_seconds, result_dir, runs_dir, runs_in_worker};
+    IsolationOptions isolation{outcome.jobs, suite.time_limit_seconds, result_dir, runs_dir,
+                               [&by_name](const CaseSpec& s) { return runs_in_worker(s, *by_name.at(s.backend)); }};
     auto run_case = [&](const CaseSpec& spec) {
         CaseContext context{&suite, &case_scenes.scene(spec), by_name.at(spec.backend), options.output_dir};
         return execute_case(spec, context);

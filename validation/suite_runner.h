@@ -54,10 +54,10 @@ struct SuiteOutcome {
 int default_jobs();
 
 // Whether a case runs in a worker process that keeps its start-up for the next case
-// (case_isolation.h): the opencl backend's cases (and its variants'), whose process start pays
-// for the OpenCL platform, context and compiled program (0.2-0.3 s on PoCL, most of a small
-// case), when the backend runs them at all.
-bool runs_in_worker(const CaseSpec& spec);
+// (case_isolation.h): the cases of a backend (or variant) marked BackendInfo::keeps_process,
+// the opencl backend, whose process start pays for the OpenCL platform, context and compiled
+// program (0.2-0.3 s on PoCL, most of a small case), when the backend runs them at all.
+bool runs_in_worker(const CaseSpec& spec, const BackendInfo& backend);
 
 // `backends` are the backends the suite may use (all_backends() in the program, test doubles
 // in tests). Throws SuiteError / SceneError for bad input before any case runs.

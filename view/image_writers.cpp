@@ -15,18 +15,13 @@
 #include <stdexcept>
 
 #include "core/output_file.h"
+#include "core/shell_quote.h"
 
 namespace collide::view {
 namespace {
 
 [[noreturn]] void cannot_write(const std::string& path, const std::string& why) {
     throw std::runtime_error("cannot write '" + path + "': " + why);
-}
-
-std::string shell_quoted(const std::string& word) {
-    std::string quoted = "'";
-    for (char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return quoted + "'";
 }
 
 struct FileCloser {
@@ -130,7 +125,7 @@ public:
         const std::string command = "ffmpeg -loglevel error -y -f rawvideo -pix_fmt rgba -s " + std::to_string(width) +
                                     "x" + std::to_string(height) + " -r " + std::to_string(fps) +
                                     " -i - -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -pix_fmt yuv420p -f mp4 " +
-                                    shell_quoted(temp_.temporary_path());
+                                    shell_quote(temp_.temporary_path());
         // A failed ffmpeg closes the pipe; without this the next write would kill us silently
         // (SIGPIPE) instead of failing with a message.
         std::signal(SIGPIPE, SIG_IGN);

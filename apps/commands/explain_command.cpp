@@ -105,8 +105,9 @@ void require_same_path(Solver& solver, const validation::ReplayedCase& c, const 
 void execute(const ExplainArgs& args) {
     // The outside solvers a suite file names ([solver.NAME]) replay too, one program call per step.
     const std::string suite = suite_of(args);
-    const auto backends = validation::backends_with_solvers(validation::load_suite(suite), all_backends(), python_runner());
-    const validation::ReplayedCase c = validation::replay_case(suite, args.case_id, backends, args.overrides);
+    const validation::Suite loaded = validation::load_suite(suite);
+    const auto backends = validation::backends_with_solvers(loaded, all_backends(), python_runner());
+    const validation::ReplayedCase c = validation::replay_case(loaded, args.case_id, backends, args.overrides);
     if (c.backend.name == "event" || c.backend.name == "event-plain")  // exact: from collision to collision
         throw std::runtime_error("case " + c.spec.id + " ran on '" + c.backend.name +
                                  "', which has no time steps to look inside");

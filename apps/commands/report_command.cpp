@@ -23,6 +23,7 @@
 #include "commands.h"
 #include "core/output_file.h"
 #include "validation/case_result.h"
+#include "validation/suite_runner.h"
 
 namespace collide::cli {
 namespace {
@@ -92,7 +93,7 @@ void check_case_files(const std::string& dir) {
         }
     };
     std::vector<std::thread> threads;
-    for (unsigned t = 1; t < std::max(1u, std::thread::hardware_concurrency()); ++t) threads.emplace_back(work);
+    for (int t = 1; t < validation::default_jobs(); ++t) threads.emplace_back(work);
     work();
     for (auto& t : threads) t.join();
     for (const std::string& problem : problems)

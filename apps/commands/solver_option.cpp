@@ -2,6 +2,7 @@
 // outside solvers joining a suite run as backends (docs/your-solver.md).
 #include <stdexcept>
 
+#include "apps/python_script.h"
 #include "apps/resource_path.h"
 #include "commands.h"
 
@@ -39,11 +40,14 @@ std::vector<external::ExternalSolverSpec> solver_specs(const SolverArgs& args) {
             if (spec.name == name) spec.rule = rule, found = true;
         if (!found) throw std::invalid_argument("--solver-rule " + text + ": no --solver or --python-solver named '" + name + "'");
     }
+    for (const auto& spec : specs)
+        if (std::string problem = external::spec_problem(spec); !problem.empty())
+            throw std::invalid_argument(spec.origin + ": " + problem);
     return specs;
 }
 
 validation::PythonRunner python_runner() {
-    return {COLLIDE_PYTHON, resource_path("python/collide") + "/solver_runner.py"};
+    return {python_interpreter(), resource_path("python/collide") + "/solver_runner.py"};
 }
 
 }  // namespace collide::cli

@@ -10,6 +10,7 @@ Nothing is simulated here. The figures of speed depend on the machine they are m
 captions in the course say so.
 """
 import argparse
+import functools
 import io
 import json
 import pathlib
@@ -17,6 +18,7 @@ import re
 import subprocess
 import sys
 import tempfile
+import tomllib
 
 import h5py
 import matplotlib
@@ -48,8 +50,12 @@ class Lab:
             text, n = re.subn(rf"(?m)^{key}\s*=.*$", f"{key} = {value}", text, count=1)
             if n != 1:
                 raise SystemExit(f"make_figures: {name} has no key {key!r} to change")
+        return self.write_scene(text)
+
+    def write_scene(self, text, stem="scene"):
+        """A scene file of the text given, under a fresh name in the scratch directory."""
         self.count += 1
-        path = self.scratch / f"scene{self.count}.toml"
+        path = self.scratch / f"{stem}{self.count}.toml"
         path.write_text(text)
         return path
 
@@ -222,10 +228,15 @@ def maxwell(lab, out):
            legend_loc="upper right")
 
 
+@functools.cache
+def kolafa_rottner_terms():
+    """The terms of Kolafa & Rottner's (2006) equation of state, read once from data/references."""
+    return tomllib.loads((ROOT / "data/references/kolafa_rottner_2006.toml").read_text())["terms"]
+
+
 def kolafa_rottner(eta):
     """Z of the hard-disk fluid, Kolafa & Rottner (2006), from data/references."""
-    import tomllib
-    terms = tomllib.loads((ROOT / "data/references/kolafa_rottner_2006.toml").read_text())["terms"]
+    terms = kolafa_rottner_terms()
     return sum(t["coefficient"] * eta ** t["eta_power"] / (1 - eta) ** t["one_minus_eta_power"] for t in terms)
 
 
@@ -251,10 +262,8 @@ def crystal_scene(lab, eta, duration):
                   for r in range(20) for c in range(20)])
     v = np.random.default_rng(1).normal(size=(400, 2))
     v -= v.mean(axis=0)
-    lab.count += 1
-    path = lab.scratch / f"crystal{lab.count}.toml"
-    path.write_text(list_scene(x, v, f"[0.0, 0.0, {width!r}, {height!r}]", duration, "0.5", "periodic"))
-    return path
+    return lab.write_scene(list_scene(x, v, f"[0.0, 0.0, {width!r}, {height!r}]", duration, "0.5", "periodic"),
+                           "crystal")
 
 
 def equation_of_state(lab, out):
@@ -324,9 +333,7 @@ def chaos(lab, out):
     for shift in (0.0, 1e-12):
         moved = x.copy()
         moved[0, 0] += shift
-        lab.count += 1
-        scene = lab.scratch / f"chaos{lab.count}.toml"
-        scene.write_text(list_scene(moved, v, "[0.0, 0.0, 50.0, 50.0]", "10.0", "0.05"))
+        scene = lab.write_scene(list_scene(moved, v, "[0.0, 0.0, 50.0, 50.0]", "10.0", "0.05"), "chaos")
         runs.append(lab.run(scene, "event", frames=True))
     t = runs[0]["frames/time"][:]
     separation = np.sqrt(sum(np.sum((runs[0][k][:] - runs[1][k][:]) ** 2, axis=(1, 2))
@@ -354,12 +361,15 @@ def enskog_rate(density, eta, kT):
 def haff(lab, out):
     f = lab.run(SCENES / "physics/haff_cooling.toml", "event")
     t, K = f["metrics/time"][:], f["metrics/kinetic_energy"][:]
-    n, side, e = 1000, 88.6226925452758, 0.9
+    scene = tomllib.loads(f.attrs["scene_text"])   # the scene file the run read (docs/output-format.md)
+    x0, y0, x1, y1 = scene["world"]["box"]
+    n, e = len(f["particles/mass"]), scene["physics"]["restitution"]
     T = K / n
-    density = n / side**2
-    tau = 4 / ((1 - e**2) * enskog_rate(density, density * np.pi / 4, T[0]))
+    density = n / ((x1 - x0) * (y1 - y0))
+    eta = density * np.pi / 4   # radius 1/2
+    tau = 4 / ((1 - e**2) * enskog_rate(density, eta, T[0]))
     fig, (ax, res) = plt.subplots(2, 1, figsize=(6, 4.4), sharex=True, gridspec_kw={"height_ratios": [2, 1]})
-    ax.plot(t, T / T[0], "o", ms=3, label="event, haff_cooling (1000 disks, e = 0.9, η = 0.1)")
+    ax.plot(t, T / T[0], "o", ms=3, label=f"event, haff_cooling ({n} disks, e = {e:g}, η = {eta:.2g})")
     ax.plot(t, 1 / (1 + t / tau) ** 2, "k", lw=1, label=rf"Haff: $1/(1 + t/\tau)^2$, $\tau$ = {tau:.1f} (Enskog)")
     ax.set_ylabel(r"$T(t)/T_0$ (dimensionless)")
     ax.legend()

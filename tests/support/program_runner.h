@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/shell_quote.h"
 #include "tests/support/scratch_directory.h"
 
 namespace collide::test {
@@ -19,18 +20,12 @@ struct ProgramResult {
     std::string out, err;
 };
 
-inline std::string shell_quoted(const std::string& word) {
-    std::string quoted = "'";
-    for (char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return quoted + "'";
-}
-
 inline ProgramResult run_program(const std::string& program, const std::vector<std::string>& args,
                                  const ScratchDirectory& dir) {
     const std::string out_file = dir.file(".stdout"), err_file = dir.file(".stderr");
-    std::string command = shell_quoted(program);
-    for (const auto& arg : args) command.append(" ").append(shell_quoted(arg));
-    command.append(" >").append(shell_quoted(out_file)).append(" 2>").append(shell_quoted(err_file));
+    std::string command = shell_quote(program);
+    for (const auto& arg : args) command.append(" ").append(shell_quote(arg));
+    command.append(" >").append(shell_quote(out_file)).append(" 2>").append(shell_quote(err_file));
     const int status = std::system(command.c_str());
     ProgramResult result;
     result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

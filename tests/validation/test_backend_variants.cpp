@@ -214,5 +214,11 @@ TEST(BackendVariants, AllLeavesOutThePlainEventSolverWhichASuiteOrASceneCanName)
     EXPECT_EQ(names, (std::vector<std::string>{"event", "event-plain"}));
 }
 
+// The suite runs a backend's cases in workers that keep their process (runs_in_worker) only
+// where the registry marks the start-up as worth keeping: opencl, nothing else.
+TEST(BackendVariants, OnlyOpenclKeepsItsProcessBetweenCases) {
+    for (const BackendInfo& b : all_backends()) EXPECT_EQ(b.keeps_process, b.name == "opencl") << b.name;
+}
+
 }  // namespace
 }  // namespace collide::validation

@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "test_backends.h"
+#include "validation/backend_variant.h"
 #include "validation/case_isolation.h"
 #include "validation/suite_runner.h"
 
@@ -115,18 +116,23 @@ TEST(CaseWorkers, ACaseOverTheTimeLimitIsKilledAndTheNextOneRuns) {
     EXPECT_EQ(results.at("after").status, RunStatus::completed);
 }
 
-TEST(CaseWorkers, OnlyTheOpenclBackendsRunnableCasesGoToWorkers) {
+TEST(CaseWorkers, OnlyTheRunnableCasesOfABackendThatKeepsItsProcessGoToWorkers) {
     CaseSpec spec;
-    spec.backend = "opencl";
-    EXPECT_TRUE(validation::runs_in_worker(spec));
-    spec.backend = "opencl[fast]";
-    EXPECT_TRUE(validation::runs_in_worker(spec));
+    BackendInfo opencl;
+    opencl.name = spec.backend = "opencl";
+    opencl.keeps_process = true;
+    EXPECT_TRUE(validation::runs_in_worker(spec, opencl));
+    // A variant is a copy of its base's entry (backend_variant.h), the property included.
+    validation::BackendVariant fast;
+    fast.base = "opencl", fast.label = spec.backend = "opencl[fast]";
+    EXPECT_TRUE(validation::runs_in_worker(spec, validation::variant_backend(opencl, fast)));
     spec.left_out = "the backend refuses the scene";
-    EXPECT_FALSE(validation::runs_in_worker(spec));
+    EXPECT_FALSE(validation::runs_in_worker(spec, opencl));
     spec.left_out.clear();
-    for (const char* other : {"cpu", "step", "event", "box2d[shipped]", "openclx"}) {
-        spec.backend = other;
-        EXPECT_FALSE(validation::runs_in_worker(spec)) << other;
+    for (const char* other : {"cpu", "step", "event", "box2d[shipped]"}) {
+        BackendInfo info;
+        info.name = spec.backend = other;
+        EXPECT_FALSE(validation::runs_in_worker(spec, info)) << other;
     }
 }
 

@@ -41,16 +41,18 @@ def chosen_pair(summary, directory, scene):
         return None
     ref = min(refs, key=lambda c: c["seed"])
     # One suite stores frames for every case or none ([output] frames): the reference decides,
-    # and only the cases that could be drawn are opened.
+    # and only the cases drawn are opened.
     if not has_frames(os.path.join(directory, ref["hdf5_file"])):
         return None
-    others = [c for c in done if not c["reference"] and c["seed"] == ref["seed"]
-              and has_frames(os.path.join(directory, c["hdf5_file"]))]
+    others = [c for c in done if not c["reference"] and c["seed"] == ref["seed"]]
     if not others:
         return None
     backend = others[0]["backend"]
     runs = sorted((c for c in others if c["backend"] == backend), key=lambda c: c["dt"])
-    return ref, [runs[-1]] if len(runs) == 1 else [runs[-1], runs[0]]
+    drawn = [runs[-1]] if len(runs) == 1 else [runs[-1], runs[0]]
+    if not all(has_frames(os.path.join(directory, c["hdf5_file"])) for c in drawn):
+        return None
+    return ref, drawn
 
 
 def render_strip(collide, directory, case, ref):

@@ -15,11 +15,13 @@ cannot be compared (named on stderr).
 """
 
 import argparse
-import json
 import math
 import os
 import sys
 import tomllib
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import digest  # noqa: E402  (the standard library only)
 
 
 class Unreadable(Exception):
@@ -27,28 +29,23 @@ class Unreadable(Exception):
 
 
 def load_summary(directory):
-    path = os.path.join(directory, "summary.json")
+    """summary.json, checked as the report checks it (digest.load_summary)."""
     try:
-        with open(path, encoding="utf-8") as f:
-            return json.load(f)
-    except FileNotFoundError:
-        raise Unreadable("%s: not found; expected the output directory of `collide validate`" % path)
-    except (OSError, ValueError) as e:
-        raise Unreadable("%s: cannot read it: %s" % (path, e))
+        return digest.load_summary(directory)
+    except digest.ReportInputError as e:
+        found = os.path.exists(os.path.join(directory, "summary.json"))
+        hint = "" if found else "; expected the output directory of `collide validate`"
+        raise Unreadable(f"{e}{hint}") from None
 
 
 def case_numbers(directory, case):
-    """The final state and metric series of a case record, or None where it has none."""
+    """The final state and metric series of a case record, or None where it has none (no
+    record, or one whose checksum line is missing or does not match: digest.verified_record_text)."""
     path = os.path.join(directory, case.get("result_file") or "cases/%s.toml" % case["id"])
     try:
         with open(path, "rb") as f:
-            text = f.read().decode("utf-8", "replace")
-    except OSError:
-        return None
-    body = text.split("\n", 1)[1] if text.startswith("#") else text   # the checksum line
-    try:
-        record = tomllib.loads(body)
-    except tomllib.TOMLDecodeError:
+            record = tomllib.loads(digest.verified_record_text(path, f.read()))
+    except (OSError, digest.ReportInputError, UnicodeDecodeError, tomllib.TOMLDecodeError):
         return None
     # repr() keeps the bits (NaN equals NaN here, -0.0 differs from 0.0).
     return repr((record.get("status"), record.get("final"), record.get("series")))
@@ -90,9 +87,10 @@ def compare(dir_a, dir_b, sigma, allow):
     cases_a = {c["id"]: c for c in a.get("cases", [])}
     cases_b = {c["id"]: c for c in b.get("cases", [])}
     both = sorted(set(cases_a) & set(cases_b))
-    identical = sum(1 for k in both
-                    if case_numbers(dir_a, cases_a[k]) is not None
-                    and case_numbers(dir_a, cases_a[k]) == case_numbers(dir_b, cases_b[k]))
+    identical = 0
+    for k in both:
+        numbers_a = case_numbers(dir_a, cases_a[k])
+        identical += numbers_a is not None and numbers_a == case_numbers(dir_b, cases_b[k])
     lines.append("cases     %d in both, %d bit-identical (final state and metric series), %d differ, "
                  "%d only in A, %d only in B" % (len(both), identical, len(both) - identical,
                                                  len(set(cases_a) - set(cases_b)), len(set(cases_b) - set(cases_a))))

@@ -129,10 +129,6 @@ def facts(summary, backend):
     return (summary.get("backends") or {}).get(backend, {})
 
 
-def is_float(summary, backend):
-    return bool(facts(summary, backend).get("float"))
-
-
 def anchor(prefix, name):
     """An HTML id for any name (scene or backend names may hold brackets, dots, '$', spaces)."""
     safe = re.sub(r"[^A-Za-z0-9_-]", lambda m: f"_{ord(m.group()):x}_", name)
@@ -175,6 +171,13 @@ def margin(check):
 # ---------------------------------------------------------------------------------------------
 # Counts that mean something: one per (scene, backend, check)
 
+def cannot_run(check, cases):
+    """Whether a left-out check was left out because its backend cannot run the scene: every
+    case it covers was left out (`cases`: subject_cases(summary))."""
+    covered = cases.get(check["subject"], [])
+    return bool(covered) and all(x["status"] == "left_out" for x in covered)
+
+
 def combinations(summary):
     """{(scene, backend, check): {'pass', 'fail', 'left_out', 'cannot_run'}} counts of checks;
     a left-out check whose case was left out (the backend cannot run the scene) counts as
@@ -185,9 +188,7 @@ def combinations(summary):
         key = (c["scene"], c["backend"], c["check"])
         counts = out.setdefault(key, {"pass": 0, "fail": 0, "left_out": 0, "cannot_run": 0})
         if c["status"] == "left_out":
-            covered = cases.get(c["subject"], [])
-            cannot = covered and all(x["status"] == "left_out" for x in covered)
-            counts["cannot_run" if cannot else "left_out"] += 1
+            counts["cannot_run" if cannot_run(c, cases) else "left_out"] += 1
         elif c["status"] in counts:
             counts[c["status"]] += 1
     return out
@@ -199,6 +200,15 @@ def combination_status(counts):
     if counts["pass"]:
         return "pass"
     return "cannot_run" if counts["cannot_run"] else "left_out"
+
+
+def combination_totals(by_combination):
+    """How many (scene, backend, check) combinations pass, fail, do not apply and cannot run
+    (`by_combination`: what combinations(summary) returns)."""
+    totals = {"pass": 0, "fail": 0, "left_out": 0, "cannot_run": 0}
+    for counts in by_combination.values():
+        totals[combination_status(counts)] += 1
+    return totals
 
 
 def digest(summary, exclude_quantised=True):
@@ -262,14 +272,6 @@ def statistical_points(summary, scene, observable):
                  "detectable": d["detectable"], "replicates": d["replicates"],
                  "predicted": predicted / d["reference"] if isinstance(predicted, NUMBER) else None})
     return lines
-
-
-def reference_cost(summary, scene):
-    """The reference's wall seconds per simulated time unit on a scene (summary.json's costs)."""
-    for c in summary.get("costs", []):
-        if c["scene"] == scene and c["backend"] == summary["reference"]:
-            return c["seconds_per_time_unit"]
-    return None
 
 
 # ---------------------------------------------------------------------------------------------

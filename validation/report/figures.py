@@ -127,10 +127,10 @@ def draw_reference_costs(ax, summary, scenes, with_names=True):
 SCENE_MARKERS = ["o", "s", "^", "D", "v", "P", "X", "*"]
 
 
-def _legend(ax, title="backend"):
-    handles, labels = ax.get_legend_handles_labels()
-    if handles:
-        ax.legend(title=title, fontsize=7, title_fontsize=7)
+def alias_label(backend, aliases):
+    """A backend's name in a legend; one that gives another's numbers bit for bit (`aliases`:
+    backend -> that other backend) says whose."""
+    return backend + (f" (numbers of {aliases[backend]})" if backend in aliases else "")
 
 
 def headline(summary, digest, aliases):
@@ -154,8 +154,7 @@ def headline(summary, digest, aliases):
 
     def scene_marker(scene):
         return SCENE_MARKERS[every_scene.index(scene) % len(SCENE_MARKERS)]
-    names = {b: b + (f" (numbers of {aliases[b]})" if b in aliases else "")
-             for b in dict.fromkeys(l["backend"] for l in lines)}
+    names = {b: alias_label(b, aliases) for b in dict.fromkeys(l["backend"] for l in lines)}
     if trajectory:
         ax = axes.pop(0)
         scenes = list(dict.fromkeys(l["scene"] for l in trajectory))
@@ -204,21 +203,23 @@ def headline(summary, digest, aliases):
     return _png(fig)
 
 
-def work_precision(summary, scene, digest, aliases):
+def work_precision(summary, scene, digest, aliases, fits=None):
     """One scene's work-precision diagram: one line per backend, each at its own cost, dt as
     labels (once per backend: a backend with another's numbers is labelled by that one's name),
     error bars ±1 SE, unresolved statistical points hollow at their 95 % upper limit, the
-    stepped rule's predicted bias dashed; the exact solver's cost per time unit as a dashed line."""
+    stepped rule's predicted bias dashed; the exact solver's cost per time unit as a dashed line.
+    `fits`: {(scene, backend): fit} of digest.orders(summary), computed here when not given."""
     lines = [l for l in summary["work_precision"] if l["scene"] == scene and l["points"]]
     if not lines:
         return None
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
-    fits = {(f["scene"], f["backend"]): f for f in digest.orders(summary)}
+    if fits is None:
+        fits = {(f["scene"], f["backend"]): f for f in digest.orders(summary)}
     statistical = not lines[0]["error_kind"].startswith("trajectory")
     stats = digest.statistical_points(summary, scene, "pressure") if statistical else {}
     for line in lines:
         b = line["backend"]
-        label = b + (f" (numbers of {aliases[b]})" if b in aliases else "")
+        label = alias_label(b, aliases)
         fit = fits.get((scene, b))
         if fit and fit["order"] is not None and b not in aliases:
             label += f" (order {fit['order']:.2f}" + (f" ± {fit['order_se']:.2f}" if fit["order_se"] is not None else "") + ")"

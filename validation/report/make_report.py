@@ -29,6 +29,7 @@ import multiprocessing
 from concurrent.futures import ProcessPoolExecutor, ThreadPoolExecutor, as_completed
 
 import jinja2
+from markupsafe import Markup
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import animations  # noqa: E402
@@ -40,25 +41,18 @@ import safe_output  # noqa: E402
 import stability  # noqa: E402
 import verdicts  # noqa: E402
 from collide_program import run_collide  # noqa: E402
-from digest import ReportInputError, anchor  # noqa: E402
+from digest import ReportInputError  # noqa: E402
 
+
+def md(text):
+    """Text for a Markdown table cell: no '|' to end the cell, no line break to end the row."""
+    return str(text).replace("|", "/").replace("\n", " ")
 
 
 TEMPLATES = jinja2.Environment(loader=jinja2.FileSystemLoader(os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                                                            "templates")),
                                autoescape=jinja2.select_autoescape(["html.j2"]), trim_blocks=False)
-TEMPLATES.filters["md"] = lambda text: str(text).replace("|", "/").replace("\n", " ")
-
-_CASES = {}
-
-
-def load_case(directory, case):
-    """A case's record, read once. `collide report` has checked every listed record before the
-    renderer starts (core/run_reader, validation/case_result), so only the drawn ones are read."""
-    key = (directory, case["id"])
-    if key not in _CASES:
-        _CASES[key] = digest.load_case(directory, case)
-    return _CASES[key]
+TEMPLATES.filters["md"] = md
 
 
 def scene_box(path):
@@ -88,7 +82,9 @@ def image(png, caption, alt, ident=None):
 
 def representative_cases(summary, directory, scene):
     """One finished case per backend for a scene: the smallest dt (the most accurate) and the
-    first seed, so the time series and pictures show each backend at its best setting."""
+    first seed, so the time series and pictures show each backend at its best setting. Only
+    these records are read (`collide report` has checked every listed record before the
+    renderer starts: core/run_reader, validation/case_result)."""
     chosen = OrderedDict()
     for case in summary["cases"]:
         if case["scene"] != scene or case["status"] != "completed" or not case.get("result_file"):
@@ -96,7 +92,7 @@ def representative_cases(summary, directory, scene):
         best = chosen.get(case["backend"])
         if best is None or case["dt"] < best["dt"] or (case["dt"] == best["dt"] and case["seed"] < best["seed"]):
             chosen[case["backend"]] = case
-    return [(backend, case, load_case(directory, case)) for backend, case in chosen.items()]
+    return [(backend, case, digest.load_case(directory, case)) for backend, case in chosen.items()]
 
 
 # ---------------------------------------------------------------------------------------------
@@ -115,19 +111,14 @@ class Analysis:
         self.backends = digest.backends_in_order(summary)
         self.stability = stability.has_outcomes(summary)
         self.unexpected = stability.unexpected(summary) if self.stability else []
-        self.verdicts = [] if self.stability else verdicts.all_verdicts(summary, self.rows, self.aliases)
+        self.verdicts = [] if self.stability else verdicts.all_verdicts(summary, self.rows, self.aliases,
+                                                                         self.combinations)
 
     @property
     def passed(self):
         """A stability suite passes when every case was classified and nothing unexpected
         happened (its failed checks are the map's findings); any other suite when no check failed."""
         return not self.unexpected if self.stability else self.summary["passed"]
-
-    def combination_totals(self):
-        totals = {"pass": 0, "fail": 0, "left_out": 0, "cannot_run": 0}
-        for counts in self.combinations.values():
-            totals[digest.combination_status(counts)] += 1
-        return totals
 
 
 def verdict_text(a):
@@ -141,7 +132,7 @@ def verdict_text(a):
         tail = (f"{classified} of {len(s['cases'])} cases classified, {len(a.unexpected)} unexpected "
                 f"({counts['fail']} failed checks are the map's findings)")
     else:
-        t = a.combination_totals()
+        t = digest.combination_totals(a.combinations)
         tail = (f"{t['pass']} (scene, backend, check) combinations pass, {t['fail']} fail, {t['left_out']} do not "
                 f"apply, {t['cannot_run']} cannot run ({counts['pass']} checks passed, {counts['fail']} failed)")
         judged = [r for r in physics.rows(s) if r["verdict"] != "shown"]
@@ -349,7 +340,7 @@ def left_out_table(a):
         if c["status"] != "left_out":
             continue
         covered = cases.get(c["subject"], [])
-        kind = "cannot run" if covered and all(x["status"] == "left_out" for x in covered) else "does not apply"
+        kind = "cannot run" if digest.cannot_run(c, cases) else "does not apply"
         reason = c["detail"] if kind == "does not apply" else (covered[0].get("diagnostic") or c["detail"])
         entry = reasons.setdefault((kind, c["check"], reason), {"checks": 0, "combos": set(), "scenes": set()})
         entry["checks"] += 1
@@ -429,10 +420,9 @@ def explain_requests(a, chosen_by_scene):
     """The energy jumps of the cases shown, for scenes where energy is conserved (its check
     applies): {scene: {backend: (case, jump)}}."""
     out = {}
+    judged = {(scene, check) for (scene, _, check), v in a.combinations.items() if v["pass"] or v["fail"]}
     for scene, chosen in chosen_by_scene.items():
-        conserved = (scene, "energy_drift") in {(k[0], k[2]) for k, v in a.combinations.items()
-                                               if v["pass"] or v["fail"]}
-        if not conserved:
+        if (scene, "energy_drift") not in judged:
             continue
         for backend, case, result in chosen:
             if backend == a.summary["reference"] or backend in a.aliases:
@@ -488,7 +478,7 @@ def scene_section(summary, directory, a, scene, chosen, jumps):
         return parts + ["<p>No case of this scene finished; see the failures above.</p>"]
     shown = [(b, r) for b, _, r in chosen if b not in a.aliases]
     labels = {b: " = ".join([b] + [x for x, y in a.aliases.items() if y == b]) for b, _ in shown}
-    parts.append(image(figures.work_precision(summary, scene, digest, a.aliases),
+    parts.append(image(figures.work_precision(summary, scene, digest, a.aliases, a.fit),
                        f"<b>Work against precision, {html.escape(scene)}.</b> Each point is one time step "
                        "(labelled dt) of one backend at its own cost: horizontal, the wall-clock seconds it needs "
                        "per unit of simulated time (after a warm-up, mean over replicates); vertical, its error "
@@ -572,7 +562,8 @@ def scene_sections(summary, directory, a=None):
 
 def machine_text(summary):
     """The machine the timings come from: processor, cores, load, and how many threads each
-    case ran with times the cases run at once (summary.json's machine, execution, provenance)."""
+    case ran with times the cases run at once (summary.json's machine, execution, provenance),
+    as HTML sentences for the caller's paragraph."""
     m = summary.get("machine") or {}
     jobs = (summary.get("execution") or {}).get("jobs", "?")
     threads = OrderedDict()
@@ -591,7 +582,7 @@ def machine_text(summary):
         busy = t * int(jobs) if str(jobs).isdigit() else None
         over = f", oversubscribing the {cores} cores" if busy and cores and busy > cores else ""
         parts.append(f"{html.escape(b)}: {t} threads per case × {jobs} cases at a time = {busy} threads{over}.")
-    return "<p>" + " ".join(parts) + "</p>"
+    return " ".join(parts)
 
 
 COSTS = jinja2.Template("""<table id="costs"><tr><th>scene</th><th>backend</th><th>cheapest sweep point</th>
@@ -605,7 +596,7 @@ def timings(summary):
              "spread": f"{fmt(c['fastest_replicate'])} – {fmt(c['slowest_replicate'])} ({c['replicates']})",
              "ratio": fmt(c.get("relative_to_reference"))} for c in summary.get("costs", [])]
     return ("<p>Wall time is spent in the solver's advance_to() only (metrics and output excluded), measured after an "
-            "untimed warm-up run, each case in its own process. " + machine_text(summary)[3:] +
+            "untimed warm-up run, each case in its own process. " + machine_text(summary) + "</p>" +
             COSTS.render(costs=rows) + "<p>Every case's timing: <a href='checks.html#timings'>checks.html</a>.</p>")
 
 
@@ -662,16 +653,16 @@ def write_html(summary, directory, path, a=None):
                            "first failure on that scene (smallest failing dt, then smallest swept value) and failed / "
                            "classified cases; hover for the measured value. Maps and the full table: "
                            "<a href='#stability'>Stability</a>.</p>" + stability.first_failure_matrix(summary))
-    M = jinja2.Markup if hasattr(jinja2, "Markup") else __import__("markupsafe").Markup
     page = TEMPLATES.get_template("index.html.j2").render(
-        suite=summary["suite"], style=M(STYLE), passed=a.passed, verdict=verdict_text(a),
-        stability_first=M(stability_first), verdicts=a.verdicts, digest_table=M(digest_table(a)),
-        identical=M(identical_line(a)), toc=M(toc(a)), physics=M(physics.section(summary, image)),
-        headline=M(headline_figure(a)), description=summary.get("description", ""),
-        stability_section=M(stability.section(summary, image) if a.stability else ""), failures=M(failures(a)),
-        check_matrix=M(check_matrix(a)), left_out=M(left_out_table(a)), orders_table=M(orders_table(a)),
-        bias_fits=M(BIAS_FITS.render(rows=bias_fit_rows(summary))), scenes=M(scene_sections(summary, directory, a)),
-        timings=M(timings(summary)), provenance=M(provenance_table(summary)))
+        suite=summary["suite"], style=Markup(STYLE), passed=a.passed, verdict=verdict_text(a),
+        stability_first=Markup(stability_first), verdicts=a.verdicts, digest_table=Markup(digest_table(a)),
+        identical=Markup(identical_line(a)), toc=Markup(toc(a)), physics=Markup(physics.section(summary, image)),
+        headline=Markup(headline_figure(a)), description=summary.get("description", ""),
+        stability_section=Markup(stability.section(summary, image) if a.stability else ""),
+        failures=Markup(failures(a)), check_matrix=Markup(check_matrix(a)), left_out=Markup(left_out_table(a)),
+        orders_table=Markup(orders_table(a)), bias_fits=Markup(BIAS_FITS.render(rows=bias_fit_rows(summary))),
+        scenes=Markup(scene_sections(summary, directory, a)), timings=Markup(timings(summary)),
+        provenance=Markup(provenance_table(summary)))
     safe_output.write_text(path, page)
 
 
@@ -692,7 +683,7 @@ def write_checks_html(summary, path):
               "cls": "pass" if c["status"] == "completed" else "left_out" if c["status"] == "left_out" else "fail"}
              for c in summary["cases"]]
     safe_output.write_text(path, TEMPLATES.get_template("checks.html.j2").render(
-        suite=summary["suite"], style=STYLE, rows=check_rows(summary), cases=cases))
+        suite=summary["suite"], style=Markup(STYLE), rows=check_rows(summary), cases=cases))
 
 
 CSV_FIELDS = ("subject", "scene", "backend", "check", "status", "value", "comparison", "tolerance", "margin",
@@ -706,10 +697,6 @@ def write_checks_csv(summary, path):
     for c in summary["checks"]:
         writer.writerow({k: c.get(k, "") for k in CSV_FIELDS})
     safe_output.write_text(path, buffer.getvalue())
-
-
-def md(text):
-    return str(text).replace("|", "/").replace("\n", " ")
 
 
 def write_markdown(summary, path, a=None, full_name="summary-full.md"):
@@ -728,8 +715,7 @@ def write_markdown(summary, path, a=None, full_name="summary-full.md"):
             failures_.append(f"- ... and {len(failed) - 20} more in [{full_name}]({full_name})")
     text = TEMPLATES.get_template("summary.md.j2").render(
         suite=summary["suite"], verdict=verdict_text(a), verdicts=a.verdicts,
-        rows=[dict(r, worst=margin_text(next(x for x in a.rows if x["backend"] == r["backend"]), link=False))
-              for r in digest_rows(a, link=False)],
+        rows=digest_rows(a, link=False),
         identical=[f"{b} gives the same numbers as {x} bit for bit ({n} compared values)." for x, b, n in a.identical],
         physics=physics.markdown(summary), failures=failures_,
         fits=[{"scene": f["scene"], "backend": f["backend"], "order": digest.describe_order(f),

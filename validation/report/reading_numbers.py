@@ -30,14 +30,13 @@ def numbers(directory):
     s = digest.load_summary(directory)
     fits = digest.orders(s)
     rows = {r["backend"]: r for r in digest.digest(s)}
-    totals = {"pass": 0, "fail": 0, "left_out": 0, "cannot_run": 0}
-    for counts in digest.combinations(s).values():
-        totals[digest.combination_status(counts)] += 1
+    totals = digest.combination_totals(digest.combinations(s))
+    index = os.path.join(directory, "report", "index.html")
     n = {"cases": str(len(s["cases"])), "cases_ran": str(sum(r["cases"] for r in rows.values())),
          "cases_cannot_run": str(sum(r["cases_cannot_run"] for r in rows.values())),
          **{f"combinations.{k}": str(v) for k, v in totals.items()},
-         "index_kb": str(round(os.path.getsize(os.path.join(directory, "report", "index.html")) / 1000))
-         if os.path.exists(os.path.join(directory, "report", "index.html")) else "?", "pass": str(s["counts"]["pass"]), "fail": str(s["counts"]["fail"]),
+         "index_kb": str(round(os.path.getsize(index) / 1000)) if os.path.exists(index) else "?",
+         "pass": str(s["counts"]["pass"]), "fail": str(s["counts"]["fail"]),
          "left_out": str(s["counts"]["left_out"]), "wall": f"{s['wall_seconds']:.1f}",
          "backends": ", ".join(f"`{b}`" for b in rows)}
     for b, r in rows.items():

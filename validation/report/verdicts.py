@@ -11,13 +11,15 @@ def _times(x):
     return f"{x:.2g}×" if x < 10 else f"{x:.0f}×"
 
 
-def cost_text(summary, backend):
+def cost_text(summary, backend, cheapest=None):
     """'1.2–600× (5 scenes); cheapest on 5 of 5' from summary.json's costs (the cheapest sweep
-    group of each scene, wall seconds per simulated time unit, over the reference's)."""
+    group of each scene, wall seconds per simulated time unit, over the reference's);
+    `cheapest`: cheapest_by_scene(summary), computed here when not given."""
     costs = [c for c in summary.get("costs", []) if c["backend"] == backend]
     if not costs:
         return "not measured (no case ran)"
-    cheapest = cheapest_by_scene(summary)
+    if cheapest is None:
+        cheapest = cheapest_by_scene(summary)
     wins = sum(1 for c in costs if cheapest.get(c["scene"]) == backend)
     scenes = len({c["scene"] for c in costs})
     tail = f"; the cheapest on {wins} of {scenes} scene{'s' if scenes > 1 else ''}" if wins else ""
@@ -41,10 +43,13 @@ def cheapest_by_scene(summary):
     return {scene: b for scene, (b, _) in best.items()}
 
 
-def scene_status(summary, backend):
-    """scene -> 'pass', 'fail' or 'cannot_run' from the (scene, backend, check) combinations."""
+def scene_status(summary, backend, by_combination=None):
+    """scene -> 'pass', 'fail' or 'cannot_run' from the (scene, backend, check) combinations
+    (`by_combination`: digest.combinations(summary), computed here when not given)."""
+    if by_combination is None:
+        by_combination = digest.combinations(summary)
     out = OrderedDict()
-    for (scene, b, _), counts in digest.combinations(summary).items():
+    for (scene, b, _), counts in by_combination.items():
         if b != backend:
             continue
         status = digest.combination_status(counts)
@@ -91,10 +96,12 @@ def pressure_offsets(summary, backend):
     return (max(sigmas) if sigmas else None), left_out
 
 
-def verdict(summary, row, aliases):
-    """{'backend', 'verdict', 'trusted', 'not_for', 'cost', 'failed', 'anchor'} for one digest row."""
+def verdict(summary, row, aliases, by_combination=None, cheapest=None):
+    """{'backend', 'verdict', 'trusted', 'not_for', 'cost', 'failed', 'anchor'} for one digest row;
+    `by_combination` (digest.combinations) and `cheapest` (cheapest_by_scene), the same for every
+    backend, are computed here when not given."""
     b = row["backend"]
-    status = scene_status(summary, b)
+    status = scene_status(summary, b, by_combination)
     trusted = [s for s, v in status.items() if v == "pass"]
     cannot = [s for s, v in status.items() if v == "cannot_run"]
     failed = [s for s, v in status.items() if v == "fail"]
@@ -122,14 +129,16 @@ def verdict(summary, row, aliases):
         not_for.append("fails on " + ", ".join(failed))
     if cannot:
         not_for.append("cannot run " + ", ".join(cannot))
-    if b in aliases:
-        pass
     trusted_text = (f"every scene it runs ({len(trusted)})" if trusted and not failed and
                     len(trusted) + len(cannot) == len(status) else ", ".join(trusted) or "none")
     return {"backend": b, "verdict": "; ".join(parts), "trusted": trusted_text,
-            "not_for": "; ".join(not_for) or "—", "cost": cost_text(summary, b), "failed": bool(row["fail"]),
+            "not_for": "; ".join(not_for) or "—", "cost": cost_text(summary, b, cheapest), "failed": bool(row["fail"]),
             "anchor": digest.anchor("backend", b)}
 
 
-def all_verdicts(summary, rows, aliases):
-    return [verdict(summary, r, aliases) for r in rows]
+def all_verdicts(summary, rows, aliases, by_combination=None):
+    """One verdict per digest row; what every backend shares is computed once."""
+    if by_combination is None:
+        by_combination = digest.combinations(summary)
+    cheapest = cheapest_by_scene(summary)
+    return [verdict(summary, r, aliases, by_combination, cheapest) for r in rows]
