@@ -31,6 +31,10 @@ inline void silence_hdf5_error_printing() { H5Eset_auto2(H5E_DEFAULT, nullptr, n
 // before any other HDF5 call, so the library skips that cleanup and exits cleanly.
 inline void skip_hdf5_cleanup_at_exit() { H5dont_atexit(); }
 
+// Sets the library up now. A process that forks many children (the suite's case processes)
+// calls it first, so that each child inherits a set-up library instead of paying for one.
+inline void initialise_hdf5() { H5open(); }
+
 // The description of the innermost entry on HDF5's current error stack, where the failure
 // was detected (e.g. the operating system's reason for a failed open), or "" if there is none.
 inline std::string hdf5_error_reason() {

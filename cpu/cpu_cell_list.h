@@ -111,9 +111,10 @@ private:
 template <typename Place>
 void CellList::build(const float* x, const float* y, std::size_t n, int threads, Place&& place) {
     cell_of_.resize(n);
-    const bool run_parallel = threads > 1 && n >= kInlineBelow;
-#pragma omp parallel num_threads(threads) if (run_parallel)
-    {
+    // The three steps below, run by every thread of a team (or by the caller alone, outside any
+    // OpenMP region, for few disks: a region of one thread still costs a team set-up per call).
+    // The omp directives inside are orphaned: they bind to the team running them, if any.
+    auto build_steps = [&] {
         // The team may be smaller than asked for; the blocks follow the team actually running.
         const std::size_t team = std::size_t(omp_get_num_threads()), t = std::size_t(omp_get_thread_num());
 #pragma omp single
@@ -141,6 +142,12 @@ void CellList::build(const float* x, const float* y, std::size_t n, int threads,
         // Step 3: place the block's disks, in index order.
         std::uint32_t* next = mine.count.data() - mine.lo;  // next[c] for c in [lo, hi]
         for (std::size_t i = mine.begin; i < mine.end; ++i) place(std::uint32_t(i), next[cell_of_[i]]++);
+    };
+    if (threads > 1 && n >= kInlineBelow) {
+#pragma omp parallel num_threads(threads)
+        build_steps();
+    } else {
+        build_steps();
     }
     cell_start_[std::size_t(cell_count())] = std::uint32_t(n);
 }

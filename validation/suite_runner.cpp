@@ -19,6 +19,7 @@
 #include "backend_variant.h"
 #include "case_execution.h"
 #include "case_isolation.h"
+#include "core/hdf5_handle.h"
 #include "core/output_file.h"
 #include "core/scene_loader.h"
 #include "progress.h"
@@ -231,6 +232,7 @@ SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& avail
         CaseContext context{&suite, &case_scenes.scene(spec), by_name.at(spec.backend), options.output_dir};
         return execute_case(spec, context);
     };
+    initialise_hdf5();  // once here, not again in every case process (each writes an HDF5 file)
     std::unique_ptr<Progress> progress;
     if (options.progress) progress = std::make_unique<Progress>(to_run.size(), options.progress, options.progress_is_terminal);
     std::size_t done = 0, failed = 0;
