@@ -27,8 +27,7 @@ const std::vector<BackendInfo>& all_backends() {
          [](const Scene&) -> std::optional<std::string> { return std::nullopt; },
          [](const BackendOptions& o) -> std::unique_ptr<Solver> { return std::make_unique<cpu::CpuSolver>(o); }, false},
         {"opencl", "float|double", "the same rules as OpenCL kernels, float or --real double",
-         [](const Scene&) -> std::optional<std::string> { return std::nullopt; }, opencl::make_opencl_solver, false,
-         true, /*keeps_process=*/true},
+         [](const Scene&) -> std::optional<std::string> { return std::nullopt; }, opencl::make_opencl_solver, false},
         {"box2d", "float", "Box2D 2.4 world of circle bodies, the baseline", box2d_supports,
          [](const BackendOptions& o) -> std::unique_ptr<Solver> { return std::make_unique<Box2dSolver>(o); }, true},
     };

@@ -4,8 +4,8 @@
 #include <stdexcept>
 
 #include "commands/commands.h"
-#include "core/hdf5_handle.h"
-#include "core/provenance.h"
+#include "core/io/hdf5_handle.h"
+#include "core/io/provenance.h"
 
 int main(int argc, char** argv) {
     collide::skip_hdf5_cleanup_at_exit();

@@ -1,11 +1,11 @@
 // Command-line checks of the files and directories a command reads, naming the system's own
-// cause (core/output_file.h, input_path_problem): CLI11's ExistingFile says "File does not
+// cause (core/io/output_file.h, input_path_problem): CLI11's ExistingFile says "File does not
 // exist" for a loop of symbolic links, a path too long or a directory without permission.
 #pragma once
 
 #include <CLI/CLI.hpp>
 
-#include "core/output_file.h"
+#include "core/io/output_file.h"
 
 namespace collide {
 

@@ -1,11 +1,11 @@
 // The benchmarks' standard gas (the `throughput`, `features`, `bandwidth` and `opencl`
-// suites): core's one gas builder (core/gas_scene.h) with the benchmarks' choices, so that a
+// suites): core's one gas builder (core/scene/gas_scene.h) with the benchmarks' choices, so that a
 // benchmark at N = 10^6 does not wait for a rejection sampler.
 #pragma once
 
 #include <cstdint>
 
-#include "core/gas_scene.h"
+#include "core/scene/gas_scene.h"
 
 namespace collide::bench {
 

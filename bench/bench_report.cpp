@@ -8,9 +8,9 @@
 #include <nlohmann/json.hpp>
 
 #include "bench_suite.h"
-#include "core/output_file.h"
-#include "core/progress_line.h"
-#include "core/provenance.h"
+#include "core/io/output_file.h"
+#include "core/io/progress_line.h"
+#include "core/io/provenance.h"
 
 namespace collide::bench {
 namespace {
@@ -92,7 +92,7 @@ void BenchReport::write(const std::string& prefix) const {
         json["rows"].push_back(row);
     }
     const std::string json_text = json.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
-    // The guard and rename of every output (core/output_file.h); both files are written before
+    // The guard and rename of every output (core/io/output_file.h); both files are written before
     // either is renamed into place, so a failed .json leaves the old .csv untouched too.
     AtomicOutputFile csv_file(prefix + ".csv"), json_file(prefix + ".json");
     csv_file.write(csv.str());

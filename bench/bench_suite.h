@@ -44,7 +44,7 @@ public:
     ~BenchReport();
     // Adds a row and prints it at once on stdout.
     void add(const Row& row);
-    // Progress with the time left (core/progress_line.h, on stderr): a suite says how much
+    // Progress with the time left (core/io/progress_line.h, on stderr): a suite says how much
     // work it plans, in its own unit (disk-steps, collisions), then how much is done as it
     // goes. The time left assumes the rest runs at the rate of the part done so far. In a log
     // (not a terminal) every call prints a line.

@@ -18,8 +18,8 @@
 #include <string>
 
 #include "bench_suite.h"
-#include "core/gas_scene.h"
-#include "core/median.h"
+#include "core/scene/gas_scene.h"
+#include "core/numerics/median.h"
 #include "core/backend_registry.h"
 
 namespace collide::bench {
@@ -27,7 +27,7 @@ namespace {
 
 // n unit-mass disks of radius 1/2 on a square lattice in a periodic square box whose size
 // gives the requested area fraction phi = n pi r^2 / L^2; velocity components Gaussian with
-// unit variance (kT/m = 1), the centre-of-mass motion removed (core/gas_scene.h).
+// unit variance (kT/m = 1), the centre-of-mass motion removed (core/scene/gas_scene.h).
 GasCase lattice_gas(std::int64_t n, double area_fraction, std::uint64_t seed) {
     GasSceneSpec spec;
     spec.count = n;

@@ -24,9 +24,10 @@
 #include "bench_suite.h"
 #include "bench_gas.h"
 #include "core/backend_registry.h"
-#include "core/median.h"
+#include "core/numerics/median.h"
+#include "core/numerics/phase_timer.h"
 #include "core/run_driver.h"
-#include "core/scene_loader.h"
+#include "core/scene/scene_loader.h"
 
 #include "opencl/opencl_solver.h"
 
@@ -73,12 +74,12 @@ double measure(const BackendInfo& backend, const BackendOptions& options, const 
                 {"steps", std::int64_t(steps)},
                 {"particle_steps_per_s", double(n) * steps / seconds},
                 {"ms_per_step", 1e3 * seconds / steps},
-                {"host_grid_ms", per_step_ms("grid (host)")},
-                {"upload_ms", per_step_ms("upload")},
-                {"readback_ms", per_step_ms("read-back")},
-                {"device_grid_ms", per_step_ms("grid (device)")},
-                {"reorder_ms", per_step_ms("reorder")},
-                {"kernels_ms", per_step_ms("kernels")}});
+                {"host_grid_ms", per_step_ms(phase::grid_on_host)},
+                {"upload_ms", per_step_ms(phase::upload)},
+                {"readback_ms", per_step_ms(phase::read_back)},
+                {"device_grid_ms", per_step_ms(phase::grid_on_device)},
+                {"reorder_ms", per_step_ms(phase::reorder)},
+                {"kernels_ms", per_step_ms(phase::device_steps)}});
     return seconds / steps;
 }
 

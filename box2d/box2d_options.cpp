@@ -4,7 +4,7 @@
 
 #include <string_view>
 
-#include "core/option_reader.h"
+#include "core/scene/option_reader.h"
 
 namespace collide {
 namespace {

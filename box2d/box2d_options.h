@@ -13,7 +13,7 @@
 #include <optional>
 #include <string>
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 
 namespace collide {
 
@@ -50,7 +50,7 @@ std::optional<Box2dOptions> box2d_preset(const std::string& name);
 // The largest iteration or sub-step count a key accepts.
 inline constexpr int max_box2d_iterations = 1000000;
 
-// Reads scene.backend_options["box2d"] through core/option_reader.h: the preset, then every
+// Reads scene.backend_options["box2d"] through core/scene/option_reader.h: the preset, then every
 // other key on top of it. Throws BackendOptionError naming where the key was set, the key and
 // what was expected on an unknown key or a bad value.
 Box2dOptions parse_box2d_options(const Scene& scene);

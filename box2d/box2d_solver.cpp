@@ -2,9 +2,9 @@
 
 #include <box2d/box2d.h>
 
-#include "core/number_text.h"
-#include "core/option_reader.h"
-#include "core/representability.h"
+#include "core/numerics/number_text.h"
+#include "core/scene/option_reader.h"
+#include "core/numerics/representability.h"
 #include "physics/step_schedule.h"
 
 #include <cfloat>

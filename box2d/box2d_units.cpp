@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "core/number_text.h"
+#include "core/numerics/number_text.h"
 
 namespace collide {
 

@@ -15,7 +15,7 @@
 #include <optional>
 #include <string>
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 
 namespace collide {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "solver.h"
+#include "core/solver.h"
 
 namespace collide {
 
@@ -28,10 +28,6 @@ struct BackendInfo {
     // measure every backend against the exact dynamics once (`event`), and the conformance
     // tests hold the plain exact solver against the tuned one. A suite that names it runs it.
     bool in_all = true;
-    // Whether starting the backend costs more than a short case (OpenCL: platform, device and
-    // program, 0.2-0.3 s on PoCL): a suite then runs its cases in worker processes that stay
-    // alive and keep that state (validation/case_isolation.h), not in a process per case.
-    bool keeps_process = false;
 };
 
 // Every backend compiled into this build, in a fixed order (event first: the reference).

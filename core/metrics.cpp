@@ -1,12 +1,12 @@
-#include "metrics.h"
+#include "core/metrics.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "compensated_sum.h"
-#include "disk_overlap.h"
+#include "core/numerics/compensated_sum.h"
+#include "core/numerics/disk_overlap.h"
 #include "physics/stepping_laws.h"
-#include "uniform_grid.h"
+#include "core/uniform_grid.h"
 
 namespace collide {
 namespace {

@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "particle_state.h"
-#include "scene.h"
+#include "core/particle_state.h"
+#include "core/scene/scene.h"
 
 namespace collide {
 
@@ -14,7 +14,7 @@ namespace collide {
 // the event solver's running energy, `collide explain`'s energy budget).
 inline double disk_kinetic_energy(double mass, double vx, double vy) { return 0.5 * mass * (vx * vx + vy * vy); }
 
-// One row of the run schema (core/run_schema.h names, units and describes every field).
+// One row of the run schema (core/io/run_schema.h names, units and describes every field).
 struct Metrics {
     double time = 0;
     double momentum_x = 0, momentum_y = 0;  // sum m v over non-stone disks

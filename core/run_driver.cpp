@@ -1,4 +1,4 @@
-#include "run_driver.h"
+#include "core/run_driver.h"
 
 #include <algorithm>
 #include <chrono>

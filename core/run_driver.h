@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "metrics.h"
-#include "run_writer.h"
-#include "solver.h"
+#include "core/metrics.h"
+#include "core/io/run_writer.h"
+#include "core/solver.h"
 
 namespace collide {
 

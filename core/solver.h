@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "particle_state.h"
-#include "scene.h"
+#include "core/particle_state.h"
+#include "core/scene/scene.h"
 
 namespace collide {
 

@@ -16,7 +16,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "scene.h"
+#include "core/scene/scene.h"
 
 namespace collide {
 

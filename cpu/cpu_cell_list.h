@@ -28,7 +28,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "parallel_for.h"
 
 namespace collide::cpu {

@@ -8,9 +8,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/option_reader.h"
-#include "core/phase_timer.h"
-#include "core/representability.h"
+#include "core/scene/option_reader.h"
+#include "core/numerics/phase_timer.h"
+#include "core/numerics/representability.h"
 #include "physics/step_schedule.h"
 #include "parallel_for.h"
 
@@ -22,7 +22,7 @@ CpuSolver::CpuSolver(const BackendOptions& options) : options_(options) {
 }
 
 // The settings: the scene's [backend.cpu] table (none before load), then the caller's options,
-// which win (core/option_reader.h).
+// which win (core/scene/option_reader.h).
 void CpuSolver::read_settings(const Scene* scene) {
     OptionReader settings("cpu", scene, options_.extra);
     specialise_ = settings.get_choice("specialise", {"on", "off"}, "on") == "on";

@@ -1,5 +1,5 @@
 // FeatureSet: which loop instantiation a scene runs, made from its SceneFeatures
-// (core/scene_features.h, where what a scene uses is worked out), and the dispatch that turns
+// (core/scene/scene_features.h, where what a scene uses is worked out), and the dispatch that turns
 // it into template arguments, so that a scene pays only for what it uses (ARCHITECTURE: "leave out
 // what a scene does not need").
 //
@@ -9,8 +9,8 @@
 // stone exists). bench/features_suite.cpp measures what this saves.
 #pragma once
 
-#include "core/scene.h"
-#include "core/scene_features.h"
+#include "core/scene/scene.h"
+#include "core/scene/scene_features.h"
 
 namespace collide::cpu {
 

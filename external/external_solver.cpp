@@ -9,8 +9,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "core/number_text.h"
-#include "core/target_time.h"
+#include "core/numerics/number_text.h"
+#include "core/numerics/target_time.h"
 #include "npy.h"
 #include "program_call.h"
 #include "sha256.h"

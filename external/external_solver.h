@@ -1,7 +1,7 @@
 // An outside solver as a backend: any program, spoken to through the file protocol of
 // docs/your-solver.md, behind the same Solver interface as the built-in backends. The suites,
 // checks, comparisons with `event`, work-precision lines and report then treat it like any
-// other backend row (validation/external_solvers.h puts it into a suite's backend list).
+// other backend row (validation/plan/external_solvers.h puts it into a suite's backend list).
 //
 // Per program call, collide writes a request directory (request.txt, initial.npy, scene.toml),
 // runs `COMMAND DIR`, and reads DIR/result.txt and DIR/states.npy back. Everything that comes

@@ -8,8 +8,9 @@
 #include <stdexcept>
 
 #include "physics/step_schedule.h"
-#include "core/option_reader.h"
-#include "core/representability.h"
+#include "core/scene/option_reader.h"
+#include "core/numerics/representability.h"
+#include "core/numerics/phase_timer.h"
 #include "core/uniform_grid.h"
 #include "device_grid.h"
 #include "step_params.h"
@@ -147,7 +148,7 @@ private:
     }
 
     // The options, the caller's winning over the scene's [backend.opencl] table, read and
-    // checked before any device work (core/option_reader.h); choose_local_size checks
+    // checked before any device work (core/scene/option_reader.h); choose_local_size checks
     // local_size against the device.
     void read_options(const Scene& scene) {
         OptionReader settings("opencl", &scene, requested_.extra);
@@ -203,8 +204,8 @@ private:
             cell_of_ = cl::Buffer(session_.context, CL_MEM_READ_WRITE, sizeof(cl_uint) * n);
             rank_ = cl::Buffer(session_.context, CL_MEM_READ_WRITE, sizeof(cl_uint) * n);
         }
-        integrate_ = cl::Kernel(session_.program, "integrate_motion");
-        resolve_ = cl::Kernel(session_.program, "resolve_collisions");
+        integrate_ = cl::Kernel(session_.program, "integrate");
+        resolve_ = cl::Kernel(session_.program, "collide_and_correct");
         gather_ = cl::Kernel(session_.program, "gather_cell_order");
         group_ = cl::Kernel(session_.program, "run_steps_in_group");
     }
@@ -307,7 +308,7 @@ private:
         session_.queue.enqueueNDRangeKernel(group_, cl::NullRange, cl::NDRange(size), cl::NDRange(size));
         session_.queue.finish();
         if (passes % 2 == 1) current_ = 1 - current_;  // each pass writes the other buffer
-        stats_.phase_seconds["kernels"] += seconds_since(start);
+        stats_.phase_seconds[phase::device_steps] += seconds_since(start);
     }
 
     void step() {
@@ -341,7 +342,7 @@ private:
     // When the disks may leave the scene's order, each cell's slots are sorted by scene index,
     // so that neighbours are visited in the order of `step` whether or not the disks moved:
     // reordering changes where a disk lives in memory, never a result. Without reordering the
-    // slot is the scene index and the plain sort of the OpenCL engine's grid does.
+    // slot is the scene index and a plain counting sort keeps that order.
     bool cells_sorted_by_scene_index() const { return sort_interval_ > 0; }
 
     void build_grid_on_device() {
@@ -349,14 +350,15 @@ private:
         const cl::Buffer* scene_index = cells_sorted_by_scene_index() ? &scene_index_[current_order_] : nullptr;
         device_grid_->build(particles_[current_], &params_, sizeof(params_), cell_start_, sorted_index_, scene_index);
         session_.queue.finish();
-        stats_.phase_seconds["grid (device)"] += seconds_since(start);
+        stats_.phase_seconds[phase::grid_on_device] += seconds_since(start);
     }
 
-    // The OpenCL engine's design: read the positions back, counting-sort on the host, upload.
+    // Read the positions back, counting-sort on the host, upload: no grid kernels to launch,
+    // the cheapest build for few disks on a CPU device.
     void build_grid_on_host() {
         auto start = std::chrono::steady_clock::now();
         session_.queue.enqueueReadBuffer(particles_[current_], CL_TRUE, 0, sizeof(Particle) * n_, host_particles_.data());
-        stats_.phase_seconds["read-back"] += seconds_since(start);
+        stats_.phase_seconds[phase::read_back] += seconds_since(start);
         start = std::chrono::steady_clock::now();
         xs_.resize(n_);
         ys_.resize(n_);
@@ -370,13 +372,13 @@ private:
             sort_cells_by_scene_index();
             slots = &host_sorted_index_;
         }
-        stats_.phase_seconds["grid (host)"] += seconds_since(start);
+        stats_.phase_seconds[phase::grid_on_host] += seconds_since(start);
         start = std::chrono::steady_clock::now();
         const auto& cs = host_grid_.cell_start();
         session_.queue.enqueueWriteBuffer(cell_start_, CL_FALSE, 0, sizeof(cl_uint) * cs.size(), cs.data());
         session_.queue.enqueueWriteBuffer(sorted_index_, CL_FALSE, 0, sizeof(cl_uint) * n_, slots->data());
         session_.queue.finish();
-        stats_.phase_seconds["upload"] += seconds_since(start);
+        stats_.phase_seconds[phase::upload] += seconds_since(start);
     }
 
     // The host grid's cells list their slots in increasing slot order; the order wanted is
@@ -411,7 +413,7 @@ private:
         session_.queue.finish();
         current_ = 1 - current_;
         current_order_ = 1 - current_order_;
-        stats_.phase_seconds["reorder"] += seconds_since(start);
+        stats_.phase_seconds[phase::reorder] += seconds_since(start);
         if (!device_grid_) follow_reorder_on_host();
     }
 
@@ -423,7 +425,7 @@ private:
         reordered_scene_index_.resize(n_);
         for (std::size_t k = 0; k < n_; ++k) reordered_scene_index_[k] = host_scene_index_[from[k]];
         host_scene_index_.swap(reordered_scene_index_);
-        stats_.phase_seconds["reorder"] += seconds_since(start);
+        stats_.phase_seconds[phase::reorder] += seconds_since(start);
     }
 
     void run_kernel_integrate() {
@@ -432,7 +434,7 @@ private:
         integrate_.setArg(1, params_);
         session_.queue.enqueueNDRangeKernel(integrate_, cl::NullRange, global_range(), local_);
         session_.queue.finish();
-        stats_.phase_seconds["kernels"] += seconds_since(start);
+        stats_.phase_seconds[phase::device_steps] += seconds_since(start);
     }
 
     // Jacobi pass from particles_[current_] into the other buffer, which becomes current.
@@ -447,7 +449,7 @@ private:
         session_.queue.enqueueNDRangeKernel(resolve_, cl::NullRange, global_range(), local_);
         session_.queue.finish();
         current_ = 1 - current_;
-        stats_.phase_seconds["kernels"] += seconds_since(start);
+        stats_.phase_seconds[phase::device_steps] += seconds_since(start);
     }
 
     const BackendOptions requested_;  // as created

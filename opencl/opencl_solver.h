@@ -1,11 +1,11 @@
 // The `opencl` backend: the stepping rules of docs/stepping-rules.md as OpenCL kernels
-// (the OpenCL engine), in float, or in double on devices with fp64 (`--real double`).
+// in float, or in double on devices with fp64 (`--real double`).
 //
 // Options (BackendOptions):
 //   real            "float" (default) or "double"
 //   device          OpenCL device: index or name substring (see `collide devices`)
 //   extra["grid"]   "host": the grid is built on the host by counting sort and uploaded every
-//                   step (the OpenCL engine's design); "device": built by kernels (kernels/grid.cl);
+//                   step (cheap for few disks on a CPU device); "device": built by kernels (kernels/grid.cl);
 //                   "group": one work-group builds it and runs many steps per launch
 //                   (kernels/group_steps.cl). Default: the one measured faster for the device
 //                   type and N (docs/opencl-backend.md): group up to N = 4096, then device,

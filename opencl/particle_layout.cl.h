@@ -6,11 +6,11 @@
  * embedded in front of the kernel files (opencl/kernels/), and the solver checks at load time that the
  * kernel compiler agrees on every size (kernel `layout_probe`).
  *
- * Particle follows the OpenCL engine's struct: eight scalars, 32 bytes in float (64 in double),
+ * Particle is eight scalars, 32 bytes in float (64 in double),
  * aligned to its own size so that one particle is one aligned memory transaction and
  * neighbouring work-items read neighbouring particles (coalesced access on a GPU). Every
  * member is a Real, so neither compiler has any reason to insert padding of its own; the
- * seed's two padding floats carry the inverse mass (0 for a kinematic stone) and the mass.
+ * two slots that would otherwise be padding carry the inverse mass (0 for a kinematic stone) and the mass.
  */
 #ifndef COLLIDE_PARTICLE_LAYOUT_H
 #define COLLIDE_PARTICLE_LAYOUT_H

@@ -27,7 +27,7 @@ template <> struct Layout<double> {
     using StepParams = layout_double::StepParams;
 };
 
-// The OpenCL engine: 32 bytes per particle in float, aligned to 32; twice that in double.
+// 32 bytes per particle in float, aligned to 32 (one aligned memory transaction); twice that in double.
 static_assert(sizeof(layout_float::Particle) == 32 && alignof(layout_float::Particle) == 32);
 static_assert(sizeof(layout_double::Particle) == 64 && alignof(layout_double::Particle) == 64);
 static_assert(offsetof(layout_float::Particle, vx) == 8 && offsetof(layout_float::Particle, radius) == 20);

@@ -4,14 +4,14 @@
 #include <string>
 
 #include "core/particle_state.h"
-#include "core/scene.h"
-#include "core/scene_features.h"
+#include "core/scene/scene.h"
+#include "core/scene/scene_features.h"
 #include "core/uniform_grid.h"
 #include "particle_layout.h"
 
 namespace collide::opencl {
 
-// The -D flags of kernels/prelude.cl for this scene's features (core/scene_features.h): a
+// The -D flags of kernels/prelude.cl for this scene's features (core/scene/scene_features.h): a
 // kernel pays only for what it uses. With COLLIDE_UNIFORM_RADIUS the kernels use one constant
 // contact distance.
 inline std::string feature_flags(const Scene& scene, const ParticleState<double>& s, bool real_double) {

@@ -6,8 +6,8 @@
 
 #include <cstdint>
 
-#include "core/scene.h"
-#include "core/target_time.h"
+#include "core/scene/scene.h"
+#include "core/numerics/target_time.h"
 
 namespace collide {
 
@@ -23,7 +23,7 @@ void step_by_rule(const RunSettings& run, CollideFirstStep&& collide_first_step,
 }
 
 // The number of the time step nearest to absolute time t. Throws std::invalid_argument (the
-// one target-time check, core/target_time.h) if t is not finite, needs more than max_steps
+// one target-time check, core/numerics/target_time.h) if t is not finite, needs more than max_steps
 // steps, or rounds to a step before `current`: a solver never steps backwards.
 inline std::int64_t target_step(const Scene& scene, double t, std::int64_t current, const char* backend) {
     check_target_time(backend, t, double(current) * scene.run.dt, scene.run.dt, true);

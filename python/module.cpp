@@ -12,20 +12,20 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include "core/progress_line.h"
-#include "core/output_file.h"
-#include "core/provenance.h"
-#include "core/run_export.h"
-#include "core/run_reader.h"
+#include "core/io/progress_line.h"
+#include "core/io/output_file.h"
+#include "core/io/provenance.h"
+#include "core/io/run_export.h"
+#include "core/io/run_reader.h"
 #include "core/run_driver.h"
-#include "core/scene_loader.h"
-#include "core/scene_overrides.h"
-#include "core/state_hash.h"
+#include "core/scene/scene_loader.h"
+#include "core/scene/scene_overrides.h"
+#include "core/numerics/state_hash.h"
 #include "scene_from_dict.h"
 #include "simulation.h"
-#include "validation/case_result.h"
-#include "validation/external_solvers.h"
-#include "validation/suite_runner.h"
+#include "validation/run/case_result.h"
+#include "validation/plan/external_solvers.h"
+#include "validation/run/suite_runner.h"
 
 namespace py = pybind11;
 
@@ -185,15 +185,15 @@ void export_run(const std::string& run, const std::string& out, const std::strin
     write_file_atomically(out, f == ExportFormat::xdmf ? xdmf_text(run, out) : xyz_text(run));
 }
 
-// What `collide export` checks before it writes: the output path (core/output_file.h) and the
-// run file, every frame read through the checked reader (core/run_reader.h). Python's GSD
+// What `collide export` checks before it writes: the output path (core/io/output_file.h) and the
+// run file, every frame read through the checked reader (core/io/run_reader.h). Python's GSD
 // writer calls it first, as the program does.
 void check_export(const std::string& run, const std::string& out) {
     check_output_path(out);
     require_frames(run);
 }
 
-// A run file read back through the checked reader (core/run_reader.h): every check `collide
+// A run file read back through the checked reader (core/io/run_reader.h): every check `collide
 // render` and `collide report` make, then the columns of the run schema as NumPy arrays. With
 // `frames`, every frame as (T, N, 2) arrays (each checked as it is read).
 py::dict read_run(const std::string& path, bool frames) {
@@ -308,7 +308,7 @@ PYBIND11_MODULE(_collide, m) {
         .def_property_readonly("output_interval", [](const Scene& s) { return s.run.output_interval; })
         .def_property_readonly("dt", [](const Scene& s) { return s.run.dt; })
         .def("initial_state_hash", [](const Scene& s) { return state_hash(generate_initial_state(s)); },
-             "The 64-bit FNV-1a hash of the generated initial state's bits (core/state_hash.h)")
+             "The 64-bit FNV-1a hash of the generated initial state's bits (core/numerics/state_hash.h)")
         .def("__repr__", [](const Scene& s) { return "<collide.Scene '" + s.name + "'>"; });
 
     py::class_<Simulation>(m, "Simulation", "One scene on one backend; state read back as NumPy arrays (copies)")
@@ -331,7 +331,7 @@ PYBIND11_MODULE(_collide, m) {
         .def_property_readonly("radii", [](Simulation& s) { return read_only_array(s.state().radius); })
         .def_property_readonly("masses", [](Simulation& s) { return read_only_array(s.state().mass); })
         .def("state_hash", [](Simulation& s) { return state_hash(s.state()); },
-             "The hash of the current state's bits (core/state_hash.h)")
+             "The hash of the current state's bits (core/numerics/state_hash.h)")
         .def("metrics", &Simulation::metrics)
         .def("stats", &Simulation::stats)
         .def("provenance", &Simulation::provenance)

@@ -13,7 +13,7 @@
 #include <sstream>
 #include <vector>
 
-#include "core/toml_fields.h"
+#include "core/scene/toml_fields.h"
 
 namespace collide::python {
 namespace {

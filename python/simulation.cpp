@@ -8,13 +8,13 @@
 
 #include <pybind11/stl.h>
 
-#include "core/backend_table.h"
+#include "core/scene/backend_table.h"
 #include "core/run_driver.h"
-#include "core/run_schema.h"
-#include "core/scene_loader.h"
-#include "core/state_hash.h"
-#include "core/target_time.h"
-#include "core/toml_fields.h"
+#include "core/io/run_schema.h"
+#include "core/scene/scene_loader.h"
+#include "core/numerics/state_hash.h"
+#include "core/numerics/target_time.h"
+#include "core/scene/toml_fields.h"
 #include "scene_from_dict.h"
 
 namespace collide::python {
@@ -102,7 +102,7 @@ py::array_t<double> read_only_array(const std::vector<double>& a) {
     return out;
 }
 
-// One entry per column of the run schema (core/run_schema.h), with the column's type, and
+// One entry per column of the run schema (core/io/run_schema.h), with the column's type, and
 // total_energy = kinetic_energy + potential_energy.
 py::dict metrics_dict(const Metrics& m) {
     py::dict d;
@@ -183,7 +183,7 @@ void Simulation::advance_to(double t) {
     check_usable();
     if (!nonfinite_.empty())
         throw std::runtime_error(nonfinite_ + "; this simulation cannot go on (its state is still readable)");
-    // The one target-time check (core/target_time.h), before any work: a NaN, an infinity or a
+    // The one target-time check (core/numerics/target_time.h), before any work: a NaN, an infinity or a
     // time beyond the cap would otherwise start an endless loop below. Rounded to whole steps
     // here for every backend; the event solver checks its exact time again itself.
     check_target_time(backend_, t, solver_->time(), scene_.run.dt, true);

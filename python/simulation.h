@@ -12,7 +12,7 @@
 #include "core/backend_registry.h"
 #include "core/metrics.h"
 #include "core/particle_state.h"
-#include "core/scene.h"
+#include "core/scene/scene.h"
 
 namespace collide::python {
 

@@ -6,8 +6,8 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "core/compensated_sum.h"
-#include "core/scene.h"
+#include "core/numerics/compensated_sum.h"
+#include "core/scene/scene.h"
 #include "core/solver.h"
 
 namespace collide {

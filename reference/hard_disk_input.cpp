@@ -4,9 +4,9 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "core/disk_overlap.h"
-#include "core/number_text.h"
-#include "core/representability.h"
+#include "core/numerics/disk_overlap.h"
+#include "core/numerics/number_text.h"
+#include "core/numerics/representability.h"
 #include "core/uniform_grid.h"
 #include "physics/stepping_laws.h"
 
@@ -86,7 +86,7 @@ void reject_overlapping_disks(const std::string& who, const Scene& scene, const 
                 dy = WallLaw<double>::minimum_image(dy, w.height());
             }
             const double sigma = s.radius[i] + s.radius[j];
-            // The one overlap test of every backend, which cannot underflow (core/disk_overlap.h).
+            // The one overlap test of every backend, which cannot underflow (core/numerics/disk_overlap.h).
             if (!centres_closer_than(dx, dy, sigma * (1 - hard_disk_overlap_tolerance))) return;
             const double distance = std::hypot(dx, dy);
             throw std::runtime_error(who + ": initial state overlaps: particles " + std::to_string(i) + " and " +

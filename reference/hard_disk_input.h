@@ -7,8 +7,8 @@
 #include <string>
 
 #include "core/particle_state.h"
-#include "core/scene.h"
-#include "core/scene_features.h"
+#include "core/scene/scene.h"
+#include "core/scene/scene_features.h"
 
 namespace collide {
 
@@ -22,7 +22,7 @@ std::optional<std::string> outside_event_model(const SceneFeatures& features);
 inline constexpr double hard_disk_overlap_tolerance = 1e-10;
 
 // Restitutions in [0, 1], radii and masses > 0, finite positions and velocities, disks inside
-// the walls (reflecting box), numbers representable in double (core/representability.h), and
+// the walls (reflecting box), numbers representable in double (core/numerics/representability.h), and
 // a run that can finish. `who` starts every
 // message ("event", "event-plain"). Throws std::runtime_error.
 void check_hard_disk_input(const std::string& who, const Scene& scene, const ParticleState<double>& state);

@@ -23,7 +23,7 @@
 //   stale) and the disks are predicted from scratch; a stone, which never moves, keeps its count.
 //
 // The formulas of a collision are written once, in physics/ (collision_time.h: when, and
-// collision_rule.h: what happens), shared with the tuned `event`; core/target_time.h checks t.
+// collision_rule.h: what happens), shared with the tuned `event`; core/numerics/target_time.h checks t.
 #include "plain_event_solver.h"
 
 #include <algorithm>
@@ -31,8 +31,8 @@
 #include <stdexcept>
 
 #include "core/metrics.h"
-#include "core/scene_features.h"
-#include "core/target_time.h"
+#include "core/scene/scene_features.h"
+#include "core/numerics/target_time.h"
 #include "event_statistics.h"
 #include "hard_disk_input.h"
 #include "physics/collision_rule.h"

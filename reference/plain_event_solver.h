@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "core/compensated_sum.h"
+#include "core/numerics/compensated_sum.h"
 #include "core/solver.h"
 
 namespace collide {

@@ -6,8 +6,8 @@
 
 #include <Eigen/Core>
 
-#include "core/phase_timer.h"
-#include "core/representability.h"
+#include "core/numerics/phase_timer.h"
+#include "core/numerics/representability.h"
 #include "physics/step_schedule.h"
 #include "physics/stepping_laws.h"
 

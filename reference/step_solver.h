@@ -29,7 +29,7 @@ private:
     // Rule "integrate-first": one sub-step of length h, forces and Euler before the contacts.
     void substep_integrate_first(double h);
 
-    // The phases (core/phase_timer.h names them for every stepping backend).
+    // The phases (core/numerics/phase_timer.h names them for every stepping backend).
     void build_grid();
     // Jacobi contact pass: every disk's correction is computed from the same snapshot and
     // stored in dx_/dy_/dvx_/dvy_; nothing moves until correct().

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Fit the constants of the stepped rules' bias model in Z and in the collision rate.
 
-The model (validation/statistics_bias_model.h, docs/validation.md) predicts, for a stepped
+The model (validation/models/statistics_bias_model.h, docs/validation.md) predicts, for a stepped
 rule of step h = dt / substeps on a gas whose exact collision rate per disk is nu (from event),
 
     Z_step - Z_event   = c_Z  * nu h / (4 s (2 + s))      (s: the contact shell, 0.05)
@@ -24,7 +24,7 @@ import sys
 import tomllib
 from collections import defaultdict
 
-SHELL = 0.05  # validation/observables.h: contact_shell
+SHELL = 0.05  # validation/judge/observables.h: contact_shell
 
 
 def mean_se(xs):

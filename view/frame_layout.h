@@ -3,7 +3,7 @@
 // box is kept whatever the window's shape) and centred. World y points up, pixel y down.
 #pragma once
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 
 namespace collide::view {
 

@@ -14,8 +14,8 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "core/output_file.h"
-#include "core/shell_quote.h"
+#include "core/io/output_file.h"
+#include "core/io/shell_quote.h"
 
 namespace collide::view {
 namespace {

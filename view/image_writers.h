@@ -1,6 +1,6 @@
 // Writing frames to files: PNG (libpng), animated GIF (giflib) and MP4 (through an `ffmpeg`
 // process, only where one is installed). Every file goes through the output guard and the
-// atomic rename of core/output_file.h: a device, a FIFO or a link to nothing is refused when
+// atomic rename of core/io/output_file.h: a device, a FIFO or a link to nothing is refused when
 // the writer opens, the file is written under a temporary name in the target's directory and
 // renamed when complete, so a failure never leaves half a file.
 #pragma once

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "core/compensated_sum.h"
+#include "core/numerics/compensated_sum.h"
 #include "physics/stepping_laws.h"
 #include "parallel_chunks.h"
 

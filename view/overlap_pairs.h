@@ -10,7 +10,7 @@
 
 #include "core/metrics.h"
 #include "core/particle_state.h"
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "core/uniform_grid.h"
 
 namespace collide::view {

@@ -7,7 +7,7 @@
 
 #include "canvas.h"
 #include "core/metrics.h"
-#include "core/output_file.h"
+#include "core/io/output_file.h"
 #include "image_writers.h"
 #include "run_frames.h"
 #include "view_session.h"
@@ -102,7 +102,7 @@ private:
 
 void render_run(const RenderOptions& o) {
     const std::string format = output_format(o.out);
-    check_output_path(o.out);  // before any frame is read or drawn (core/output_file.h)
+    check_output_path(o.out);  // before any frame is read or drawn (core/io/output_file.h)
     if (o.width < 16 || o.height < 16) throw std::runtime_error("--size: a frame needs at least 16x16 pixels");
     const RunFrames run(o.run);
     std::unique_ptr<RunFrames> ref;

@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "core/scene_loader.h"
+#include "core/scene/scene_loader.h"
 
 namespace collide::view {
 

@@ -1,6 +1,6 @@
 // Reading the frames of a run file (docs/output-format.md) for drawing: the scene (from the
 // stored scene text), the disks' constants, and the state at any stored output time, one frame
-// at a time (a long run's frames need not fit in memory). Every check is core/run_reader.h's:
+// at a time (a long run's frames need not fit in memory). Every check is core/io/run_reader.h's:
 // a damaged file is refused with its name, never drawn.
 #pragma once
 
@@ -8,8 +8,8 @@
 #include <string>
 
 #include "core/particle_state.h"
-#include "core/run_reader.h"
-#include "core/scene.h"
+#include "core/io/run_reader.h"
+#include "core/scene/scene.h"
 
 namespace collide::view {
 

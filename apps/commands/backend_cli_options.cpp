@@ -1,7 +1,7 @@
 // The backend options of the command line, declared once for every command that runs a
 // backend (`run`, `view`): they fill BackendOptions (core/solver.h). A backend's own keys are
 // not options here: they are its [backend.NAME] table, or `--set backend.NAME.KEY=VALUE`, read
-// by core/option_reader.h.
+// by core/scene/option_reader.h.
 #include "commands.h"
 
 namespace collide::cli {

@@ -8,7 +8,7 @@
 
 #include "bench/bench_suite.h"
 #include "commands.h"
-#include "core/output_file.h"
+#include "core/io/output_file.h"
 #include "apps/resource_path.h"
 
 namespace collide::cli {
@@ -50,7 +50,7 @@ void add_bench_command(CLI::App& app) {
             return args->suites.empty() ||
                    std::find(args->suites.begin(), args->suites.end(), suite.name) != args->suites.end();
         };
-        // So are the output files (core/output_file.h): a FIFO or a device in the way of the
+        // So are the output files (core/io/output_file.h): a FIFO or a device in the way of the
         // last suite's results is refused before the first suite runs.
         for (const auto& suite : bench::all_bench_suites())
             if (chosen(suite))

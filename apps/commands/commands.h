@@ -4,8 +4,8 @@
 #include <CLI/CLI.hpp>
 
 #include "core/backend_registry.h"
-#include "core/scene_overrides.h"
-#include "validation/external_solvers.h"
+#include "core/scene/scene_overrides.h"
+#include "validation/plan/external_solvers.h"
 
 namespace collide::cli {
 
@@ -30,7 +30,7 @@ void require_support(const BackendInfo& backend, const Scene& scene);
 // (backend_cli_options.cpp).
 void add_backend_options(CLI::App& cmd, BackendOptions& options);
 
-// `--set PATH=VALUE` (repeatable) on a command that reads a scene (core/scene_overrides.h);
+// `--set PATH=VALUE` (repeatable) on a command that reads a scene (core/scene/scene_overrides.h);
 // each word is checked as PATH=VALUE when parsed, the paths and values when applied.
 void add_set_option(CLI::App& cmd, std::vector<SceneOverride>& overrides);
 // The scene file with the overrides applied (load_scene alone without any).

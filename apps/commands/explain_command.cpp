@@ -1,8 +1,8 @@
 // `collide explain DIR CASE_ID [--from T0] [--to T1] [--suite FILE] [--json]`: reruns one case
-// of a finished suite (validation/case_replay.h), checks that the rerun retraces the recorded run
+// of a finished suite (validation/explain/case_replay.h), checks that the rerun retraces the recorded run
 // (its start bit for bit, its kinetic energy at the last output time before T0), then steps it
 // one dt at a time and names the step in which the energy changed most, the disks it changed and
-// the kind of contact behind it (validation/energy_jump.h). The report calls it for every energy
+// the kind of contact behind it (validation/explain/energy_jump.h). The report calls it for every energy
 // jump it shows (docs/reading-a-report.md).
 #include <algorithm>
 #include <cmath>
@@ -12,13 +12,13 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
-#include "core/progress_line.h"
+#include "core/io/progress_line.h"
 #include "apps/input_paths.h"
 #include "core/metrics.h"
 #include "commands.h"
-#include "validation/case_replay.h"
-#include "validation/case_result.h"
-#include "validation/energy_jump.h"
+#include "validation/explain/case_replay.h"
+#include "validation/run/case_result.h"
+#include "validation/explain/energy_jump.h"
 
 namespace collide::cli {
 namespace {
@@ -124,7 +124,7 @@ void execute(const ExplainArgs& args) {
     const double start = std::floor(args.from / dt + 1e-9) * dt;
     if (!what_if) require_same_path(*solver, c, record, start);
     // A long case takes a while to reach --from and to search: a progress line with the time
-    // left on a terminal, a plain line every 10 s in a log (core/progress_line.h).
+    // left on a terminal, a plain line every 10 s in a log (core/io/progress_line.h).
     ProgressLine progress;
     const double interval = c.scene.run.output_interval;
     for (double t = solver->time(); t < start;) {

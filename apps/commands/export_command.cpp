@@ -1,5 +1,5 @@
 // `collide export RUN.h5 --out FILE [--format xdmf|gsd|xyz]`: a run's frames for ParaView,
-// VisIt, OVITO, ASE or HOOMD (core/run_export.h, docs/exporting.md). XDMF and XYZ are written
+// VisIt, OVITO, ASE or HOOMD (core/io/run_export.h, docs/exporting.md). XDMF and XYZ are written
 // here; GSD by python/collide/gsd_export.py (the `gsd` package), run as `collide report` runs
 // its renderer.
 
@@ -11,9 +11,9 @@
 #include "apps/resource_path.h"
 #include "apps/input_paths.h"
 #include "commands.h"
-#include "core/output_file.h"
-#include "core/run_export.h"
-#include "validation/case_result.h"
+#include "core/io/output_file.h"
+#include "core/io/run_export.h"
+#include "validation/run/case_result.h"
 
 namespace collide::cli {
 namespace {
@@ -33,7 +33,7 @@ void write_gsd(const std::string& run, const std::string& out) {
 void execute(const ExportArgs& args) {
     const ExportFormat format = export_format(args.format, args.out);
     check_output_path(args.out);  // a device, a FIFO, a link to nothing: refused before any work
-    require_frames(args.run);     // every frame read and checked (core/run_reader.h) before writing
+    require_frames(args.run);     // every frame read and checked (core/io/run_reader.h) before writing
     if (format == ExportFormat::gsd) write_gsd(args.run, args.out);
     else
         write_file_atomically(

@@ -4,7 +4,7 @@
 #include <memory>
 #include <stdexcept>
 
-#include "core/progress_line.h"
+#include "core/io/progress_line.h"
 #include "apps/input_paths.h"
 #include "commands.h"
 #include "view/render_run.h"

@@ -21,9 +21,9 @@
 #include "apps/resource_path.h"
 #include "apps/input_paths.h"
 #include "commands.h"
-#include "core/output_file.h"
-#include "validation/case_result.h"
-#include "validation/suite_runner.h"
+#include "core/io/output_file.h"
+#include "validation/run/case_result.h"
+#include "validation/run/suite_runner.h"
 
 namespace collide::cli {
 namespace {
@@ -67,7 +67,7 @@ void warn_about_stray_files(const std::string& dir, const std::set<std::string>&
                  dir.c_str(), stray.size(), names.c_str());
 }
 
-// Every listed case's record and HDF5 file must be intact (core/run_reader.h): a damaged or
+// Every listed case's record and HDF5 file must be intact (core/io/run_reader.h): a damaged or
 // truncated one (a full disk, a copy cut short, a flipped bit) is named here rather than
 // drawn from, or failing deep in Python. The frames are left to `collide render`, which checks
 // those it draws. The records are parsed on every core at once; the HDF5 library is not
@@ -101,7 +101,7 @@ void check_case_files(const std::string& dir) {
             throw std::runtime_error(problem + "; run `collide validate ... --resume` to run that case again");
 }
 
-// The files the renderer writes, checked before it starts (core/output_file.h; the renderer
+// The files the renderer writes, checked before it starts (core/io/output_file.h; the renderer
 // checks them again with validation/report/safe_output.py, its Python twin).
 void check_report_outputs(const std::string& report_dir) {
     check_output_directory(report_dir);

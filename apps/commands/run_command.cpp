@@ -9,12 +9,12 @@
 #include <memory>
 #include <optional>
 
-#include "core/progress_line.h"
+#include "core/io/progress_line.h"
 #include "commands.h"
 #include "core/backend_registry.h"
-#include "core/provenance.h"
+#include "core/io/provenance.h"
 #include "core/run_driver.h"
-#include "core/scene_loader.h"
+#include "core/scene/scene_loader.h"
 
 namespace collide::cli {
 namespace {

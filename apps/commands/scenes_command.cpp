@@ -5,7 +5,7 @@
 
 #include "apps/resource_path.h"
 #include "commands.h"
-#include "core/scene_loader.h"
+#include "core/scene/scene_loader.h"
 
 namespace collide::cli {
 

@@ -3,7 +3,7 @@
 #include <stdexcept>
 
 #include "commands.h"
-#include "core/scene_loader.h"
+#include "core/scene/scene_loader.h"
 
 namespace collide::cli {
 

@@ -11,7 +11,7 @@
 #include "apps/input_paths.h"
 #include "commands.h"
 #include "core/backend_registry.h"
-#include "validation/suite_runner.h"
+#include "validation/run/suite_runner.h"
 
 namespace collide::cli {
 namespace {
@@ -65,7 +65,7 @@ void execute(const ValidateArgs& args) {
     std::printf("output    %s/summary.json, %s/junit.xml\n", args.out.c_str(), args.out.c_str());
     if (suite.stability) {
         // A stability suite's product is the classification: breaking cases are findings.
-        // It fails only where something unexpected happened (validation/stability.h).
+        // It fails only where something unexpected happened (validation/judge/stability.h).
         const auto unexpected = validation::unexpected_outcomes(outcome.cases, outcome.classifications);
         for (const auto& line : unexpected) std::printf("UNEXPECTED %s\n", line.c_str());
         std::printf("stability %zu cases classified, %zu unexpected%s\n", outcome.classifications.size(),

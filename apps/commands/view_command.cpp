@@ -6,8 +6,8 @@
 
 #include "apps/input_paths.h"
 #include "commands.h"
-#include "core/output_file.h"
-#include "core/scene_loader.h"
+#include "core/io/output_file.h"
+#include "core/scene/scene_loader.h"
 #include "view/live_viewer.h"
 
 namespace collide::cli {
@@ -38,7 +38,7 @@ void parse_size(const std::string& text, int& width, int& height) {
 // support; then the comparison backend the same way.
 void execute(ViewArgs& args) {
     parse_size(args.size, args.view.width, args.view.height);
-    // The screenshot's path is checked before anything runs (core/output_file.h): a device, a
+    // The screenshot's path is checked before anything runs (core/io/output_file.h): a device, a
     // FIFO or a link to nothing fails now, with nothing written, not after the last frame.
     if (!args.view.screenshot.empty()) check_output_path(args.view.screenshot);
     const BackendInfo& backend = find_backend(args.backend);

@@ -389,7 +389,7 @@ def phase_mean_error(lab, name, striker, backend, dt, phases=6):
 
     A stepped rule finds a collision at the first step that ends in overlap, so its error
     depends on where the exact collision time falls inside a step. As the validation suite
-    does (validation/phase_shift.h), replicate k starts the striker frac(k phi) dt further along
+    does (validation/compare/phase_shift.h), replicate k starts the striker frac(k phi) dt further along
     its path (phi the golden ratio), and the error is averaged over the replicates.
     """
     errors, seconds = [], []
@@ -509,16 +509,22 @@ def replicates(lab, out):
 
 # --- Chapter 5: making it fast ------------------------------------------------------------
 
-def speed_ladder(lab, out):
-    # `collide bench event` times both exact solvers; --quick (the test's default) runs N = 1e3
-    # and 1e4, the course's figure N = 1e3..1e5 (--bench-sizes 1000 10000 100000).
+def bench_rows(lab, suite, extra=()):
+    """Runs `collide bench SUITE` (at lab.bench_sizes, or --quick, the test's default) and
+    returns the rows of its JSON."""
     prefix = lab.scratch / "bench"
     sizes = ["--sizes", *map(str, lab.bench_sizes)] if lab.bench_sizes else ["--quick"]
-    command = [lab.collide, "bench", "event", *sizes, "--out", str(prefix)]
+    command = [lab.collide, "bench", suite, *sizes, *extra, "--out", str(prefix)]
     done = subprocess.run(command, capture_output=True, text=True)
     if done.returncode != 0:
         raise SystemExit(f"make_figures: {' '.join(command)} failed:\n{done.stderr}")
-    rows = json.loads((lab.scratch / "bench-event.json").read_text())["rows"]
+    return json.loads((lab.scratch / f"bench-{suite}.json").read_text())["rows"]
+
+
+def speed_ladder(lab, out):
+    # `collide bench event` times both exact solvers; the course's figure runs N = 1e3..1e6
+    # (--bench-sizes 1000 10000 100000 1000000), the test --quick (N = 1e3 and 1e4).
+    rows = bench_rows(lab, "event")
     fig, ax = plt.subplots(figsize=(6, 3.4))
     for k, eta in enumerate(sorted({r["area_fraction"] for r in rows})):
         for backend, style in (("event", "o-"), ("event-plain", "s:")):
@@ -529,6 +535,22 @@ def speed_ladder(lab, out):
     ax.legend(fontsize=7, ncol=2)
     finish(fig, ax, out, "ch5_event_ladder", "disks N (count)", "processor time per collision (ns)",
            "collide bench event: the exact solvers' cost per collision", legend=False)
+
+
+def stepped_throughput(lab, out):
+    # `collide bench throughput`: every stepped backend on the benchmark gas (area fraction 0.3),
+    # 60 timed steps per point; cpu on one thread and on all. Same sizes as the event ladder.
+    rows = bench_rows(lab, "throughput", ("--steps", "60"))
+    series = {}
+    for r in rows:
+        label = r["backend"] if r["backend"] != "cpu" else f"cpu, {r['threads']} thread{'s' if str(r['threads']) != '1' else ''}"
+        series.setdefault(label, []).append((r["n"], r["particle_steps_per_s"]))
+    fig, ax = plt.subplots(figsize=(6, 3.4))
+    for k, (label, pts) in enumerate(sorted(series.items())):
+        ax.loglog(*zip(*sorted(pts)), "o-", color=f"C{k}", label=label)
+    ax.legend(fontsize=7, ncol=2)
+    finish(fig, ax, out, "ch5_stepped_throughput", "disks N (count)", "throughput (particle-steps per second)",
+           "collide bench throughput: every stepped backend, area fraction 0.3", legend=False)
 
 
 def threads(lab, out):
@@ -549,7 +571,7 @@ def threads(lab, out):
 
 FIGURES = {f.__name__: f for f in (head_on_mass_ratio, glancing, pi_circle, maxwell, equation_of_state,
                                     snapshot, chaos, haff, convergence, cradle, energy_crowd, work_precision,
-                                    overlap_series, replicates, speed_ladder, threads)}
+                                    overlap_series, replicates, speed_ladder, stepped_throughput, threads)}
 
 
 def main():
@@ -558,7 +580,7 @@ def main():
     parser.add_argument("--out", default=str(ROOT / "docs" / "figures"))
     parser.add_argument("--only", nargs="*", choices=sorted(FIGURES), help="make only these figures")
     parser.add_argument("--bench-sizes", nargs="*", type=int,
-                        help="disk counts of the event ladder (default: collide bench event --quick)")
+                        help="disk counts of the event ladder and the stepped throughput (default: --quick)")
     args = parser.parse_args()
     out = pathlib.Path(args.out)
     try:

@@ -4,7 +4,7 @@
  * (the headers are the very files the C++ backends compile, embedded at build time), and
  * builds the result with -D flags for the scene's features:
  *   COLLIDE_REAL_DOUBLE      Real = double (needs cl_khr_fp64), else Real = float
- *   COLLIDE_INTEGRATE_FIRST  ParticleBox's rule, else the OpenCL engine's collide-first rule
+ *   COLLIDE_INTEGRATE_FIRST  the integrate-first rule, else collide-first (docs/stepping-rules.md)
  *   COLLIDE_PERIODIC         periodic walls (minimum image, wrapped cells), else reflecting
  *   COLLIDE_GRAVITY, COLLIDE_DAMPING, COLLIDE_FRICTION, COLLIDE_STONES
  *   COLLIDE_UNIFORM_RADIUS   every disk has radius r: contact distance 2r is a constant

@@ -1,16 +1,17 @@
 /* The stepping rules (docs/stepping-rules.md) as kernels, one work-item per disk. Each
  * kernel performs, for its disk, the operations of reference/step_solver.cpp in the same
- * order, so the double build reproduces `step` to rounding of the sums' order.
+ * order, so the double build reproduces `step` to rounding of the sums' order. The kernels
+ * carry the phase names of core/phase_timer.h:
  *
- *   collide-first (the OpenCL engine), one step:   [grid]  resolve_collisions
- *   integrate-first (ParticleBox), one sub-step:  integrate_motion  [grid]  resolve_collisions
+ *   collide-first, one step:      [grid]  collide_and_correct
+ *   integrate-first, one sub-step:  integrate  [grid]  collide_and_correct
  *
- * resolve_collisions reads a snapshot (`in`) and writes the new state to another buffer
+ * collide_and_correct reads a snapshot (`in`) and writes the new state to another buffer
  * (`out`), so every disk sees its neighbours as they were at the start of the pass (the
  * Jacobi update of the rules) and no work-item can see another's write. It applies the
  * summed contact deltas, then finishes the disk's step: explicit Euler and walls
- * (collide-first) or walls alone (integrate-first). The OpenCL engine ran integration as a second
- * kernel to avoid exactly the race that the second buffer removes.
+ * (collide-first) or walls alone (integrate-first). With two buffers, integration needs no
+ * kernel of its own in the collide-first rule: no disk reads a position another has moved.
  */
 
 /* Field acceleration minus linear drag, a = g - gamma v; a term the scene does not use is
@@ -99,7 +100,7 @@ static inline void add_contacts(int i, const Particle* pi, __global const Partic
 #else
         const Real contact = pi->radius + pj.radius;
 #endif
-        /* The squared-distance test of the OpenCL engine: no square root for non-contacts. */
+        /* Squared distances: no square root for the pairs that do not touch (most of them). */
         if (sep_x * sep_x + sep_y * sep_y >= contact * contact) continue;
         const ContactDelta d = contact_delta(sep_x, sep_y, pi->vx - pj.vx, pi->vy - pj.vy, contact,
                                              pi->inv_mass, pj.inv_mass, p->restitution, friction);
@@ -181,13 +182,13 @@ static inline void resolve_disk(int i, __global const Particle* in, __global Par
     contact_count[i] += contacts;
 }
 
-__kernel void integrate_motion(__global Particle* particles, const StepParams params)
+__kernel void integrate(__global Particle* particles, const StepParams params)
 {
     const int i = get_global_id(0);
     if (i < params.n) integrate_disk(i, particles, &params);
 }
 
-__kernel void resolve_collisions(__global const Particle* in, __global Particle* out,
+__kernel void collide_and_correct(__global const Particle* in, __global Particle* out,
                                  __global const uint* cell_start, __global const uint* sorted_index,
                                  __global uint* contact_count, const StepParams params)
 {

@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "event_memory.h"
-#include "core/prefetch.h"
-#include "core/scene.h"
+#include "core/numerics/prefetch.h"
+#include "core/scene/scene.h"
 #include "core/uniform_grid.h"
 
 namespace collide {

@@ -1,6 +1,6 @@
 // Speed layer of the tuned `event` solver: the allocation. The arrays that every event reads
 // at random places (the disk records, the calendar slots, the cell list's heads) are
-// allocated on 2 MiB huge pages (core/huge_page_allocator.h), so that a random access needs
+// allocated on 2 MiB huge pages (core/numerics/huge_page_allocator.h), so that a random access needs
 // no page-table walk on top of its cache miss once the state outgrows what the TLB reaches
 // with 4 KiB pages (about 8 MiB).
 //
@@ -11,7 +11,7 @@
 // on it.
 #pragma once
 
-#include "core/huge_page_allocator.h"
+#include "core/numerics/huge_page_allocator.h"
 
 namespace collide {
 

@@ -51,7 +51,7 @@
 #include <vector>
 
 #include "event_memory.h"
-#include "core/prefetch.h"
+#include "core/numerics/prefetch.h"
 
 namespace collide {
 

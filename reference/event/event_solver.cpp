@@ -6,13 +6,13 @@
 #include <limits>
 #include <stdexcept>
 
-#include "core/disk_overlap.h"
-#include "core/number_text.h"
-#include "core/scene_features.h"
+#include "core/numerics/disk_overlap.h"
+#include "core/numerics/number_text.h"
+#include "core/scene/scene_features.h"
 #include "core/metrics.h"
-#include "core/option_reader.h"
-#include "core/representability.h"
-#include "core/target_time.h"
+#include "core/scene/option_reader.h"
+#include "core/numerics/representability.h"
+#include "core/numerics/target_time.h"
 #include "physics/collision_rule.h"
 #include "physics/collision_time.h"
 #include "physics/stepping_laws.h"

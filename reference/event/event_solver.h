@@ -26,7 +26,7 @@
 #include <Eigen/Core>
 
 #include "cell_order_renumbering.h"
-#include "core/compensated_sum.h"
+#include "core/numerics/compensated_sum.h"
 #include "core/solver.h"
 #include "event_cell_list.h"
 #include "event_memory.h"

@@ -5,7 +5,7 @@
 // then the records in those cells (which need the heads), then the next records in the same
 // cells. The calendar knows the disks of the next few events (EventQueue::next_upcoming), so
 // each is taken through this chain one link per event, ahead of time (prefetch_line,
-// core/prefetch.h: a request the compiler cannot delete):
+// core/numerics/prefetch.h: a request the compiler cannot delete):
 //   stage 0: its calendar slot and record are requested;
 //   stage 1 (one event later): the list heads of its cells (cells_to_visit), and its
 //            predicted partner's record and slot (for a crossing, the kept partner's record,
@@ -31,7 +31,7 @@
 #include <cstdint>
 #include <string>
 
-#include "core/prefetch.h"
+#include "core/numerics/prefetch.h"
 #include "event_cell_list.h"
 #include "event_memory.h"
 #include "event_queue.h"

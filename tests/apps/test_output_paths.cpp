@@ -1,4 +1,4 @@
-// The output-path guard (core/output_file.h) as a property of every writer of the `collide`
+// The output-path guard (core/io/output_file.h) as a property of every writer of the `collide`
 // program: whatever a command writes (an HDF5 run, a render, a screenshot, benchmark
 // tables, a suite's summary, case records and runs, a report), pointed at a place that is not
 // a new or a regular file it

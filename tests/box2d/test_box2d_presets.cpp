@@ -6,7 +6,7 @@
 #include <box2d/box2d.h>
 
 #include "box2d/box2d_solver.h"
-#include "core/option_reader.h"
+#include "core/scene/option_reader.h"
 #include "tests/support/test_scenes.h"
 
 namespace collide {

@@ -13,7 +13,7 @@
 #include <stdexcept>
 
 #include "box2d/box2d_solver.h"
-#include "core/option_reader.h"
+#include "core/scene/option_reader.h"
 #include "core/metrics.h"
 #include "core/run_driver.h"
 #include "tests/support/test_scenes.h"

@@ -25,8 +25,8 @@
 
 #include "conformance.h"
 #include "core/metrics.h"
-#include "core/scene_loader.h"
-#include "core/state_hash.h"
+#include "core/scene/scene_loader.h"
+#include "core/numerics/state_hash.h"
 #include "tests/support/state_difference.h"
 #include "tests/support/test_scenes.h"
 
@@ -182,7 +182,7 @@ void expect_same_statistics(const std::string& file) {
 TEST(ExactSolvers, SamePressureAndCollisionRateInTheThousandDiskBox) { expect_same_statistics("box_gas_1000.toml"); }
 TEST(ExactSolvers, SamePressureAndCollisionRateInThePeriodicGas) { expect_same_statistics("periodic_gas.toml"); }
 
-// Golden end-of-run state hashes (core/state_hash.h: the exact bits of every position and
+// Golden end-of-run state hashes (core/numerics/state_hash.h: the exact bits of every position and
 // velocity), Box2D v3's test_determinism style: any change to the arithmetic of a solver, the
 // order of its events or the scene generators changes a hash. The values hold for IEEE double
 // arithmetic without fused multiply-add (the build's x86-64 flags); a change that alters them

@@ -6,10 +6,10 @@
 #include <cmath>
 #include <string>
 
-#include "core/gas_scene.h"
+#include "core/scene/gas_scene.h"
 #include "core/metrics.h"
-#include "core/scene_loader.h"
-#include "core/state_hash.h"
+#include "core/scene/scene_loader.h"
+#include "core/numerics/state_hash.h"
 #include "tests/support/test_scenes.h"
 
 namespace collide {

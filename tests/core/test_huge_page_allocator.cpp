@@ -1,11 +1,11 @@
-// HugePageAllocator (core/huge_page_allocator.h): large arrays start on a huge-page boundary,
+// HugePageAllocator (core/numerics/huge_page_allocator.h): large arrays start on a huge-page boundary,
 // small ones are ordinary aligned allocations, and a vector using it behaves like any vector.
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <numeric>
 
-#include "core/huge_page_allocator.h"
+#include "core/numerics/huge_page_allocator.h"
 
 namespace collide {
 namespace {

@@ -1,7 +1,7 @@
 // The sample median against values worked out by hand.
 #include <gtest/gtest.h>
 
-#include "core/median.h"
+#include "core/numerics/median.h"
 
 namespace collide {
 namespace {

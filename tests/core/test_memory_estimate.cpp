@@ -7,8 +7,8 @@
 #include <cmath>
 #include <string>
 
-#include "core/memory_estimate.h"
-#include "core/scene_loader.h"
+#include "core/scene/memory_estimate.h"
+#include "core/scene/scene_loader.h"
 #include "tests/support/test_scenes.h"
 
 namespace collide {

@@ -1,14 +1,14 @@
-// The typed reader of backend options (core/option_reader.h): defaults, typed values, range
+// The typed reader of backend options (core/scene/option_reader.h): defaults, typed values, range
 // checks, the caller's options over the scene's table, and unknown keys refused with where
 // they were set (the scene file's line, --set) and the keys that are known.
-#include "core/option_reader.h"
+#include "core/scene/option_reader.h"
 
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "core/scene_loader.h"
-#include "core/scene_overrides.h"
+#include "core/scene/scene_loader.h"
+#include "core/scene/scene_overrides.h"
 
 namespace collide {
 namespace {

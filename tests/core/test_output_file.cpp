@@ -1,4 +1,4 @@
-// core/output_file.h: the guard's messages name the real cause (a name too long is not "does
+// core/io/output_file.h: the guard's messages name the real cause (a name too long is not "does
 // not exist", a loop of links is not "a link to nothing"), the atomic write keeps the umask's
 // permissions, follows a link, leaves no temporary file, and never renames over a FIFO that
 // appeared while the file was being written. (tests/apps/test_output_paths.cpp runs every
@@ -11,7 +11,7 @@
 #include <filesystem>
 #include <string>
 
-#include "core/output_file.h"
+#include "core/io/output_file.h"
 #include "tests/support/scratch_directory.h"
 
 namespace collide {

@@ -1,5 +1,5 @@
-// prefetch_line (core/prefetch.h): a cache-line request that the compiler cannot delete.
-#include "core/prefetch.h"
+// prefetch_line (core/numerics/prefetch.h): a cache-line request that the compiler cannot delete.
+#include "core/numerics/prefetch.h"
 
 #include <gtest/gtest.h>
 
@@ -26,7 +26,7 @@ TEST(PrefetchLine, RequestsChangeNoValue) {
 // itself. This looks for the builtin anywhere else.
 TEST(PrefetchLine, SourcesUseItInsteadOfTheCompilerBuiltin) {
     const std::filesystem::path root = COLLIDE_SOURCE_DIR;
-    const std::filesystem::path allowed = root / "core" / "prefetch.h";
+    const std::filesystem::path allowed = root / "core" / "numerics" / "prefetch.h";
     std::vector<std::string> offenders;
     for (const char* dir : {"core", "physics", "reference", "cpu", "opencl", "box2d", "bench", "apps", "validation"}) {
         if (!std::filesystem::exists(root / dir)) continue;
@@ -40,7 +40,7 @@ TEST(PrefetchLine, SourcesUseItInsteadOfTheCompilerBuiltin) {
             if (text.str().find("__builtin_prefetch") != std::string::npos) offenders.push_back(entry.path().string());
         }
     }
-    EXPECT_TRUE(offenders.empty()) << "use prefetch_line (core/prefetch.h) in: " << ::testing::PrintToString(offenders);
+    EXPECT_TRUE(offenders.empty()) << "use prefetch_line (core/numerics/prefetch.h) in: " << ::testing::PrintToString(offenders);
     EXPECT_TRUE(std::filesystem::exists(allowed));
 }
 

@@ -1,10 +1,10 @@
-// The one progress display (core/progress_line.h): what it says, and when it says it.
+// The one progress display (core/io/progress_line.h): what it says, and when it says it.
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <string>
 
-#include "core/progress_line.h"
+#include "core/io/progress_line.h"
 
 namespace collide {
 namespace {

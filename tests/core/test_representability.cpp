@@ -10,12 +10,12 @@
 #include <string>
 
 #include "core/backend_registry.h"
-#include "core/disk_overlap.h"
+#include "core/numerics/disk_overlap.h"
 #include "core/metrics.h"
-#include "core/number_text.h"
-#include "core/provenance.h"
-#include "core/representability.h"
-#include "core/scene_loader.h"
+#include "core/numerics/number_text.h"
+#include "core/io/provenance.h"
+#include "core/numerics/representability.h"
+#include "core/scene/scene_loader.h"
 #include "tests/support/test_scenes.h"
 
 namespace collide {

@@ -1,4 +1,4 @@
-// RunFile (core/run_reader.h): a file RunWriter wrote reads back value for value; damage made
+// RunFile (core/io/run_reader.h): a file RunWriter wrote reads back value for value; damage made
 // with the plain HDF5 C API (a shorter array, a rewritten value, a flipped byte, a NaN the run
 // never recorded, format 1) is refused with the file and the dataset named.
 #include <gtest/gtest.h>
@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "core/run_reader.h"
-#include "core/run_writer.h"
+#include "core/io/run_reader.h"
+#include "core/io/run_writer.h"
 #include "tests/support/scratch_directory.h"
 #include "tests/support/test_scenes.h"
 

@@ -1,4 +1,4 @@
-// The run schema (core/run_schema.h) is the one list of metric columns: the writer writes every
+// The run schema (core/io/run_schema.h) is the one list of metric columns: the writer writes every
 // column with its units and description, the checked reader reads every column back, and
 // docs/output-format.md describes each exactly as the table does.
 #include <gtest/gtest.h>
@@ -7,9 +7,9 @@
 #include <set>
 #include <string>
 
-#include "core/run_reader.h"
-#include "core/run_schema.h"
-#include "core/run_writer.h"
+#include "core/io/run_reader.h"
+#include "core/io/run_schema.h"
+#include "core/io/run_writer.h"
 #include "tests/support/hdf5_reader.h"
 #include "tests/support/markdown_table.h"
 #include "tests/support/scratch_directory.h"
@@ -37,7 +37,7 @@ TEST(RunSchema, NamesAreUniqueAndEveryFieldOfMetricsIsAColumn) {
 
 TEST(RunSchema, DocsDescribeEveryColumnAsTheTableDoes) {
     const auto rows = test::markdown_table_after("docs/output-format.md", "### Metrics");
-    ASSERT_EQ(rows.size(), metric_column_count) << "docs/output-format.md: one row per column of core/run_schema.h";
+    ASSERT_EQ(rows.size(), metric_column_count) << "docs/output-format.md: one row per column of core/io/run_schema.h";
     for (std::size_t k = 0; k < rows.size(); ++k) {
         const MetricColumn& c = metric_columns[k];
         ASSERT_EQ(rows[k].size(), 3u);

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "core/run_writer.h"
+#include "core/io/run_writer.h"
 #include "tests/support/hdf5_reader.h"
 #include "tests/support/scratch_directory.h"
 #include "tests/support/test_scenes.h"

@@ -1,17 +1,17 @@
-// SceneFeatures (core/scene_features.h) is worked out once and every consumer reads it: the
+// SceneFeatures (core/scene/scene_features.h) is worked out once and every consumer reads it: the
 // cpu loop instantiation, the OpenCL -D flags, the event solvers' refusals and validation's
 // applicability. Each consumer is checked here against the features, feature by feature.
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "core/scene_features.h"
+#include "core/scene/scene_features.h"
 #include "cpu/feature_set.h"
 #include "opencl/step_params.h"
 #include "reference/event/event_solver.h"
 #include "reference/plain_event_solver.h"
 #include "tests/support/test_scenes.h"
-#include "validation/applicability.h"
+#include "validation/judge/applicability.h"
 
 namespace collide {
 namespace {

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "core/metrics.h"
-#include "core/scene_loader.h"
-#include "core/state_hash.h"
+#include "core/scene/scene_loader.h"
+#include "core/numerics/state_hash.h"
 #include "tests/support/test_scenes.h"
 
 namespace collide {
@@ -286,7 +286,7 @@ TEST(SceneLibrary, EveryScenLoadsAndGeneratesWithoutOverlaps) {
     }
 }
 
-// Golden hashes of initial states (core/state_hash.h). They freeze the generators: the GSL
+// Golden hashes of initial states (core/numerics/state_hash.h). They freeze the generators: the GSL
 // Mersenne Twister, the order of draws and the placement algorithm. A change here means
 // every seeded scene now starts differently; update the values only on purpose, and say
 // so in the commit message.

@@ -1,4 +1,4 @@
-// The one target-time check (core/target_time.h): what it refuses, with which words, and that
+// The one target-time check (core/numerics/target_time.h): what it refuses, with which words, and that
 // every backend's advance_to applies it before doing any work.
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <string>
 
 #include "core/backend_registry.h"
-#include "core/target_time.h"
+#include "core/numerics/target_time.h"
 #include "tests/support/test_scenes.h"
 
 namespace collide {

@@ -7,8 +7,8 @@
 #include <filesystem>
 #include <string>
 
-#include "core/scene_loader.h"
-#include "core/toml_fields.h"
+#include "core/scene/scene_loader.h"
+#include "core/scene/toml_fields.h"
 #include "tests/support/scratch_directory.h"
 #include "tests/support/test_scenes.h"
 

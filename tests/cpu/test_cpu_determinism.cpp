@@ -5,7 +5,7 @@
 #include <cmath>
 #include <random>
 
-#include "core/state_hash.h"
+#include "core/numerics/state_hash.h"
 #include "cpu/cpu_solver.h"
 #include "tests/support/test_scenes.h"
 

@@ -1,10 +1,10 @@
 // The [solver.NAME] tables of a suite file and the joining of outside solvers to a suite's
-// backends (validation/external_solvers.h): each mistake is refused with the file, line and key.
+// backends (validation/plan/external_solvers.h): each mistake is refused with the file, line and key.
 #include <gtest/gtest.h>
 
-#include "validation/external_solvers.h"
-#include "validation/statistics_bias_model.h"
-#include "validation/suite.h"
+#include "validation/plan/external_solvers.h"
+#include "validation/models/statistics_bias_model.h"
+#include "validation/plan/suite.h"
 
 namespace collide::validation {
 namespace {

@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <string>
 
-#include "core/scene_loader.h"
+#include "core/scene/scene_loader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);

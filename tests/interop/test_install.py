@@ -92,7 +92,7 @@ target_link_libraries(final_energy PRIVATE collide::reference)
 CONSUMER_MAIN = """// The exact solver on a scene file, from a program of its own: the final kinetic energy.
 #include <cstdio>
 #include "core/metrics.h"
-#include "core/scene_loader.h"
+#include "core/scene/scene_loader.h"
 #include "reference/event/event_solver.h"
 
 int main(int, char** argv) {

@@ -34,7 +34,7 @@ def test_run_applies_the_overrides_and_records_them(run_collide, tmp_path):
     assert "set       run.dt=2.5e-4; world.boundary=periodic" in r.stdout
     with h5py.File(out, "r") as f:
         assert f.attrs["scene_overrides"] == "run.dt=2.5e-4; world.boundary=periodic"
-        assert f.attrs["dt"] == "0.00025"  # round-trip text (core/number_text.h)
+        assert f.attrs["dt"] == "0.00025"  # round-trip text (core/numerics/number_text.h)
         scene_text = f.attrs["scene_text"]
     # The recorded scene is the changed one: running it alone repeats the run.
     assert "periodic" in scene_text and "0.00025" in scene_text

@@ -14,9 +14,9 @@
 #include <string>
 #include <thread>
 
-#include "core/provenance.h"
+#include "core/io/provenance.h"
 #include "tests/validation/test_backends.h"
-#include "validation/suite_runner.h"
+#include "validation/run/suite_runner.h"
 
 namespace {
 

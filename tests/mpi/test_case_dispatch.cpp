@@ -4,7 +4,7 @@
 
 #include <cstdlib>
 
-#include "validation/case_dispatch.h"
+#include "validation/run/case_dispatch.h"
 
 namespace collide::validation {
 namespace {

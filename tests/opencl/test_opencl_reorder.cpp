@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "core/numerics/phase_timer.h"
 #include "core/run_driver.h"
 #include "opencl_test_scenes.h"
 #include "tests/support/test_scenes.h"
@@ -60,7 +61,7 @@ TEST(OpenclReorder, ReorderOnAndOffGiveBitwiseIdenticalRuns) {
                     EXPECT_EQ(reordered.final_state.vx, never.final_state.vx);
                     EXPECT_EQ(reordered.final_state.vy, never.final_state.vy);
                     EXPECT_EQ(reordered.stats.contacts, never.stats.contacts);
-                    EXPECT_GT(reordered.stats.phase_seconds.count("reorder"), 0u) << "no reorder ran";
+                    EXPECT_GT(reordered.stats.phase_seconds.count(phase::reorder), 0u) << "no reorder ran";
                 }
             }
 }
@@ -98,7 +99,7 @@ TEST(OpenclReorder, SortIntervalZeroNeverReorders) {
     for (const char* grid : {"host", "device"}) {
         SCOPED_TRACE(grid);
         const RunResult never = run_opencl(c, options_for("float", grid, "0"));
-        EXPECT_EQ(never.stats.phase_seconds.count("reorder"), 0u);
+        EXPECT_EQ(never.stats.phase_seconds.count(phase::reorder), 0u);
         EXPECT_EQ(never.stats.steps, steps);
     }
 }

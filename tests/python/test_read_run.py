@@ -1,4 +1,4 @@
-# collide.read_run reads a run file through the C++ checked reader (core/run_reader.h): the
+# collide.read_run reads a run file through the C++ checked reader (core/io/run_reader.h): the
 # columns of the run schema come back as h5py reads them, and a damaged file is refused.
 import h5py
 import numpy as np

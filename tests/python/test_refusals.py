@@ -167,7 +167,7 @@ disks = [{ x = 2.0, y = 5.0, vx = 1e155, vy = 0.0, radius = 0.5, mass = 1.0 },
 def test_11_a_nonfinite_state_is_refused_with_the_clis_words(tmp_path, collide_exe, backend):
     # cpu: 1e155 is beyond float, so its state would hold Inf (the issue's "kinetic energy 0.0
     # beside nonfinite = 2"); step: the kinetic energy would overflow double although every disk
-    # is finite. Both backends now refuse the scene before it starts (core/representability.h),
+    # is finite. Both backends now refuse the scene before it starts (core/numerics/representability.h),
     # naming the quantity; Python raises the CLI's words. A state that breaks midway: below.
     scene_file = tmp_path / "huge_speeds.toml"
     scene_file.write_text(HUGE_SPEEDS)

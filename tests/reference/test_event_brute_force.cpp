@@ -30,7 +30,7 @@
 #include <vector>
 
 #include "core/particle_state.h"
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "reference/event/event_solver.h"
 #include "reference/plain_event_solver.h"
 #include "tests/support/state_difference.h"

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "core/metrics.h"
-#include "core/state_hash.h"
+#include "core/numerics/state_hash.h"
 #include "reference/step_solver.h"
 #include "tests/support/test_scenes.h"
 

@@ -1,5 +1,5 @@
 """validation/report/progress.py, the report's progress line: the same words as the C++ one
-(tests/core/test_progress_line.cpp holds core/progress_line.h to the same strings), in place on a
+(tests/core/test_progress_line.cpp holds core/io/progress_line.h to the same strings), in place on a
 terminal, quiet in a short log. Run by ctest (label unit) with pytest."""
 import io
 import os

@@ -10,7 +10,7 @@
 
 #include "core/backend_registry.h"
 #include "core/particle_state.h"
-#include "core/scene.h"
+#include "core/scene/scene.h"
 
 namespace collide::test {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "core/hdf5_handle.h"
+#include "core/io/hdf5_handle.h"
 
 namespace collide::test {
 

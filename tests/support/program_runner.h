@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "core/shell_quote.h"
+#include "core/io/shell_quote.h"
 #include "tests/support/scratch_directory.h"
 
 namespace collide::test {

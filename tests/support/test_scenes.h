@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "core/particle_state.h"
-#include "core/scene.h"
+#include "core/scene/scene.h"
 
 namespace collide::test {
 

@@ -1,7 +1,7 @@
 // Which checks apply to which scene: one test per rule of "Leave out what a scene does not need".
 #include <gtest/gtest.h>
 
-#include "validation/applicability.h"
+#include "validation/judge/applicability.h"
 
 namespace collide::validation {
 namespace {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -10,10 +11,10 @@
 
 #include "box2d/box2d_solver.h"
 #include "test_backends.h"
-#include "validation/case_isolation.h"
-#include "validation/backend_variant.h"
-#include "validation/case_plan.h"
-#include "validation/suite_runner.h"
+#include "validation/run/case_isolation.h"
+#include "validation/plan/backend_variant.h"
+#include "validation/plan/case_plan.h"
+#include "validation/run/suite_runner.h"
 
 namespace collide::validation {
 namespace {
@@ -214,10 +215,33 @@ TEST(BackendVariants, AllLeavesOutThePlainEventSolverWhichASuiteOrASceneCanName)
     EXPECT_EQ(names, (std::vector<std::string>{"event", "event-plain"}));
 }
 
-// The suite runs a backend's cases in workers that keep their process (runs_in_worker) only
-// where the registry marks the start-up as worth keeping: opencl, nothing else.
-TEST(BackendVariants, OnlyOpenclKeepsItsProcessBetweenCases) {
-    for (const BackendInfo& b : all_backends()) EXPECT_EQ(b.keeps_process, b.name == "opencl") << b.name;
+// Every runnable case goes to a worker process that runs case after case (runs_in_worker;
+// validation/run/case_isolation.h). A case's numbers must not depend on what its worker ran
+// before: one worker running every case in turn (--jobs 1) gives the same value for every
+// check, to the bit, as a worker per case (--jobs = the number of cases).
+TEST(BackendVariants, ACaseGivesTheSameNumbersWhateverItsWorkerRanBefore) {
+    Suite suite = suite_with_shipped({"all"});
+    suite.seeds = {1, 2};
+    const std::vector<BackendInfo> backends = all_backends();
+    auto run_with_jobs = [&](int jobs) {
+        RunnerOptions options;
+        options.output_dir = test::fresh_output_dir("worker_history_" + std::to_string(jobs));
+        options.jobs = jobs;
+        return run_suite(suite, backends, options);
+    };
+    const SuiteOutcome one_worker = run_with_jobs(1);
+    ASSERT_GE(one_worker.cases.size(), 10u);
+    const SuiteOutcome worker_each = run_with_jobs(int(one_worker.cases.size()));
+    ASSERT_EQ(one_worker.checks.size(), worker_each.checks.size());
+    for (std::size_t i = 0; i < one_worker.checks.size(); ++i) {
+        const CheckResult& a = one_worker.checks[i];
+        const CheckResult& b = worker_each.checks[i];
+        ASSERT_EQ(a.subject + a.check, b.subject + b.check);
+        EXPECT_EQ(a.status, b.status) << a.subject << " " << a.check;
+        if (std::isnan(a.value)) EXPECT_TRUE(std::isnan(b.value)) << a.subject << " " << a.check;
+        else EXPECT_EQ(a.value, b.value) << a.subject << " " << a.check;
+    }
+    for (const CaseResult& c : one_worker.cases) EXPECT_TRUE(runs_in_worker(c.spec) || !c.spec.left_out.empty());
 }
 
 }  // namespace

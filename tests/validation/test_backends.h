@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/backend_registry.h"
-#include "validation/suite.h"
+#include "validation/plan/suite.h"
 
 namespace collide::test {
 

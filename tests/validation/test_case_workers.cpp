@@ -15,9 +15,9 @@
 #include <thread>
 
 #include "test_backends.h"
-#include "validation/backend_variant.h"
-#include "validation/case_isolation.h"
-#include "validation/suite_runner.h"
+#include "validation/plan/backend_variant.h"
+#include "validation/run/case_isolation.h"
+#include "validation/run/suite_runner.h"
 
 namespace collide::test {
 namespace {
@@ -116,24 +116,14 @@ TEST(CaseWorkers, ACaseOverTheTimeLimitIsKilledAndTheNextOneRuns) {
     EXPECT_EQ(results.at("after").status, RunStatus::completed);
 }
 
-TEST(CaseWorkers, OnlyTheRunnableCasesOfABackendThatKeepsItsProcessGoToWorkers) {
+TEST(CaseWorkers, EveryRunnableCaseGoesToAWorkerAndALeftOutOneDoesNot) {
     CaseSpec spec;
-    BackendInfo opencl;
-    opencl.name = spec.backend = "opencl";
-    opencl.keeps_process = true;
-    EXPECT_TRUE(validation::runs_in_worker(spec, opencl));
-    // A variant is a copy of its base's entry (backend_variant.h), the property included.
-    validation::BackendVariant fast;
-    fast.base = "opencl", fast.label = spec.backend = "opencl[fast]";
-    EXPECT_TRUE(validation::runs_in_worker(spec, validation::variant_backend(opencl, fast)));
-    spec.left_out = "the backend refuses the scene";
-    EXPECT_FALSE(validation::runs_in_worker(spec, opencl));
-    spec.left_out.clear();
-    for (const char* other : {"cpu", "step", "event", "box2d[shipped]"}) {
-        BackendInfo info;
-        info.name = spec.backend = other;
-        EXPECT_FALSE(validation::runs_in_worker(spec, info)) << other;
+    for (const char* backend : {"opencl", "opencl[fast]", "cpu", "step", "event", "box2d[shipped]"}) {
+        spec.backend = backend;
+        EXPECT_TRUE(validation::runs_in_worker(spec)) << backend;
     }
+    spec.left_out = "the backend refuses the scene";
+    EXPECT_FALSE(validation::runs_in_worker(spec));
 }
 
 TEST(CaseWorkers, ASpecSurvivesItsRequestText) {

@@ -1,13 +1,13 @@
-// The observed order on the asymptotic range (validation/convergence_order.h) and the joint
-// fit of the stepped rules' bias constants (validation/bias_fit.h), on synthetic lines whose
+// The observed order on the asymptotic range (validation/compare/convergence_order.h) and the joint
+// fit of the stepped rules' bias constants (validation/models/bias_fit.h), on synthetic lines whose
 // answer is known.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "validation/bias_fit.h"
-#include "validation/convergence_order.h"
-#include "validation/statistics_bias_model.h"
+#include "validation/models/bias_fit.h"
+#include "validation/compare/convergence_order.h"
+#include "validation/models/statistics_bias_model.h"
 
 namespace collide::validation {
 namespace {

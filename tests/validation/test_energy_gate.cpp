@@ -1,5 +1,5 @@
 // The energy check of the stepped rules compares the measured drift with the drift the rule
-// itself predicts (validation/energy_loss_model.h). A bound derived that way must still catch
+// itself predicts (validation/models/energy_loss_model.h). A bound derived that way must still catch
 // defects: here the `step` solver runs a gas with a defect injected through the scene it is
 // given, while the check judges it as the scene the suite declares (e = 1). The honest rule
 // must pass the same check on the same scene.
@@ -9,11 +9,11 @@
 #include <cstdio>
 
 #include "core/run_driver.h"
-#include "core/scene_loader.h"
+#include "core/scene/scene_loader.h"
 #include "reference/step_solver.h"
-#include "validation/applicability.h"
-#include "validation/checks.h"
-#include "validation/tolerances.h"
+#include "validation/judge/applicability.h"
+#include "validation/judge/checks.h"
+#include "validation/judge/tolerances.h"
 
 namespace collide::validation {
 namespace {

@@ -1,4 +1,4 @@
-// Energy jumps attributed (validation/energy_jump.h): the kind of contact from hand-made states
+// Energy jumps attributed (validation/explain/energy_jump.h): the kind of contact from hand-made states
 // whose contacts and energies are known, and the worked example of docs/stepping-rules.md
 // ("Energy at e = 1") found by stepping the readable `step` rule.
 #include <gtest/gtest.h>
@@ -6,9 +6,9 @@
 #include <cmath>
 #include <string>
 
-#include "core/scene_loader.h"
+#include "core/scene/scene_loader.h"
 #include "reference/step_solver.h"
-#include "validation/energy_jump.h"
+#include "validation/explain/energy_jump.h"
 
 namespace collide::validation {
 namespace {

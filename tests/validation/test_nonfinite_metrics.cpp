@@ -8,8 +8,8 @@
 #include <limits>
 #include <string>
 
-#include "validation/checks.h"
-#include "validation/stability.h"
+#include "validation/judge/checks.h"
+#include "validation/judge/stability.h"
 
 namespace collide::validation {
 namespace {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "tests/support/test_scenes.h"
-#include "validation/phase_shift.h"
+#include "validation/compare/phase_shift.h"
 
 namespace collide::validation {
 namespace {

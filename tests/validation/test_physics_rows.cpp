@@ -1,4 +1,4 @@
-// "Reference against physics" (validation/physics_rows.h): the published references read from
+// "Reference against physics" (validation/compare/physics_rows.h): the published references read from
 // data/references, each row's computation against a hand-worked example, and injected errors
 // (pressure scaled by 1.01, one collision in a thousand dropped, restitution 0.999 where 1 is
 // claimed) that must make the right row fail while the exact solver passes.
@@ -9,12 +9,12 @@
 #include <fstream>
 #include <memory>
 
-#include "core/scene_loader.h"
+#include "core/scene/scene_loader.h"
 #include "reference/event/event_solver.h"
 #include "test_backends.h"
 #include "tests/support/test_scenes.h"
-#include "validation/physics_rows.h"
-#include "validation/suite_runner.h"
+#include "validation/compare/physics_rows.h"
+#include "validation/run/suite_runner.h"
 
 namespace collide::validation {
 namespace {

@@ -5,10 +5,10 @@
 
 #include <set>
 
-#include "core/scene_loader.h"
+#include "core/scene/scene_loader.h"
 #include "test_backends.h"
-#include "validation/case_plan.h"
-#include "validation/scene_parameters.h"
+#include "validation/plan/case_plan.h"
+#include "validation/plan/scene_parameters.h"
 
 namespace collide::validation {
 namespace {

@@ -3,8 +3,8 @@
 // synthetic pair that passes through its partner against one that bounces.
 #include <gtest/gtest.h>
 
-#include "validation/stability.h"
-#include "validation/tunnelling.h"
+#include "validation/judge/stability.h"
+#include "validation/judge/tunnelling.h"
 
 namespace collide::validation {
 namespace {

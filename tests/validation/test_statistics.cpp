@@ -4,8 +4,8 @@
 #include <cmath>
 #include <random>
 
-#include "validation/statistics.h"
-#include "validation/tolerances.h"
+#include "validation/judge/statistics.h"
+#include "validation/judge/tolerances.h"
 
 namespace collide::validation {
 namespace {

@@ -1,12 +1,12 @@
-// The stepped rules' bias model in Z and in the collision rate (validation/statistics_bias_model.h)
-// and the many-body checks that use it (validation/reference_comparison.cpp).
+// The stepped rules' bias model in Z and in the collision rate (validation/models/statistics_bias_model.h)
+// and the many-body checks that use it (validation/compare/reference_comparison.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "validation/observables.h"
-#include "validation/reference_comparison.h"
-#include "validation/statistics_bias_model.h"
+#include "validation/judge/observables.h"
+#include "validation/compare/reference_comparison.h"
+#include "validation/models/statistics_bias_model.h"
 
 namespace collide::validation {
 namespace {

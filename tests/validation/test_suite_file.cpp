@@ -7,7 +7,7 @@
 #include <set>
 
 #include "test_backends.h"
-#include "validation/case_plan.h"
+#include "validation/plan/case_plan.h"
 
 namespace collide::validation {
 namespace {

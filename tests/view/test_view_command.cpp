@@ -6,7 +6,7 @@
 #include <filesystem>
 
 #include "core/backend_registry.h"
-#include "core/scene_loader.h"
+#include "core/scene/scene_loader.h"
 #include "tests/support/program_runner.h"
 #include "tests/support/scratch_directory.h"
 #include "tests/support/test_scenes.h"

@@ -78,7 +78,7 @@ CHECKSUM_LINE = re.compile(rb'checksum = "crc32:([0-9a-f]{8})"\n')
 
 def verified_record_text(path, data):
     """The text of a case record after its first line, which holds the CRC-32 of the rest
-    (validation/case_result.cpp writes it); a record without it, or whose contents no longer
+    (validation/run/case_result.cpp writes it); a record without it, or whose contents no longer
     match it, is damaged and is not drawn."""
     line = CHECKSUM_LINE.match(data)
     if not line:
@@ -275,7 +275,7 @@ def statistical_points(summary, scene, observable):
 
 
 # ---------------------------------------------------------------------------------------------
-# Convergence orders: validate fits them (validation/convergence_order.h); here they are named
+# Convergence orders: validate fits them (validation/compare/convergence_order.h); here they are named
 
 def floor_kind(summary, backend):
     """What sets an error floor: rounding for a float stepping rule, the solver's own tolerances

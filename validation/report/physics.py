@@ -1,6 +1,6 @@
 """The report's "Reference against physics" section: why the reference solver itself is right.
 
-Every number here comes from summary.json's "physics" object (validation/physics_rows.cpp
+Every number here comes from summary.json's "physics" object (validation/compare/physics_rows.cpp
 computes the rows, data/references/*.toml holds the published values and their citations); this
 module only lays them out and draws the equation-of-state figure.
 """

@@ -1,4 +1,4 @@
-"""The report's progress line: the Python twin of core/progress_line.h (the one progress display
+"""The report's progress line: the Python twin of core/io/progress_line.h (the one progress display
 of every long command), with the same wording. On a terminal one line on stderr is rewritten in
 place; elsewhere (a log, CI) nothing is printed for the first `log_interval` seconds and then a
 plain line at most every `log_interval` seconds. The time left is elapsed·(1 − f)/f for a

@@ -1,4 +1,4 @@
-"""The report's twin of core/output_file.h: one guard and one atomic write for every file the
+"""The report's twin of core/io/output_file.h: one guard and one atomic write for every file the
 Python side of collide writes (the report's HTML and Markdown, numbers written into a page).
 
 check_output_path(path) accepts a new file in an existing, writable directory, an existing

@@ -58,7 +58,7 @@ def dt_text(summary, case):
 
 
 def unexpected(summary):
-    """The cases a stability suite does not expect (validation/stability.h, unexpected_outcomes):
+    """The cases a stability suite does not expect (validation/judge/stability.h, unexpected_outcomes):
     unclassified, the exact solver not stable, or a crash."""
     out = []
     for c in summary["cases"]:

@@ -1,0 +1,320 @@
+#include "validation/compare/reference_comparison.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <optional>
+#include <limits>
+#include <sstream>
+
+#include "validation/judge/check_table.h"
+#include "validation/judge/observables.h"
+#include "validation/judge/statistics.h"
+#include "validation/models/statistics_bias_model.h"
+
+namespace collide::validation {
+
+double trajectory_error(const CaseResult& a, const CaseResult& ref, const Scene*) {
+    if (a.trajectory.empty() || a.trajectory.size() != ref.trajectory.size()) return std::nan("");
+    double r_min = std::numeric_limits<double>::infinity();
+    for (double r : ref.initial.radius) r_min = std::min(r_min, r);
+    double worst = 0;
+    for (std::size_t k = 0; k < a.trajectory.size(); ++k) {
+        const Snapshot& s = a.trajectory[k];
+        const Snapshot& t = ref.trajectory[k];
+        if (s.x.size() != t.x.size() || std::fabs(a.trajectory_time[k] - ref.trajectory_time[k]) > 1e-9)
+            return std::nan("");
+        for (std::size_t i = 0; i < s.x.size(); ++i) {
+            const double d = std::hypot(s.x[i] - t.x[i], s.y[i] - t.y[i]);
+            if (!(d <= worst)) worst = d;  // also carries a NaN through
+        }
+    }
+    return worst / r_min;
+}
+
+namespace {
+
+// The replicates of one sweep group and of the matching reference group.
+struct Group {
+    std::string id;
+    std::vector<const CaseResult*> cases;
+};
+
+CheckResult make_check(const Group& g, const std::string& check) {
+    CheckResult c;
+    c.subject = g.id;
+    c.scene = g.cases.front()->spec.scene;
+    c.backend = g.cases.front()->spec.backend;
+    c.check = check;
+    return c;
+}
+
+void judge_at_most(CheckResult& c, double value, double tolerance, const std::string& what) {
+    c.value = value;
+    c.tolerance = tolerance;
+    c.status = value <= tolerance ? CheckStatus::pass : CheckStatus::fail;
+    if (c.status == CheckStatus::fail) {
+        std::ostringstream s;
+        s << what << " = " << value << " exceeds the tolerance " << tolerance;
+        c.detail = s.str();
+    }
+}
+
+// A case's reference runs share its scene and scene-parameter values.
+std::string reference_key(const CaseSpec& spec) { return spec.scene + "|" + parameter_label(spec); }
+
+std::vector<double> replicate_values(const Group& g, double (*value)(const CaseResult&)) {
+    std::vector<double> out;
+    for (const CaseResult* r : g.cases)
+        if (r->finished()) out.push_back(value(*r));
+    return out;
+}
+
+double mean_compressibility(const CaseResult& r) { return mean_and_error(r.compressibility).mean; }
+double collision_rate(const CaseResult& r) {
+    // Each pair collision involves two disks: collisions per disk per time unit.
+    return r.disks && r.duration > 0 ? 2.0 * double(r.contacts) / (double(r.disks) * r.duration) : std::nan("");
+}
+
+std::vector<double> pooled_speeds(const Group& g) {
+    std::vector<double> out;
+    for (const CaseResult* r : g.cases)
+        if (r->finished())
+            for (std::size_t i = 0; i < r->final_state.vx.size(); ++i)
+                out.push_back(std::hypot(r->final_state.vx[i], r->final_state.vy[i]));
+    return out;
+}
+
+// The plain check of equal means: |mu - mu_ref| / sqrt(se^2 + se_ref^2) <= z_max. With
+// `expected` (a stepped backend: statistics_bias_model.h) the same distance is measured from
+// the rule's predicted difference instead, |(mu - mu_ref) - predicted| / sqrt(se^2 + se_ref^2
+// + u^2) <= z_max, and the prediction is recorded in the check.
+// One observable's replicate means on the two sides: what z_check judges and what
+// statistical_difference records, computed once.
+struct ReplicateMeans {
+    MeanAndError a, b;  // the backend's, the reference's
+};
+ReplicateMeans replicate_means(const Group& g, const Group& ref, double (*value)(const CaseResult&)) {
+    return {mean_and_error(replicate_values(g, value)), mean_and_error(replicate_values(ref, value))};
+}
+
+void z_check(CheckResult& c, const ReplicateMeans& m, const Group& ref, double z_max, const std::string& what,
+             const std::function<BiasPrediction(const MeanAndError& nu_ref)>& expected = {}) {
+    const MeanAndError& a = m.a;
+    const MeanAndError& b = m.b;
+    if (a.count < 2 || b.count < 2) {
+        c.status = CheckStatus::left_out;
+        c.detail = "needs at least 2 finished replicates on both sides for an error bar";
+        return;
+    }
+    std::ostringstream s;
+    s << what << " " << a.mean << " +- " << a.standard_error << " vs reference " << b.mean << " +- "
+      << b.standard_error;
+    if (expected) {
+        const BiasPrediction p = expected(mean_and_error(replicate_values(ref, collision_rate)));
+        const double se = std::hypot(a.standard_error, b.standard_error);
+        c.predicted = p.value;
+        c.predicted_uncertainty = p.uncertainty;
+        s << "; difference " << std::showpos << a.mean - b.mean << std::noshowpos << " +- " << se
+          << ", the stepped rule predicts " << std::showpos << p.value << std::noshowpos << " +- "
+          << p.uncertainty << " (docs/validation.md)";
+        judge_at_most(c, bias_z_score(a.mean - b.mean, se, p), z_max, "distance from the predicted bias");
+    } else {
+        judge_at_most(c, z_score(a, b), z_max, "z-score");
+    }
+    c.detail = c.status == CheckStatus::fail ? c.detail + " (" + s.str() + ")" : s.str();
+}
+
+// The numbers behind a z_check, for the summary: the report draws and states them (never by
+// reading the check's prose). Empty when the check has no error bar (fewer than 2 replicates).
+std::optional<StatisticalDifference> statistical_difference(const ReplicateMeans& m, const CheckResult& check,
+                                                            double z_max) {
+    const MeanAndError& a = m.a;
+    const MeanAndError& b = m.b;
+    if (a.count < 2 || b.count < 2 || !std::isfinite(a.mean) || !std::isfinite(b.mean) || b.mean == 0)
+        return std::nullopt;
+    StatisticalDifference d;
+    d.mean = a.mean;
+    d.standard_error = a.standard_error;
+    d.reference = b.mean;
+    d.reference_standard_error = b.standard_error;
+    d.replicates = a.count;
+    d.reference_replicates = b.count;
+    const double combined = std::hypot(a.standard_error, b.standard_error);
+    d.relative = (a.mean - b.mean) / b.mean;
+    d.relative_standard_error = combined / std::fabs(b.mean);
+    d.sigmas = z_score(a, b);
+    d.resolved = d.sigmas >= resolved_standard_errors;
+    d.upper_limit_95 = std::fabs(d.relative) + 1.96 * d.relative_standard_error;  // one-sided bound of |relative|
+    double judged = combined;
+    if (!std::isnan(check.predicted)) {
+        d.predicted = check.predicted;
+        d.predicted_uncertainty = check.predicted_uncertainty;
+        judged = std::hypot(combined, check.predicted_uncertainty);
+    }
+    d.detectable = z_max * judged / std::fabs(b.mean);
+    return d;
+}
+
+}  // namespace
+
+Comparisons compare_with_reference(const Suite& suite, const std::vector<CaseResult>& results,
+                                   const std::vector<SceneFeatures>& features,
+                                   const std::map<std::string, Tolerances>& tolerances) {
+    Comparisons out;
+    // Groups in first-seen order, so the report follows the suite's order.
+    std::vector<Group> groups;
+    for (const CaseResult& r : results) {
+        const std::string id = group_id(r.spec);
+        auto it = std::find_if(groups.begin(), groups.end(), [&](const Group& g) { return g.id == id; });
+        if (it == groups.end()) groups.push_back({id, {&r}});
+        else it->cases.push_back(&r);
+    }
+    // All reference cases of a scene as one group (trajectory scenes have one per dt).
+    std::map<std::string, Group> reference_groups;
+    for (const Group& g : groups) {
+        if (!g.cases.front()->spec.reference) continue;
+        Group& merged = reference_groups[reference_key(g.cases.front()->spec)];
+        if (merged.id.empty()) merged.id = g.id;
+        merged.cases.insert(merged.cases.end(), g.cases.begin(), g.cases.end());
+    }
+    auto reference_group = [&](const std::string& key) -> const Group* {
+        auto it = reference_groups.find(key);
+        return it == reference_groups.end() ? nullptr : &it->second;
+    };
+    std::map<std::pair<std::string, std::string>, WorkPrecisionLine> lines;
+    std::vector<std::pair<std::string, std::string>> line_order;
+
+    for (const Group& g : groups) {
+        const CaseSpec& spec = g.cases.front()->spec;
+        const SuiteScene& entry = suite.scenes[spec.scene_index];
+        if (entry.comparison == Comparison::none || spec.reference) continue;
+        const Tolerances& tol = tolerances.at(spec.backend);
+        const Group* ref = reference_group(reference_key(spec));
+        const bool left_out_case = g.cases.front()->status == RunStatus::left_out;
+        const std::vector<std::string> names =
+            check_names(entry.comparison == Comparison::trajectory ? CheckKind::trajectory : CheckKind::statistics);
+        std::string skip;
+        if (left_out_case) skip = "case left out: backend cannot run this scene";
+        else if (!ref) skip = "the reference backend '" + suite.reference + "' is not part of this run";
+        else if (ref->cases.front()->status == RunStatus::left_out)
+            skip = "the reference backend cannot run this scene: " + ref->cases.front()->diagnostic;
+        if (!skip.empty()) {
+            for (const auto& n : names) {
+                CheckResult c = make_check(g, n);
+                c.detail = skip;
+                out.checks.push_back(c);
+            }
+            continue;
+        }
+
+        // Work-precision point of this group: its mean run time and mean error.
+        WorkPrecisionPoint point;
+        point.group = g.id;
+        point.dt = g.cases.front()->dt;
+        point.substeps = g.cases.front()->substeps;
+        point.iterations = spec.iterations.value_or(0);
+        std::vector<double> seconds, errors;
+
+        if (entry.comparison == Comparison::trajectory) {
+            double worst = 0;
+            for (const CaseResult* r : g.cases) {
+                const CaseResult* partner = nullptr;
+                for (const CaseResult* q : ref->cases)
+                    if (q->spec.seed == r->spec.seed && (!q->spec.dt || q->spec.dt == r->spec.dt)) partner = q;
+                double e = std::nan("");
+                if (r->finished() && partner && partner->finished()) e = trajectory_error(*r, *partner);
+                if (!(e <= worst)) worst = e;
+                if (r->finished() && std::isfinite(e)) {
+                    seconds.push_back(r->wall_seconds / r->duration);
+                    errors.push_back(e);
+                }
+            }
+            CheckResult c = make_check(g, "trajectory_error");
+            if (std::isnan(worst)) {
+                c.status = CheckStatus::fail;
+                c.value = worst;
+                c.tolerance = tol.trajectory_error;
+                c.detail = "no comparable trajectory (the case or its reference did not finish, or too many disks to record)";
+            } else {
+                judge_at_most(c, worst, tol.trajectory_error, "maximum position error / r_min");
+            }
+            out.checks.push_back(c);
+        } else {
+            // Stepped rules differ from the exact dynamics by a derived first-order bias: their
+            // statistics are judged against it (statistics_bias_model.h); every other backend
+            // (box2d is not the stepped rule) against equal means.
+            std::function<BiasPrediction(const MeanAndError&)> pressure_model, rate_model;
+            if (follows_stepping_rules(spec.backend)) {
+                const double h = g.cases.front()->dt / std::max(1, g.cases.front()->substeps);
+                pressure_model = [h](const MeanAndError& nu) {
+                    return predicted_pressure_bias(nu.mean, nu.standard_error, h, contact_shell);
+                };
+                rate_model = [h](const MeanAndError& nu) {
+                    return predicted_collision_rate_bias(nu.mean, nu.standard_error, h);
+                };
+            }
+            CheckResult pressure = make_check(g, "pressure");
+            const auto pressure_left_out_why = pressure_left_out(features[spec.scene_index]);
+            const ReplicateMeans z = pressure_left_out_why ? ReplicateMeans{} : replicate_means(g, *ref, mean_compressibility);
+            if (pressure_left_out_why) pressure.detail = *pressure_left_out_why;
+            else z_check(pressure, z, *ref, tol.statistics_z, "Z = P/(rho kT) (contact-shell estimator)", pressure_model);
+            out.checks.push_back(pressure);
+            CheckResult rate = make_check(g, "collision_rate");
+            const ReplicateMeans nu = replicate_means(g, *ref, collision_rate);
+            z_check(rate, nu, *ref, tol.statistics_z, "collisions per disk per time", rate_model);
+            out.checks.push_back(rate);
+            if (pressure.status != CheckStatus::left_out) point.pressure = statistical_difference(z, pressure, tol.statistics_z);
+            if (rate.status != CheckStatus::left_out) point.collision_rate = statistical_difference(nu, rate, tol.statistics_z);
+            CheckResult speed = make_check(g, "speed_distribution");
+            const auto ks = ks_two_sample(pooled_speeds(g), pooled_speeds(*ref));
+            speed.value = ks.p_value;
+            speed.tolerance = tol.speed_ks_p_value;
+            speed.comparison = ">=";
+            speed.status = ks.p_value >= tol.speed_ks_p_value ? CheckStatus::pass : CheckStatus::fail;
+            std::ostringstream s;
+            s << "KS statistic D = " << ks.statistic << ", p = " << ks.p_value;
+            speed.detail = speed.status == CheckStatus::pass ? s.str() : s.str() + " below " + std::to_string(tol.speed_ks_p_value);
+            out.checks.push_back(speed);
+            // The point's error is the difference of the replicate means (what the check
+            // judges and the figures draw), with its combined standard error.
+            if (point.pressure)
+                for (const CaseResult* r : g.cases)
+                    if (r->finished()) seconds.push_back(r->wall_seconds / r->duration);
+        }
+        if (point.pressure && !seconds.empty()) {
+            point.error = std::fabs(point.pressure->relative);
+            point.error_standard_error = point.pressure->relative_standard_error;
+            point.replicates = point.pressure->replicates;
+        } else if (!errors.empty()) {
+            const auto e = mean_and_error(errors);
+            point.error = e.mean;
+            point.error_standard_error = e.standard_error;
+            point.replicates = errors.size();
+        } else {
+            continue;  // nothing measured: no point
+        }
+        point.seconds_per_time_unit = mean_and_error(seconds).mean;
+        const auto key = std::make_pair(spec.scene, spec.backend);
+        if (!lines.count(key)) {
+            line_order.push_back(key);
+            lines[key] = {spec.scene, spec.backend,
+                          entry.comparison == Comparison::trajectory ? "trajectory error / r_min"
+                                                                     : "|Z - Z_ref| / Z_ref",
+                          {}, {}};
+        }
+        lines[key].points.push_back(point);
+    }
+    for (const auto& key : line_order) {
+        WorkPrecisionLine line = lines[key];
+        std::vector<ErrorPoint> points;
+        // The rule's effective step is dt / substeps (the integrate-first rule sub-steps).
+        for (const auto& p : line.points)
+            points.push_back({p.dt / std::max(1, p.substeps), p.error, p.error_standard_error});
+        line.order = asymptotic_order(points);
+        out.work_precision.push_back(line);
+    }
+    return out;
+}
+
+}  // namespace collide::validation

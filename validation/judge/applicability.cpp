@@ -1,0 +1,38 @@
+#include "validation/judge/applicability.h"
+
+#include <sstream>
+
+namespace collide::validation {
+
+std::optional<std::string> momentum_left_out(const SceneFeatures& f) {
+    if (f.reflecting_walls) return "reflecting walls exchange momentum with the disks";
+    if (f.gravity) return "gravity is an external force";
+    if (f.damping) return "damping (drag) removes momentum";
+    if (f.stones) return "stones have infinite mass and absorb momentum";
+    return std::nullopt;
+}
+
+EnergyCheck energy_check(const SceneFeatures& f) {
+    std::ostringstream why;
+    if (f.restitution != 1) why << "restitution e = " << f.restitution << " < 1 dissipates energy";
+    else if (f.reflecting_walls && f.wall_restitution != 1)
+        why << "wall restitution " << f.wall_restitution << " < 1 dissipates energy";
+    else if (f.damping) why << "damping dissipates energy";
+    else if (f.friction) why << "Coulomb friction dissipates energy";
+    else if (f.moving_stones) why << "moving stones do work on the disks";
+    if (!why.str().empty()) return {EnergyKind::none, why.str()};
+    if (f.gravity) return {EnergyKind::total, "gravity: total (kinetic + potential) energy is checked"};
+    return {EnergyKind::kinetic, ""};
+}
+
+std::optional<std::string> wall_penetration_left_out(const SceneFeatures& f) {
+    if (!f.reflecting_walls) return "periodic boundaries: there are no walls";
+    return std::nullopt;
+}
+
+std::optional<std::string> pressure_left_out(const SceneFeatures& f) {
+    if (!f.uniform_radius) return "polydisperse disks: the contact-value pressure needs one diameter";
+    return std::nullopt;
+}
+
+}  // namespace collide::validation

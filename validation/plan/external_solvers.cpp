@@ -1,0 +1,94 @@
+#include "validation/plan/external_solvers.h"
+
+#include <algorithm>
+
+#include "core/scene/toml_fields.h"
+#include "validation/plan/solver_tables.h"
+#include "validation/models/statistics_bias_model.h"
+
+namespace collide::validation {
+namespace {
+
+// The share of a case's time limit one program call may take: a case calls the program for
+// its warm-up and again for the timed run, and the program's own limit must fire first so
+// that the fault names the solver rather than the whole case.
+constexpr double call_share_of_case_limit = 0.45;
+
+[[noreturn]] void fail(const std::string& file, const toml::node& node, const std::string& where, const std::string& expected) {
+    throw SuiteError(location(file, int(node.source().begin.line)) + where + ": expected " + expected);
+}
+
+std::string string_key(const toml::table& t, const std::string& key, const std::string& file, const std::string& where) {
+    const toml::node* node = t.get(key);
+    if (!node) return "";
+    if (!node->is_string() || node->value<std::string>()->empty()) fail(file, *node, where + "." + key, "a non-empty string");
+    return *node->value<std::string>();
+}
+
+}  // namespace
+
+std::vector<external::ExternalSolverSpec> read_solver_tables(const toml::table& root, const std::string& file,
+                                                             const std::string& dir) {
+    std::vector<external::ExternalSolverSpec> out;
+    const toml::node* node = root.get("solver");
+    if (!node) return out;
+    const toml::table* table = node->as_table();
+    if (!table) fail(file, *node, "solver", "a table of [solver.NAME] tables");
+    for (const auto& [key, sub] : *table) {
+        const std::string name(key.str());
+        const std::string where = "solver." + name;
+        if (const std::string why = external::solver_name_problem(name); !why.empty()) fail(file, sub, where, why);
+        const toml::table* t = sub.as_table();
+        if (!t) fail(file, sub, where, "a table with command = \"...\" or python = \"module:Class\"");
+        for (const auto& [k, v] : *t)
+            if (k.str() != "command" && k.str() != "python" && k.str() != "rule")
+                fail(file, v, where + "." + std::string(k.str()), "no such key here (allowed: command, python, rule)");
+        external::ExternalSolverSpec spec;
+        spec.name = name;
+        spec.command = string_key(*t, "command", file, where);
+        spec.python_class = string_key(*t, "python", file, where);
+        spec.rule = string_key(*t, "rule", file, where);
+        spec.directory = dir;
+        spec.origin = file + ":" + std::to_string(sub.source().begin.line);
+        if (spec.command.empty() == spec.python_class.empty())
+            fail(file, sub, where, "either command = \"...\" (a program) or python = \"module:Class\", not both or neither");
+        if (!spec.python_class.empty() && spec.python_class.find(':') == std::string::npos)
+            fail(file, *t->get("python"), where + ".python", "\"module:Class\" or \"file.py:Class\"");
+        if (const std::string why = external::rule_problem(spec.rule); !why.empty())
+            fail(file, *t->get("rule"), where + ".rule", why);
+        // (the checks above, with each key's line, are those of external::spec_problem)
+        out.push_back(std::move(spec));
+    }
+    return out;
+}
+
+void add_solvers(Suite& suite, const std::vector<external::ExternalSolverSpec>& solvers) {
+    for (const auto& spec : solvers) {
+        const bool taken = std::any_of(suite.solvers.begin(), suite.solvers.end(),
+                                       [&](const auto& s) { return s.name == spec.name; });
+        if (taken) throw SuiteError(spec.origin + ": a solver named '" + spec.name + "' is already in the suite");
+        suite.solvers.push_back(spec);
+        const bool all = suite.backends.size() == 1 && suite.backends[0] == "all";
+        if (!all) suite.backends.push_back(spec.name);
+    }
+}
+
+std::vector<BackendInfo> backends_with_solvers(const Suite& suite, std::vector<BackendInfo> built_in,
+                                               const PythonRunner& python) {
+    std::vector<std::string> stepped;
+    for (external::ExternalSolverSpec spec : suite.solvers) {
+        const auto clash = [&](const std::string& n) { return n == spec.name; };
+        if (std::any_of(built_in.begin(), built_in.end(), [&](const BackendInfo& b) { return clash(b.name); }) ||
+            std::any_of(suite.variants.begin(), suite.variants.end(), [&](const auto& v) { return clash(v.label); }))
+            throw SuiteError(spec.origin + ": '" + spec.name + "' is the name of a backend already; choose another");
+        if (!spec.python_class.empty())
+            spec.command = shell_quote(python.python) + " " + shell_quote(python.runner) + " " + shell_quote(spec.python_class);
+        spec.call_time_limit = call_share_of_case_limit * suite.time_limit_seconds;
+        if (!spec.rule.empty()) stepped.push_back(spec.name);
+        built_in.push_back(external::external_backend(spec));
+    }
+    set_outside_stepping_rules(stepped);
+    return built_in;
+}
+
+}  // namespace collide::validation

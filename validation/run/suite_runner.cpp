@@ -1,0 +1,287 @@
+#include "validation/run/suite_runner.h"
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <thread>
+#include <sstream>
+
+#include "validation/plan/backend_variant.h"
+#include "validation/run/case_execution.h"
+#include "validation/run/case_isolation.h"
+#include "core/io/hdf5_handle.h"
+#include "core/io/output_file.h"
+#include "core/scene/scene_loader.h"
+#include "validation/run/progress.h"
+#include "validation/plan/scene_parameters.h"
+#include "validation/summary/summary_writer.h"
+
+namespace collide::validation {
+
+std::size_t SuiteOutcome::count(CheckStatus s) const {
+    std::size_t n = 0;
+    for (const auto& c : checks) n += c.status == s;
+    return n;
+}
+
+std::size_t SuiteOutcome::physics_failures() const {
+    return std::size_t(std::count_if(physics.rows.begin(), physics.rows.end(),
+                                     [](const PhysicsRow& r) { return r.verdict == PhysicsVerdict::fail; }));
+}
+
+namespace {
+
+// The scene of every (scene, parameter point) of the suite, built before any case runs so that
+// a sweep path that does not exist, or a value a scene rule rejects, stops the suite at once.
+// Keyed by scene index and parameter_label; the features decide which checks apply.
+struct CaseScenes {
+    std::map<std::pair<std::size_t, std::string>, Scene> scenes;
+    std::map<std::pair<std::size_t, std::string>, SceneFeatures> features;
+
+    CaseScenes(const Suite& suite, const std::vector<Scene>& base) {
+        for (std::size_t s = 0; s < suite.scenes.size(); ++s)
+            for (const auto& point : parameter_points(suite.scenes[s])) {
+                CaseSpec probe;
+                probe.parameters = point;
+                const auto key = std::make_pair(s, parameter_label(probe));
+                Scene scene = scene_with_parameters(base[s], point);
+                try {
+                    features[key] = scene_features(scene, generate_initial_state(scene));
+                } catch (const SceneError& e) {
+                    if (point.empty()) throw;
+                    throw SuiteError("[[scene]] " + suite.scenes[s].name + " with " + key.second + ": " + e.what());
+                }
+                scenes.emplace(key, std::move(scene));
+            }
+    }
+    const Scene& scene(const CaseSpec& c) const { return scenes.at({c.scene_index, parameter_label(c)}); }
+    const SceneFeatures& feature(const CaseSpec& c) const { return features.at({c.scene_index, parameter_label(c)}); }
+};
+
+// A suite's overrides (dt, duration, output_interval) obey the rules a scene file does: a dt
+// that does not divide the output interval would stamp t = 0.1 on the state at t = 0.0999.
+void check_case_run_settings(const Suite& suite, const std::vector<Scene>& scenes, const std::vector<CaseSpec>& specs) {
+    for (const CaseSpec& spec : specs) {
+        const SuiteScene& entry = suite.scenes[spec.scene_index];
+        const Scene scene = case_scene(scenes[spec.scene_index], entry, spec);
+        const std::string problem = run_settings_problem(scene.run);
+        if (problem.empty()) continue;
+        std::ostringstream msg;
+        msg << (suite.source_path.empty() ? suite.name : suite.source_path);
+        if (entry.line) msg << ":" << entry.line;
+        msg << ": [[scene]] " << entry.name << " with dt = " << scene.run.dt << ", duration = " << scene.run.duration
+            << ", output_interval = " << scene.run.output_interval << ": " << problem;
+        throw SuiteError(msg.str());
+    }
+}
+
+// The reference run a case is classified against: same scene, parameters and seed, and the
+// same dt when the reference ran per dt (trajectory scenes).
+const CaseResult* reference_for(const CaseResult& r, const std::vector<CaseResult>& all) {
+    const CaseResult* found = nullptr;
+    for (const CaseResult& q : all)
+        if (q.spec.reference && q.spec.scene_index == r.spec.scene_index && q.spec.seed == r.spec.seed &&
+            q.spec.parameters == r.spec.parameters && (!q.spec.dt || q.spec.dt == r.spec.dt))
+            found = &q;
+    return found;
+}
+
+// Cases that already have a readable result file from an earlier run (for --resume), whose
+// HDF5 file is complete too (a truncated one, e.g. after a full disk, makes the case run again).
+std::map<std::string, CaseResult> finished_results(const std::vector<CaseSpec>& specs, const std::string& output_dir,
+                                                   std::FILE* progress) {
+    std::map<std::string, CaseResult> done;
+    for (const CaseSpec& spec : specs) {
+        const std::string path = result_path(output_dir + "/cases", spec.id);
+        if (!std::filesystem::exists(path)) continue;
+        try {
+            CaseResult result = read_case_result(path);
+            const std::string problem = case_files_problem(result, output_dir);
+            if (!problem.empty()) throw std::runtime_error(problem);
+            done.emplace(spec.id, std::move(result));
+        } catch (const std::exception& e) {
+            // An unreadable result counts as not finished: the case runs again.
+            if (progress) std::fprintf(progress, "resume: running %s again: %s\n", spec.id.c_str(), e.what());
+        }
+    }
+    return done;
+}
+
+// An advisory lock (flock) on OUT/.lock, held until the suite is written: a second `collide
+// validate` into the same directory would remove and rewrite the first one's case files under
+// it. The holder's process id is written in the file, so the refusal can name it. The kernel
+// releases the lock when the holder exits, however it ends (a SIGKILL too).
+class OutputDirectoryLock {
+public:
+    explicit OutputDirectoryLock(const std::string& dir) : path_(dir + "/.lock") {
+        fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+        if (fd_ < 0) throw std::runtime_error(path_ + ": cannot create the lock file (" + std::strerror(errno) + ")");
+        if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+            const std::string holder = holder_pid();
+            ::close(fd_);
+            throw std::runtime_error(dir + ": another `collide validate` (process " + holder +
+                                     ") is writing into this directory; wait for it or choose another --out");
+        }
+        const std::string pid = std::to_string(::getpid()) + "\n";
+        if (::ftruncate(fd_, 0) != 0 || ::pwrite(fd_, pid.data(), pid.size(), 0) < 0) {}  // the lock is what counts
+    }
+    ~OutputDirectoryLock() { ::close(fd_); }
+    OutputDirectoryLock(const OutputDirectoryLock&) = delete;
+    OutputDirectoryLock& operator=(const OutputDirectoryLock&) = delete;
+
+private:
+    std::string holder_pid() const {
+        char text[32] = {};
+        const ssize_t n = ::pread(fd_, text, sizeof text - 1, 0);
+        std::string pid(text, n > 0 ? std::size_t(n) : 0);
+        while (!pid.empty() && (pid.back() == '\n' || pid.back() == ' ')) pid.pop_back();
+        return pid.empty() ? "unknown" : pid;
+    }
+    std::string path_;
+    int fd_ = -1;
+};
+
+// One outcome per case (stability.h), and a `stability` check per case so that the check
+// table, the JUnit file and the exit code show the unstable cases too.
+void classify_all(SuiteOutcome& outcome, const CaseScenes& case_scenes, const std::map<std::string, Tolerances>& tolerances) {
+    for (const CaseResult& r : outcome.cases) {
+        const Classification c = classify(r, reference_for(r, outcome.cases), case_scenes.feature(r.spec),
+                                          tolerances.at(r.spec.backend));
+        outcome.classifications.push_back(c);
+        CheckResult check;
+        check.subject = r.spec.id;
+        check.scene = r.spec.scene;
+        check.backend = r.spec.backend;
+        check.check = "stability";
+        check.status = c.outcome == Outcome::stable ? CheckStatus::pass
+                       : c.outcome == Outcome::left_out ? CheckStatus::left_out : CheckStatus::fail;
+        check.detail = std::string(to_string(c.outcome)) + ": " + c.reason;
+        outcome.checks.push_back(check);
+    }
+}
+
+// Every place the suite writes is checked before the first case runs (core/io/output_file.h):
+// a FIFO, a device or a link to nothing named summary.json is refused now, not after an hour.
+void check_output_places(const std::string& dir, const std::vector<CaseSpec>& specs, bool hdf5) {
+    namespace fs = std::filesystem;
+    check_output_directory(dir);
+    for (const char* sub : {"/cases", "/runs"}) check_output_directory(dir + sub);
+    if (!fs::is_directory(dir)) return;  // created empty: nothing in it to refuse
+    for (const char* file : {"/summary.json", "/junit.xml"}) check_output_path(dir + file);
+    for (const CaseSpec& spec : specs) {
+        if (fs::is_directory(dir + "/cases")) check_output_path(result_path(dir + "/cases", spec.id));
+        if (hdf5 && fs::is_directory(dir + "/runs")) check_output_path(dir + "/runs/" + spec.id + ".h5");
+    }
+}
+
+}  // namespace
+
+int default_jobs() { return std::max(1u, std::thread::hardware_concurrency()); }
+
+bool runs_in_worker(const CaseSpec& spec) { return spec.left_out.empty(); }
+
+SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& available, const RunnerOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<BackendInfo> backends = select_backends(suite, available);
+    const std::vector<Scene> scenes = load_suite_scenes(suite);  // bad scene files fail here, before any case
+    const CaseScenes case_scenes(suite, scenes);
+    std::vector<SceneFeatures> features;
+    // Per scene for the comparisons (which only ask about the disks' radii): its first sweep point.
+    for (std::size_t s = 0; s < scenes.size(); ++s) features.push_back(case_scenes.features.lower_bound({s, ""})->second);
+    const std::vector<CaseSpec> specs = plan_cases(suite, scenes, backends);
+    check_case_run_settings(suite, scenes, specs);
+
+    check_output_places(options.output_dir, specs, suite.output.hdf5);
+    std::filesystem::create_directories(options.output_dir);
+    // MPI hook: rank 0 alone decides what is finished (every record is in its directory), and
+    // alone holds the directory's lock (other ranks may share the directory).
+    const bool judges = !options.dispatch || options.dispatch->is_root();
+    std::optional<OutputDirectoryLock> lock;
+    if (judges) lock.emplace(options.output_dir);
+    const std::string result_dir = options.output_dir + "/cases", runs_dir = options.output_dir + "/runs";
+    std::map<std::string, CaseResult> results;
+    if (options.resume && judges) {
+        remove_temporaries(runs_dir, result_dir);  // left by a SIGKILL: no process cleaned them
+        results = finished_results(specs, options.output_dir, options.progress);
+    }
+
+    SuiteOutcome outcome;
+    outcome.cases_resumed = results.size();
+    std::vector<CaseSpec> to_run;
+    for (const auto& spec : specs)
+        if (!results.count(spec.id)) to_run.push_back(spec);
+
+    std::map<std::string, const BackendInfo*> by_name;
+    for (const BackendInfo& b : backends) by_name[b.name] = &b;
+    outcome.jobs = options.jobs > 0 ? options.jobs : default_jobs();
+    IsolationOptions isolation{outcome.jobs, suite.time_limit_seconds, result_dir, runs_dir, runs_in_worker};
+    auto run_case = [&](const CaseSpec& spec) {
+        CaseContext context{&suite, &case_scenes.scene(spec), by_name.at(spec.backend), options.output_dir};
+        return execute_case(spec, context);
+    };
+    initialise_hdf5();  // once here, not again in every case process (each writes an HDF5 file)
+    std::unique_ptr<Progress> progress;
+    if (options.progress) progress = std::make_unique<Progress>(to_run.size(), options.progress, options.progress_is_terminal);
+    std::size_t done = 0, failed = 0;
+    // --- MPI hook (case_dispatch.h, docs/scaling.md): under an MPI launcher the ranks share
+    // the cases out and rank 0 receives every result; the other ranks stop here.
+    if (options.dispatch) {
+        auto cost = [&](const CaseSpec& s) {
+            return estimated_cost(s, case_scene(case_scenes.scene(s), suite.scenes[s.scene_index], s), results);
+        };
+        CaseWork work{&specs, &results, options.output_dir, isolation, run_case, cost, progress.get()};
+        options.dispatch->run(work);
+        if (!options.dispatch->is_root()) return outcome;
+    } else {  // --- end of the MPI hook
+        // Said before the first case finishes, so a user sees at once how the machine is used.
+        if (options.progress && !to_run.empty())
+            std::fprintf(options.progress, "running %zu cases, %d at a time (--jobs %d)\n", to_run.size(),
+                         int(std::min<std::size_t>(std::size_t(outcome.jobs), to_run.size())), outcome.jobs);
+        run_isolated(to_run, isolation, run_case, [&](const CaseResult& r) {
+            ++done;
+            if (r.status != RunStatus::completed && r.status != RunStatus::left_out) ++failed;
+            results[r.spec.id] = r;
+            if (progress) progress->update(done, failed, r.spec.id);
+        });
+    }
+    if (progress) progress->finish();
+    outcome.execution = options.dispatch ? options.dispatch->execution() : serial_execution(outcome.jobs);
+    outcome.cases_run = to_run.size();
+
+    // Judge every case in plan order, then the comparisons with the reference.
+    std::map<std::string, Tolerances> tolerances;
+    for (const BackendInfo& b : backends) {
+        tolerances[b.name] = suite.tolerances.for_backend(b.name, b.precision);
+        outcome.precision[b.name] = b.precision;
+    }
+    for (const CaseSpec& spec : specs) {
+        outcome.cases.push_back(results.at(spec.id));
+        const auto checks = case_checks(outcome.cases.back(), case_scenes.feature(spec), tolerances.at(spec.backend));
+        outcome.checks.insert(outcome.checks.end(), checks.begin(), checks.end());
+    }
+    if (suite.stability) classify_all(outcome, case_scenes, tolerances);
+    Comparisons comparisons = compare_with_reference(suite, outcome.cases, features, tolerances);
+    outcome.checks.insert(outcome.checks.end(), comparisons.checks.begin(), comparisons.checks.end());
+    apply_variant_leave_outs(outcome.checks, suite.variants);
+    outcome.work_precision = std::move(comparisons.work_precision);
+    outcome.physics = compare_with_physics(suite, outcome.cases, [&](const CaseSpec& c) -> const Scene& {
+        return case_scenes.scene(c);
+    });
+    outcome.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    write_summary_json(suite, outcome, options.output_dir + "/summary.json");
+    write_junit_xml(suite, outcome, options.output_dir + "/junit.xml");
+    return outcome;
+}
+
+}  // namespace collide::validation

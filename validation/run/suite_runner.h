@@ -1,0 +1,68 @@
+// run_suite: the validation runner behind `collide validate`. Plans the cases, runs each in
+// an isolated child process, judges the results and writes the summary (summary.json), the
+// JUnit file (junit.xml) and one HDF5 file per case into the output directory:
+//
+//   <out>/summary.json     everything the report needs: cases, checks, work-precision, provenance
+//   <out>/junit.xml        one testcase per (case, check), for CI systems
+//   <out>/cases/<id>.toml  each case's measurements (read back by --resume and the report)
+//   <out>/cases/<id>.log   what the case's process printed
+//   <out>/runs/<id>.h5     each case's metrics and provenance (RunWriter)
+#pragma once
+
+#include <cstdio>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "validation/run/case_dispatch.h"
+#include "validation/run/case_result.h"
+#include "validation/judge/checks.h"
+#include "core/backend_registry.h"
+#include "validation/compare/physics_rows.h"
+#include "validation/compare/reference_comparison.h"
+#include "validation/judge/stability.h"
+#include "validation/plan/suite.h"
+
+namespace collide::validation {
+
+struct RunnerOptions {
+    std::string output_dir = "results";
+    int jobs = 1;                   // cases at the same time; 0: one per core (default_jobs())
+    bool resume = false;            // keep every case that already has a result file
+    std::FILE* progress = nullptr;  // progress lines go here (nullptr: none)
+    bool progress_is_terminal = false;
+    CaseDispatch* dispatch = nullptr;  // MPI ranks share the cases (case_dispatch.h); null: this process alone
+};
+
+struct SuiteOutcome {
+    std::vector<CaseResult> cases;
+    std::vector<CheckResult> checks;
+    std::vector<Classification> classifications;  // parallel to cases; empty unless suite.stability
+    std::vector<WorkPrecisionLine> work_precision;
+    PhysicsComparison physics;                     // "Reference against physics" (physics_rows.h)
+    std::size_t cases_run = 0, cases_resumed = 0;
+    int jobs = 1;  // the cases run at the same time in this process (options.jobs resolved)
+    double wall_seconds = 0;
+    std::map<std::string, std::string> execution;  // ranks, hosts, jobs per rank (summary provenance)
+    std::map<std::string, std::string> precision;  // backend -> "double", "float", ... (BackendInfo)
+    std::size_t count(CheckStatus s) const;
+    std::size_t physics_failures() const;
+    bool passed() const { return count(CheckStatus::fail) == 0 && physics_failures() == 0; }
+};
+
+// One case per core: std::thread::hardware_concurrency(), or 1 where it cannot tell.
+int default_jobs();
+
+// Whether a case runs in a worker process, one that runs case after case and keeps its
+// start-up (case_isolation.h): every case a backend runs at all. A case's own process would
+// pay, for each case, the fork's copied pages, the libraries' set-up and (opencl) the OpenCL
+// platform, context and program (0.2-0.3 s on PoCL); the default suite took 114-123 s that
+// way against 76 s in workers, with the same value for every check. A case left out (the
+// backend refuses the scene) only records why, in a process of its own.
+bool runs_in_worker(const CaseSpec& spec);
+
+// `backends` are the backends the suite may use (all_backends() in the program, test doubles
+// in tests). Throws SuiteError / SceneError for bad input before any case runs.
+SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& backends, const RunnerOptions& options);
+
+}  // namespace collide::validation
