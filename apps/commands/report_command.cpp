@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <mutex>
 #include <set>
 #include <stdexcept>
@@ -24,13 +25,15 @@
 #include "core/io/output_file.h"
 #include "validation/run/case_result.h"
 #include "validation/run/suite_runner.h"
+#include "validation/explain/report_jumps.h"
+#include "validation/plan/external_solvers.h"
 
 namespace collide::cli {
 namespace {
 
-// The ids of the cases summary.json lists (their records are cases/<id>.toml). Only the
-// fields read here are checked; the renderer checks the whole file (digest.load_summary).
-std::set<std::string> listed_case_ids(const std::string& dir) {
+// DIR/summary.json. Only the fields read here are checked; the renderer checks the whole file
+// (digest.load_summary).
+nlohmann::json read_summary(const std::string& dir) {
     const std::string path = dir + "/summary.json";
     std::ifstream in(path);
     nlohmann::json summary;
@@ -41,6 +44,11 @@ std::set<std::string> listed_case_ids(const std::string& dir) {
     }
     if (!summary.is_object() || !summary.contains("cases") || !summary["cases"].is_array())
         throw std::runtime_error(path + ": no list 'cases'; expected the summary of `collide validate`");
+    return summary;
+}
+
+// The ids of the cases summary.json lists (their records are cases/<id>.toml).
+std::set<std::string> listed_case_ids(const nlohmann::json& summary) {
     std::set<std::string> ids;
     for (const auto& c : summary["cases"])
         if (c.is_object() && c.contains("id") && c["id"].is_string()) ids.insert(c["id"].get<std::string>());
@@ -72,8 +80,8 @@ void warn_about_stray_files(const std::string& dir, const std::set<std::string>&
 // drawn from, or failing deep in Python. The frames are left to `collide render`, which checks
 // those it draws. The records are parsed on every core at once; the HDF5 library is not
 // thread-safe, so the run files are checked one at a time. The first problem by case id is named.
-void check_case_files(const std::string& dir) {
-    const std::set<std::string> listed = listed_case_ids(dir);
+void check_case_files(const std::string& dir, const nlohmann::json& summary) {
+    const std::set<std::string> listed = listed_case_ids(summary);
     warn_about_stray_files(dir, listed);
     const std::vector<std::string> ids(listed.begin(), listed.end());
     std::vector<std::string> problems(ids.size());
@@ -106,18 +114,39 @@ void check_case_files(const std::string& dir) {
 void check_report_outputs(const std::string& report_dir) {
     check_output_directory(report_dir);
     if (!std::filesystem::is_directory(report_dir)) return;  // created empty by the renderer
-    for (const char* name : {"index.html", "checks.html", "checks.csv", "summary.md", "summary-full.md"})
+    for (const char* name : {"index.html", "checks.html", "checks.csv", "summary.md", "summary-full.md", "energy_jumps.json"})
         check_output_path(report_dir + "/" + name);
+}
+
+// The energy jumps the report shows, explained (validation/explain/report_jumps.h), into
+// DIR/report/energy_jumps.json for the renderer to lay out. The suite file summary.json names
+// rebuilds the cases; where it cannot be read, each jump says why.
+void write_energy_jumps(const std::string& dir, const nlohmann::json& summary) {
+    std::optional<validation::Suite> suite;
+    std::vector<BackendInfo> backends;
+    std::string suite_problem;
+    try {
+        suite = validation::load_suite(summary.at("suite_file").get<std::string>());
+        backends = validation::backends_with_solvers(*suite, all_backends(), python_runner());
+    } catch (const std::exception& e) {
+        suite_problem = std::string("the suite file could not be read to rerun the case: ") + e.what();
+    }
+    const nlohmann::json jumps = validation::report_energy_jumps(dir, summary, suite ? &*suite : nullptr,
+                                                                 suite_problem, backends, validation::default_jobs());
+    std::filesystem::create_directories(dir + "/report");
+    write_file_atomically(dir + "/report/energy_jumps.json", jumps.dump(1) + "\n");
 }
 
 void execute(const std::string& dir) {
     if (!std::filesystem::exists(dir + "/summary.json"))
         throw std::runtime_error(dir + "/summary.json: not found; expected the output directory of `collide validate`");
     check_report_outputs(dir + "/report");  // first: refused at once, before reading every run file
-    check_case_files(dir);
+    const nlohmann::json summary = read_summary(dir);
+    check_case_files(dir, summary);
+    write_energy_jumps(dir, summary);
     const std::string script = resource_path("validation/report") + "/make_report.py";
-    // The renderer calls this program back (`collide render` for motion strips, `collide
-    // explain` for energy jumps): run_python_script tells it which one.
+    // The renderer calls this program back (`collide render` for motion strips):
+    // run_python_script tells it which one.
     const int status = run_python_script(script, {dir});
     // Exit status 2: an input file is malformed; the renderer has named it and what is wrong.
     if (status == 2)

@@ -98,35 +98,45 @@ class DigestMatchesSummary(unittest.TestCase):
 
 
 class JumpExplained(unittest.TestCase):
-    """An energy jump is named down to its step, disks and kind of contact by `collide explain`;
-    a failing program is reported in the note, never silently dropped."""
+    """An energy jump is found and named down to its step, disks and kind of contact by `collide
+    report` in C++ (energy_jumps.json, the words of `collide explain`); a rerun that failed is
+    reported in the note, never silently dropped."""
 
-    def stepped_case(self):
+    def jumps(self):
+        with open(os.path.join(RESULTS, "report", "energy_jumps.json"), encoding="utf-8") as f:
+            return json.load(f)["jumps"]
+
+    def test_found_and_named_by_the_program(self):
         with open(os.path.join(RESULTS, "summary.json"), encoding="utf-8") as f:
             summary = json.load(f)
-        return next(c for c in summary["cases"] if c["backend"] == "step" and c["scene"] == "periodic_gas")
+        explained = [j for j in self.jumps() if j["explained"]]
+        self.assertTrue(explained, "the mini suite's stepped gas has no jump explained")
+        cases = {c["id"]: c for c in summary["cases"]}
+        for j in explained:
+            self.assertEqual(j["explained"]["case"], j["case"])
+            self.assertNotEqual(j["backend"], summary["reference"])
+            self.assertLessEqual(j["t0"], j["explained"]["time_before"])
+            self.assertLessEqual(j["explained"]["time_after"], j["t1"] + 1e-9)
+            self.assertEqual(cases[j["case"]]["scene"], j["scene"])
+            note = make_report.explanation_text(j)
+            self.assertIn("In detail: the step ending at t = ", note)
+            self.assertRegex(note, r"(an isolated pair|\d+ disks in contact at once|a disk at)")
+        self.assertIn("In detail:", self.html_text())
 
-    def test_named_by_collide_explain(self):
-        case = self.stepped_case()
-        jump = {"t0": 0.0, "t1": case["duration"], "change": -0.01, "scale": 1000.0}
-        note = make_report.explain_jump(RESULTS, case, jump)
-        self.assertIn("In detail: the step ending at t = ", note)
-        # a 1000-disk gas in a periodic box: the largest change comes from disks in contact
-        self.assertRegex(note, r"(an isolated pair|\d+ disks in contact at once) \(disk \d+ touches \d+")
-        self.assertEqual(jump["explained"]["case"], case["id"])
-        self.assertRegex(note, r"That step is -?\d+ % of the interval's change\.")
+    def html_text(self):
+        with open(os.path.join(RESULTS, "report", "index.html"), encoding="utf-8") as f:
+            return f.read()
+
+    def test_share_of_the_interval(self):
+        # The interval changed the energy by -0.01 of max K = 1000, i.e. by -10; the step by -5.
+        jump = {"change": -0.01, "scale": 1000.0, "problem": "",
+                "explained": {"energy_change": -5.0, "description": "the step ending at t = 1 changes ..."}}
+        self.assertIn("That step is 50 % of the interval's change.", make_report.explanation_text(jump))
 
     def test_failure_is_reported(self):
-        saved = os.environ.get("COLLIDE_EXECUTABLE")
-        os.environ["COLLIDE_EXECUTABLE"] = "/bin/false"
-        try:
-            note = make_report.explain_jump(RESULTS, self.stepped_case(), {"t0": 0.0, "t1": 0.1})
-        finally:
-            if saved is None:
-                del os.environ["COLLIDE_EXECUTABLE"]
-            else:
-                os.environ["COLLIDE_EXECUTABLE"] = saved
-        self.assertIn("The step could not be named", note)
+        note = make_report.explanation_text({"change": -0.01, "scale": 1.0, "explained": None,
+                                             "problem": "case x: the rerun does not retrace the recorded run"})
+        self.assertIn("The step could not be named: case x: the rerun does not retrace", note)
 
 
 class Resolution(unittest.TestCase):

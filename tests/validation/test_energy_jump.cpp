@@ -1,6 +1,7 @@
 // Energy jumps attributed (validation/explain/energy_jump.h): the kind of contact from hand-made states
 // whose contacts and energies are known, and the worked example of docs/stepping-rules.md
-// ("Energy at e = 1") found by stepping the readable `step` rule.
+// ("Energy at e = 1") found by stepping the readable `step` rule; and the search of a recorded
+// series for the interval the report has explained (largest_interval_jump).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,6 +10,7 @@
 #include "core/scene/scene_loader.h"
 #include "reference/step_solver.h"
 #include "validation/explain/energy_jump.h"
+#include "validation/explain/explain_case.h"
 
 namespace collide::validation {
 namespace {
@@ -213,6 +215,44 @@ TEST(EnergyJump, RefusesAnIntervalWithoutAWholeStep) {
     StepSolver solver;
     solver.load(scene, generate_initial_state(scene));
     EXPECT_THROW(largest_energy_change(solver, scene, 0.0004), std::runtime_error);
+}
+
+// A recorded series with kinetic energies K(t) and no gravity (total = kinetic).
+MetricSeries series_of(const std::vector<double>& kinetic) {
+    MetricSeries s;
+    for (std::size_t i = 0; i < kinetic.size(); ++i) {
+        Metrics m;
+        m.time = 0.5 * double(i);
+        m.kinetic_energy = kinetic[i];
+        s.push_back(m);
+    }
+    return s;
+}
+
+TEST(IntervalJump, TheLargestChangeStandsOutOfTheMedian) {
+    // Changes per interval: +0.1, -0.2, -50 (at t = 1 -> 1.5), +0.1, relative to max K = 100.1.
+    const auto jump = largest_interval_jump(series_of({100.0, 100.1, 99.9, 49.9, 50.0}));
+    ASSERT_TRUE(jump.has_value());
+    EXPECT_DOUBLE_EQ(jump->t0, 1.0);
+    EXPECT_DOUBLE_EQ(jump->t1, 1.5);
+    EXPECT_NEAR(jump->change, -50.0 / 100.1, 1e-12);
+    EXPECT_DOUBLE_EQ(jump->scale, 100.1);
+    // |changes| sorted: 0.001, 0.001, 0.002, 0.5 (over 100.1): the upper median is the third.
+    EXPECT_NEAR(jump->median, 0.2 / 100.1, 1e-12);
+}
+
+TEST(IntervalJump, NoJumpBelowTheThresholdOrInsideTheNoise) {
+    EXPECT_FALSE(largest_interval_jump(series_of({1.0, 1.0 + 5e-4, 1.0, 1.0 + 5e-4})).has_value());  // < 1e-3
+    // Every interval changes by about as much: 0.02 is less than 10 x the median 0.01.
+    EXPECT_FALSE(largest_interval_jump(series_of({1.0, 1.01, 1.02, 1.04, 1.05})).has_value());
+    EXPECT_FALSE(largest_interval_jump(series_of({1.0, 2.0})).has_value());  // fewer than three points
+    EXPECT_FALSE(largest_interval_jump(series_of({1.0, std::nan(""), 1.0, 1.0})).has_value());
+}
+
+TEST(IntervalJump, TheFirstOfEqualChangesIsTaken) {
+    const auto jump = largest_interval_jump(series_of({1.0, 1.0, 0.5, 0.5, 0.0, 0.0, 0.0}));
+    ASSERT_TRUE(jump.has_value());
+    EXPECT_DOUBLE_EQ(jump->t0, 0.5);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
-"""The collide program, for the parts of the report it draws or computes itself (`collide render`
-for motion strips, `collide explain` for energy jumps): never a second implementation here."""
+"""The collide program, for the part of the report it draws itself (`collide render` for motion
+strips): never a second implementation here. (The energy jumps come explained from `collide
+report` itself, in energy_jumps.json.)"""
 import os
 import shutil
 import subprocess
@@ -18,18 +19,3 @@ def collide_program():
     except OSError:
         pass
     return shutil.which("collide")
-
-
-def run_collide(args, timeout=300):
-    """Runs `collide ARGS`; returns (stdout, None) or (None, why it failed in one line)."""
-    program = collide_program()
-    if program is None:
-        return None, "no collide program was found (set COLLIDE_EXECUTABLE)"
-    try:
-        done = subprocess.run([program, *args], capture_output=True, text=True, timeout=timeout)
-    except (OSError, subprocess.TimeoutExpired) as e:
-        return None, str(e)
-    if done.returncode != 0:
-        lines = (done.stderr or done.stdout).strip().splitlines()
-        return None, lines[-1] if lines else f"exit status {done.returncode}"
-    return done.stdout, None

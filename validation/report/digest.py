@@ -375,24 +375,3 @@ def identical_backends(summary):
     return out
 
 
-# ---------------------------------------------------------------------------------------------
-# Jumps in conservation series
-
-def energy_jumps(result, threshold=1e-3, factor=10.0):
-    """The largest change of energy over one output interval, divided by max K, when it is
-    above `threshold` and `factor` times the median change: {'t0', 't1', 'change', 'median',
-    'scale' (max K)} or None."""
-    s = result["series"]
-    t, kinetic, total = s["time"], s["kinetic_energy"], s["total_energy"]
-    if len(t) < 3:
-        return None
-    energy = total if abs(total[0] - kinetic[0]) > 0 else kinetic
-    scale = max(max(abs(k) for k in kinetic), 1e-300)
-    steps = [(energy[i] - energy[i - 1]) / scale for i in range(1, len(t))]
-    if not all(math.isfinite(x) for x in steps):
-        return None
-    i = max(range(len(steps)), key=lambda j: abs(steps[j]))
-    median = sorted(abs(x) for x in steps)[len(steps) // 2]
-    if abs(steps[i]) < threshold or abs(steps[i]) < factor * median:
-        return None
-    return {"t0": t[i], "t1": t[i + 1], "change": steps[i], "median": median, "scale": scale}

@@ -26,7 +26,7 @@ import sys
 import tomllib
 from collections import OrderedDict
 import multiprocessing
-from concurrent.futures import ProcessPoolExecutor, ThreadPoolExecutor, as_completed
+from concurrent.futures import ProcessPoolExecutor, as_completed
 
 import jinja2
 from markupsafe import Markup
@@ -40,7 +40,6 @@ import progress  # noqa: E402
 import safe_output  # noqa: E402
 import stability  # noqa: E402
 import verdicts  # noqa: E402
-from collide_program import run_collide  # noqa: E402
 from digest import ReportInputError  # noqa: E402
 
 
@@ -416,48 +415,49 @@ BIAS_FITS = jinja2.Template("""{% if rows %}<h3 id="bias-fits">The stepped rules
 <td>{{ r.chi2 }}</td><td>{{ r.chi2_model }}</td></tr>{% endfor %}</table>{% endif %}""", autoescape=True)
 
 
-def explain_requests(a, chosen_by_scene):
-    """The energy jumps of the cases shown, for scenes where energy is conserved (its check
-    applies): {scene: {backend: (case, jump)}}."""
+def load_energy_jumps(directory):
+    """The energy jumps `collide report` found in the cases drawn and explained before the
+    renderer started (validation/explain/report_jumps.h): DIR/report/energy_jumps.json's list,
+    or none where the renderer runs without it (a test that calls it directly)."""
+    path = os.path.join(directory, "report", "energy_jumps.json")
+    if not os.path.exists(path):
+        return []
+    with open(path, encoding="utf-8") as f:
+        return json.load(f)["jumps"]
+
+
+def jumps_by_scene(a, jumps):
+    """{scene: {backend: (case, jump)}} for the backends drawn (an alias is drawn as its twin)."""
+    cases = {c["id"]: c for c in a.summary["cases"]}
     out = {}
-    judged = {(scene, check) for (scene, _, check), v in a.combinations.items() if v["pass"] or v["fail"]}
-    for scene, chosen in chosen_by_scene.items():
-        if (scene, "energy_drift") not in judged:
-            continue
-        for backend, case, result in chosen:
-            if backend == a.summary["reference"] or backend in a.aliases:
-                continue
-            j = digest.energy_jumps(result)
-            if j:
-                out.setdefault(scene, {})[backend] = (case, j)
+    for j in jumps:
+        if j["backend"] not in a.aliases and j["case"] in cases:
+            out.setdefault(j["scene"], {})[j["backend"]] = (cases[j["case"]], j)
     return out
 
 
-def explain_jump(directory, case, jump):
-    """The step, the disks and the kind of contact behind a jump, by `collide explain` (which
-    reruns the case step by step over the jump's output interval), as HTML; or why not."""
-    out, why = run_collide(["explain", directory, case["id"], "--from", repr(jump["t0"]), "--to", repr(jump["t1"]),
-                            "--json"])
-    if why:
-        return f" The step could not be named: {html.escape(why)}."
-    try:
-        found = json.loads(out)
-    except ValueError:
-        return " The step could not be named: `collide explain` printed no JSON."
-    jump["explained"] = found
+def explanation_text(jump):
+    """The step, the disks and the kind of contact behind a jump, as `collide explain` words
+    them (C++ wrote them into energy_jumps.json), as HTML; or why they could not be named."""
+    if jump.get("problem") or not jump.get("explained"):
+        return f" The step could not be named: {html.escape(jump.get('problem') or 'no explanation recorded')}."
+    found = jump["explained"]
     share = ""
-    interval = jump.get("change", 0) * jump.get("scale", 0)  # the output interval's change
+    interval = jump["change"] * jump["scale"]  # the output interval's change
     if interval and math.isfinite(found["energy_change"]):
         share = f" That step is {100 * found['energy_change'] / interval:.0f} % of the interval's change."
     return f" In detail: {html.escape(found['description'])}.{share}"
 
 
-def jump_notes(a, jumps, explained):
+def jump_notes(a, jumps):
     notes = []
     for backend, (case, j) in jumps.items():
+        if "change" not in j:  # its record could not be read back for the search
+            notes.append(f"<li><b>{html.escape(backend)}</b> ({html.escape(case['id'])}):{explanation_text(j)}</li>")
+            continue
         notes.append(f"<li><b>{html.escape(backend)}</b> ({html.escape(case['id'])}): the energy changes by "
                      f"{100 * j['change']:+.2g} % of max K between t = {j['t0']:g} and t = {j['t1']:g}, one output "
-                     f"interval; the median interval changes it by {100 * j['median']:.2g} %.{explained[case['id']]}</li>")
+                     f"interval; the median interval changes it by {100 * j['median']:.2g} %.{explanation_text(j)}</li>")
     if not notes:
         return ""
     box2d = any(digest.facts(a.summary, b).get("base") == "box2d" for b in jumps)
@@ -472,7 +472,7 @@ def jump_notes(a, jumps, explained):
 
 def scene_section(summary, directory, a, scene, chosen, jumps):
     """One scene's figures and notes, as a list of HTML parts; the energy-jump notes are a
-    placeholder ("JUMPS", scene, jumps) filled in once `collide explain` has answered."""
+    placeholder ("JUMPS", scene, jumps) filled in by the process that lays the page out."""
     parts = [f"<h3 id='{digest.anchor('scene', scene)}'>{html.escape(scene)}</h3>"]
     if not chosen:
         return parts + ["<p>No case of this scene finished; see the failures above.</p>"]
@@ -541,23 +541,18 @@ def _with_progress(pool, scenes):
 
 def scene_sections(summary, directory, a=None):
     """Every scene's section. The figures are drawn by forked processes, one scene each, as many
-    at a time as there are cores; `collide explain` reruns each jump's case meanwhile, side by side."""
+    at a time as there are cores; the energy jumps come explained from `collide report`."""
     a = a or Analysis(summary)
     chosen_by_scene = OrderedDict((scene, representative_cases(summary, directory, scene)) for scene in a.scenes)
-    requests = explain_requests(a, chosen_by_scene)
+    requests = jumps_by_scene(a, load_energy_jumps(directory))
     cores = max(1, os.cpu_count() or 1)
-    with ThreadPoolExecutor(max_workers=cores) as threads:
-        futures = {case["id"]: threads.submit(explain_jump, directory, case, j)
-                   for jumps in requests.values() for case, j in jumps.values()}
-        _SHARED.update(summary=summary, directory=directory, a=a, chosen=chosen_by_scene, requests=requests)
-        try:
-            with ProcessPoolExecutor(max_workers=cores, mp_context=multiprocessing.get_context("fork")) as pool:
-                sections = _with_progress(pool, a.scenes)
-        finally:
-            _SHARED.clear()
-        explained = {k: f.result() for k, f in futures.items()}
-    return "\n".join(jump_notes(a, p[2], explained) if isinstance(p, tuple) else p
-                     for parts in sections for p in parts)
+    _SHARED.update(summary=summary, directory=directory, a=a, chosen=chosen_by_scene, requests=requests)
+    try:
+        with ProcessPoolExecutor(max_workers=cores, mp_context=multiprocessing.get_context("fork")) as pool:
+            sections = _with_progress(pool, a.scenes)
+    finally:
+        _SHARED.clear()
+    return "\n".join(jump_notes(a, p[2]) if isinstance(p, tuple) else p for parts in sections for p in parts)
 
 
 def machine_text(summary):

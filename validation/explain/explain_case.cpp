@@ -1,0 +1,105 @@
+#include "validation/explain/explain_case.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/metrics.h"
+
+namespace collide::validation {
+
+std::optional<IntervalJump> largest_interval_jump(const MetricSeries& series, double threshold, double factor) {
+    if (series.size() < 3) return std::nullopt;
+    double scale = 1e-300;
+    for (const Metrics& m : series) scale = std::max(scale, std::fabs(m.kinetic_energy));
+    std::vector<double> steps;
+    for (std::size_t i = 1; i < series.size(); ++i) {
+        const double change = (series[i].total_energy() - series[i - 1].total_energy()) / scale;
+        if (!std::isfinite(change)) return std::nullopt;
+        steps.push_back(change);
+    }
+    std::size_t largest = 0;  // the first of equal largest changes
+    for (std::size_t i = 1; i < steps.size(); ++i)
+        if (std::fabs(steps[i]) > std::fabs(steps[largest])) largest = i;
+    std::vector<double> sizes(steps.size());
+    std::transform(steps.begin(), steps.end(), sizes.begin(), [](double x) { return std::fabs(x); });
+    std::nth_element(sizes.begin(), sizes.begin() + std::ptrdiff_t(sizes.size() / 2), sizes.end());
+    const double median = sizes[sizes.size() / 2];  // the upper median for an even count
+    const double change = steps[largest];
+    if (std::fabs(change) < threshold || std::fabs(change) < factor * median) return std::nullopt;
+    return IntervalJump{series[largest].time, series[largest + 1].time, change, median, scale};
+}
+
+namespace {
+
+// Advances the solver to the last output time at or before t and checks its kinetic energy
+// against the record's (relative 1e-9: the same code on the same input retraces the run).
+void require_same_path(Solver& solver, const ReplayedCase& c, const CaseResult& record, double t) {
+    const double interval = c.scene.run.output_interval, dt = c.scene.run.dt;
+    const double check = std::floor(t / interval + 1e-9) * interval;
+    const auto recorded = recorded_kinetic_energy(record, check);
+    if (!recorded) return;
+    if (check > 0) solver.advance_to(std::round(check / dt) * dt);
+    ParticleState<double> state;
+    solver.read_state(state);
+    const double k = compute_disk_metrics(c.scene, state, check).kinetic_energy;  // as the run recorded it
+    if (!(std::fabs(k - *recorded) <= 1e-9 * std::fabs(*recorded)))
+        throw std::runtime_error("case " + c.spec.id + ": the rerun does not retrace the recorded run (kinetic energy " +
+                                 std::to_string(k) + " at t = " + std::to_string(check) + ", recorded " +
+                                 std::to_string(*recorded) + "); was the program or a file changed since the run?");
+}
+
+}  // namespace
+
+ExplainedCase explain_case(const std::string& dir, const Suite& suite, const std::string& case_id,
+                           const std::vector<BackendInfo>& backends, const std::vector<SceneOverride>& overrides,
+                           double from, double to, const std::function<void(double, double)>& on_progress) {
+    ReplayedCase c = replay_case(suite, case_id, backends, overrides);
+    if (c.backend.name == "event" || c.backend.name == "event-plain")  // exact: from collision to collision
+        throw std::runtime_error("case " + c.spec.id + " ran on '" + c.backend.name +
+                                 "', which has no time steps to look inside");
+    const CaseResult record = read_case_result(dir + "/cases/" + c.spec.id + ".toml");
+    // With overrides the case is a what-if: it starts and runs otherwise than the record.
+    const bool what_if = !overrides.empty();
+    if (!what_if) require_same_start(c, record);
+    const double dt = c.scene.run.dt, end = to < 0 ? c.scene.run.duration : to;
+    if (!(from >= 0) || !(end <= c.scene.run.duration + 0.5 * dt) || !(end > from))
+        throw std::runtime_error("--from " + std::to_string(from) + " --to " + std::to_string(end) +
+                                 ": expected 0 <= from < to <= the case's duration " + std::to_string(c.scene.run.duration));
+    auto solver = c.backend.create(c.options);
+    solver->load(c.scene, c.initial);
+    const double start = std::floor(from / dt + 1e-9) * dt;
+    if (!what_if) require_same_path(*solver, c, record, start);
+    const double interval = c.scene.run.output_interval;
+    for (double t = solver->time(); t < start;) {
+        t = std::min(start, (std::floor(t / interval + 1e-9) + 1) * interval);
+        solver->advance_to(t);
+        if (on_progress) on_progress(t, end);
+    }
+    EnergyJump jump = largest_energy_change(*solver, c.scene, end, on_progress);
+    return ExplainedCase{std::move(c), std::move(jump)};
+}
+
+nlohmann::json explanation_json(const ExplainedCase& explained) {
+    const ReplayedCase& c = explained.replayed;
+    const EnergyJump& jump = explained.jump;
+    nlohmann::json groups = nlohmann::json::array();
+    for (const auto& g : jump.groups) {
+        nlohmann::json disks = nlohmann::json::array(), pairs = nlohmann::json::array(), walls = nlohmann::json::array();
+        nlohmann::json stones = nlohmann::json::array();
+        for (const auto& d : g.disks)
+            disks.push_back({{"index", d.index}, {"energy_before", d.energy_before}, {"energy_after", d.energy_after}});
+        for (const auto& [i, j] : g.pairs) pairs.push_back({i, j});
+        for (const auto& [i, w] : g.walls) walls.push_back({{"disk", i}, {"wall", w}});
+        for (const auto& [i, st] : g.stones) stones.push_back({{"disk", i}, {"stone", st}});
+        groups.push_back({{"kind", g.kind}, {"energy_change", g.energy_change}, {"disks", disks},
+                          {"pairs", pairs}, {"walls", walls}, {"stones", stones}});
+    }
+    return {{"case", c.spec.id}, {"backend", c.spec.backend}, {"dt", c.scene.run.dt}, {"set", c.scene.overrides},
+            {"step", jump.step},
+            {"time_before", jump.time_before}, {"time_after", jump.time_after},
+            {"kinetic_before", jump.kinetic_before}, {"energy_change", jump.energy_change},
+            {"nonfinite", jump.nonfinite}, {"groups", groups}, {"description", describe(jump)}};
+}
+
+}  // namespace collide::validation
