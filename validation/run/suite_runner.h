@@ -57,7 +57,7 @@ int default_jobs();
 // start-up (case_isolation.h): every case a backend runs at all. A case's own process would
 // pay, for each case, the fork's copied pages, the libraries' set-up and (opencl) the OpenCL
 // platform, context and program (0.2-0.3 s on PoCL); the default suite took 114-123 s that
-// way against 76 s in workers, with the same value for every check. A case left out (the
+// way against 75-83 s in workers, with the same value for every check. A case left out (the
 // backend refuses the scene) only records why, in a process of its own.
 bool runs_in_worker(const CaseSpec& spec);
 
