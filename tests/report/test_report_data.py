@@ -139,6 +139,50 @@ class JumpExplained(unittest.TestCase):
         self.assertIn("The step could not be named: case x: the rerun does not retrace", note)
 
 
+class MotionStrips(unittest.TestCase):
+    """Whether a case stored frames is read from summary.json (validate records it), not by
+    opening run files in Python; the strips show the reference and the largest and smallest dt."""
+
+    def cases(self):
+        base = {"scene": "s", "status": "completed", "seed": 1}
+        return [dict(base, id="s__event__seed1", backend="event", reference=True, dt=0.001,
+                     hdf5_file="runs/e.h5", frames=True),
+                dict(base, id="s__step__dt0.002__seed1", backend="step", reference=False, dt=0.002,
+                     hdf5_file="runs/a.h5", frames=True),
+                dict(base, id="s__step__dt0.001__seed1", backend="step", reference=False, dt=0.001,
+                     hdf5_file="runs/b.h5", frames=True)]
+
+    def test_frames_read_from_the_summary(self):
+        import animations
+        cases = self.cases()
+        ref, drawn = animations.chosen_pair({"cases": cases}, "/no/such/directory", "s")
+        self.assertEqual(ref["id"], "s__event__seed1")
+        self.assertEqual([c["id"] for c in drawn], ["s__step__dt0.002__seed1", "s__step__dt0.001__seed1"])
+        cases[0]["frames"] = False
+        self.assertIsNone(animations.chosen_pair({"cases": cases}, "/no/such/directory", "s"))
+        cases = self.cases()
+        del cases[2]["frames"]  # a summary that does not say: no strip rather than a guess
+        self.assertIsNone(animations.chosen_pair({"cases": cases}, "/no/such/directory", "s"))
+
+    def test_validate_records_frames_per_case(self):
+        """A scene's own `frames` overrides [output] frames; validate says which cases stored them."""
+        scenes = os.path.join(HERE, "..", "..", "data", "scenes")
+        with tempfile.TemporaryDirectory() as tmp:
+            suite = os.path.join(tmp, "frames.toml")
+            with open(suite, "w", encoding="utf-8") as f:
+                f.write(f'name = "frames"\nscene_dir = "{scenes}"\nbackends = ["event", "step"]\nreference = "event"\n'
+                        'seeds = [1]\n\n[output]\nhdf5 = true\nframes = false\n\n'
+                        '[[scene]]\nname = "head_on_equal"\nframes = true\n\n[[scene]]\nname = "glancing"\n')
+            done = subprocess.run([os.environ["COLLIDE_EXECUTABLE"], "validate", suite, "--out", os.path.join(tmp, "out"),
+                                   "--jobs", "1"], capture_output=True, text=True)
+            self.assertEqual(done.returncode, 0, done.stderr)
+            with open(os.path.join(tmp, "out", "summary.json"), encoding="utf-8") as f:
+                frames = {c["id"]: c["frames"] for c in json.load(f)["cases"]}
+        self.assertTrue(frames)
+        for case, stored in frames.items():
+            self.assertEqual(stored, case.startswith("head_on_equal"), case)
+
+
 class Resolution(unittest.TestCase):
     """Unresolved points are drawn at their 95 % upper limit |Δ| + 1.96 SE, which validate writes."""
 

@@ -348,4 +348,6 @@ std::vector<Scene> load_suite_scenes(const Suite& suite) {
     return scenes;
 }
 
+bool stores_frames(const Suite& suite, const SuiteScene& entry) { return entry.frames.value_or(suite.output.frames); }
+
 }  // namespace collide::validation

@@ -97,6 +97,10 @@ struct Suite {
     std::vector<external::ExternalSolverSpec> solvers;
 };
 
+// Whether the run file of a case of `entry` holds frames (positions and velocities at every
+// output time): the scene's own `frames`, else the suite's [output] frames.
+bool stores_frames(const Suite& suite, const SuiteScene& entry);
+
 Suite load_suite(const std::string& path);
 
 // The scene of every [[scene]] entry, in order (a scene file's, or the suite's inline one).

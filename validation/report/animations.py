@@ -11,20 +11,16 @@ import os
 import subprocess
 import tempfile
 
-import h5py
-
 from collide_program import collide_program
 
 FRAMES = 5          # panels per strip
 PANEL = "320x180"   # pixels of one panel
 
 
-def has_frames(path):
-    try:
-        with h5py.File(path, "r") as f:
-            return "frames" in f
-    except OSError:
-        return False
+def has_frames(case):
+    """Whether the case's run file holds frames (summary.json's `frames`, which validate
+    records from the suite's [output] frames; the file itself is read by `collide render`)."""
+    return bool(case.get("frames")) and bool(case.get("hdf5_file"))
 
 
 def trajectory_scenes(summary):
@@ -40,9 +36,9 @@ def chosen_pair(summary, directory, scene):
     if not refs:
         return None
     ref = min(refs, key=lambda c: c["seed"])
-    # One suite stores frames for every case or none ([output] frames): the reference decides,
-    # and only the cases drawn are opened.
-    if not has_frames(os.path.join(directory, ref["hdf5_file"])):
+    # Whether a case stored frames is in summary.json; only the cases drawn are opened, by
+    # `collide render`.
+    if not has_frames(ref):
         return None
     others = [c for c in done if not c["reference"] and c["seed"] == ref["seed"]]
     if not others:
@@ -50,7 +46,7 @@ def chosen_pair(summary, directory, scene):
     backend = others[0]["backend"]
     runs = sorted((c for c in others if c["backend"] == backend), key=lambda c: c["dt"])
     drawn = [runs[-1]] if len(runs) == 1 else [runs[-1], runs[0]]
-    if not all(has_frames(os.path.join(directory, c["hdf5_file"])) for c in drawn):
+    if not all(has_frames(c) for c in drawn):
         return None
     return ref, drawn
 

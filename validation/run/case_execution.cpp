@@ -72,7 +72,7 @@ void measure(const CaseSpec& spec, const CaseContext& ctx, CaseResult& result) {
         std::filesystem::create_directories(ctx.output_dir + "/runs");
         result.hdf5_file = "runs/" + spec.id + ".h5";
         writer = std::make_unique<RunWriter>(ctx.output_dir + "/" + result.hdf5_file,
-                                             entry.frames.value_or(suite.output.frames));
+                                             stores_frames(suite, entry));
     }
     const bool record_trajectory = initial.size() <= suite.output.max_trajectory_disks;
     const bool contact_shell_z = entry.comparison == Comparison::statistics || feeds(entry, "equation_of_state");

@@ -84,7 +84,7 @@ double per_time_unit(const CaseResult& r) {
     return r.finished() && r.duration > 0 && std::isfinite(r.wall_seconds) ? r.wall_seconds / r.duration : std::nan("");
 }
 
-Json case_json(const CaseResult& r, const Classification* c) {
+Json case_json(const CaseResult& r, const Classification* c, bool frames) {
     Object o;
     o.text("id", r.spec.id).text("scene", r.spec.scene).text("backend", r.spec.backend)
         .boolean("reference", r.spec.reference).text("group", group_id(r.spec))
@@ -96,6 +96,7 @@ Json case_json(const CaseResult& r, const Classification* c) {
         .integer("steps", r.steps).integer("contacts", r.contacts)
         .field("seconds_per_time_unit", nullable(per_time_unit(r)))
         .text("result_file", "cases/" + r.spec.id + ".toml").text("hdf5_file", r.hdf5_file)
+        .boolean("frames", !r.hdf5_file.empty() && frames)
         .field("provenance", string_map(r.provenance));
     Object phases;
     for (const auto& [k, v] : r.phase_seconds) phases.number(k, v);
@@ -341,11 +342,13 @@ std::string xml_escape(const std::string& s) {
     return out;
 }
 
-Json cases_json(const SuiteOutcome& outcome) {
+Json cases_json(const Suite& suite, const SuiteOutcome& outcome) {
     Json out = Json::array();
     for (std::size_t k = 0; k < outcome.cases.size(); ++k) {
         const Classification* c = k < outcome.classifications.size() ? &outcome.classifications[k] : nullptr;
-        out.push_back(case_json(outcome.cases[k], c));
+        const CaseSpec& spec = outcome.cases[k].spec;
+        const bool frames = spec.scene_index < suite.scenes.size() && stores_frames(suite, suite.scenes[spec.scene_index]);
+        out.push_back(case_json(outcome.cases[k], c, frames));
     }
     return out;
 }
@@ -381,7 +384,7 @@ void write_summary_json(const Suite& suite, const SuiteOutcome& outcome, const s
         .field("provenance", string_map(build_provenance())).text("command_line", command_line())
         .field("execution", string_map(outcome.execution))
         .field("seeds", string_map(seeds)).field("scene_files", string_map(scene_files))
-        .field("cases", cases_json(outcome))
+        .field("cases", cases_json(suite, outcome))
         .field("check_definitions", check_definitions_json())
         .field("machine", machine_json()).field("backends", backends_json(suite, outcome))
         .field("check_order", check_order_json(outcome))
