@@ -136,7 +136,9 @@ namespace {
 std::string verified_record_text(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw std::runtime_error(path + ": cannot read the case record (" + std::strerror(errno) + ")");
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::ostringstream read;
+    read << in.rdbuf();  // one buffered copy, not a character at a time
+    const std::string text = std::move(read).str();
     const std::size_t newline = text.find('\n');
     if (text.rfind(checksum_prefix, 0) != 0 || newline == std::string::npos)
         throw std::runtime_error(path + ": damaged case record: no checksum line (cut short, edited, or written "
