@@ -118,7 +118,7 @@ class JumpExplained(unittest.TestCase):
         self.assertTrue(explained, "the mini suite's stepped gas has no jump explained")
         cases = {c["id"]: c for c in summary["cases"]}
         for j in explained:
-            self.assertEqual(j["explained"]["case"], j["case"])
+            self.assertEqual(j["explained"]["case"], j.get("same_as", j["case"]))  # a twin gets its twin's
             self.assertNotEqual(j["backend"], summary["reference"])
             self.assertLessEqual(j["t0"], j["explained"]["time_before"])
             self.assertLessEqual(j["explained"]["time_after"], j["t1"] + 1e-9)
@@ -142,6 +142,41 @@ class JumpExplained(unittest.TestCase):
         note = scenes.explanation_text({"change": -0.01, "scale": 1.0, "explained": None,
                                              "problem": "case x: the rerun does not retrace the recorded run"})
         self.assertIn("The step could not be named: case x: the rerun does not retrace", note)
+
+
+class DrawnCases(unittest.TestCase):
+    """Which cases the report draws is summary.json's `drawn` (validation/summary/drawn_cases.h,
+    the one rule, which `collide report` reads for the jumps it explains); the renderer draws
+    those and no others."""
+
+    def test_one_drawn_case_per_scene_and_backend(self):
+        with open(os.path.join(RESULTS, "summary.json"), encoding="utf-8") as f:
+            summary = json.load(f)
+        completed = {(c["scene"], c["backend"]) for c in summary["cases"] if c["status"] == "completed"}
+        drawn = [(c["scene"], c["backend"]) for c in summary["cases"] if c["drawn"]]
+        self.assertEqual(sorted(drawn), sorted(completed))
+
+    def test_the_renderer_draws_what_the_summary_marks(self):
+        with open(os.path.join(RESULTS, "summary.json"), encoding="utf-8") as f:
+            summary = json.load(f)
+        scene = summary["cases"][0]["scene"]
+        mine = [c for c in summary["cases"] if c["scene"] == scene and c["status"] == "completed"]
+        for c in mine:
+            c["drawn"] = c is mine[-1]  # not the smallest dt: the renderer must not choose again
+        chosen = scenes.drawn_cases(summary, RESULTS, scene)
+        self.assertEqual([case["id"] for _, case, _ in chosen], [mine[-1]["id"]])
+
+    def test_jumps_explained_in_drawn_cases_of_stepped_backends(self):
+        with open(os.path.join(RESULTS, "summary.json"), encoding="utf-8") as f:
+            summary = json.load(f)
+        with open(os.path.join(RESULTS, "report", "energy_jumps.json"), encoding="utf-8") as f:
+            jumps = json.load(f)["jumps"]
+        cases = {c["id"]: c for c in summary["cases"]}
+        for j in jumps:
+            self.assertTrue(cases[j["case"]]["drawn"], j["case"])
+            self.assertFalse(summary["backends"][j["backend"]]["event_driven"], j["case"])
+        self.assertTrue(summary["backends"]["event"]["event_driven"])
+        self.assertFalse(summary["backends"]["step"]["event_driven"])
 
 
 class MotionStrips(unittest.TestCase):
@@ -274,10 +309,20 @@ class HostileInputs(unittest.TestCase):
         self.assertIn("checks[3]: missing key 'status'", r.stderr)
         self.assertNotIn("Traceback", r.stderr)
 
+    def test_a_summary_without_drawn_cases_is_named(self):
+        s = copy.deepcopy(self.summary)
+        for c in s["cases"]:
+            del c["drawn"]
+        self.write(s)
+        r = render(self.results)
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("which the report draws ('drawn')", r.stderr)
+        self.assertIn("--resume", r.stderr)
+
     def test_truncated_case_file_named(self):
         # A case the report draws (`collide report` checks every other one before the renderer starts).
         scene = self.summary["cases"][0]["scene"]
-        case = scenes.representative_cases(self.summary, self.results, scene)[0][1]
+        case = scenes.drawn_cases(self.summary, self.results, scene)[0][1]
         path = os.path.join(self.results, case["result_file"])
         text = open(path, encoding="utf-8").read()
         with open(path, "w", encoding="utf-8") as f:

@@ -24,19 +24,13 @@ def scene_box(path):
         return None
 
 
-def representative_cases(summary, directory, scene):
-    """One finished case per backend for a scene: the smallest dt (the most accurate) and the
-    first seed, so the time series and pictures show each backend at its best setting. Only
-    these records are read (`collide report` has checked every listed record before the
-    renderer starts: core/run_reader, validation/case_result)."""
-    chosen = OrderedDict()
-    for case in summary["cases"]:
-        if case["scene"] != scene or case["status"] != "completed" or not case.get("result_file"):
-            continue
-        best = chosen.get(case["backend"])
-        if best is None or case["dt"] < best["dt"] or (case["dt"] == best["dt"] and case["seed"] < best["seed"]):
-            chosen[case["backend"]] = case
-    return [(backend, case, digest.load_case(directory, case)) for backend, case in chosen.items()]
+def drawn_cases(summary, directory, scene):
+    """[(backend, case, its record)] for the cases of a scene the report draws, one per backend,
+    as summary.json marks them (`drawn`: the rule is validation/summary/drawn_cases.h, one
+    definition, which `collide report` reads too for the jumps it explains). Only these records
+    are read (`collide report` has checked every listed record before the renderer starts)."""
+    return [(case["backend"], case, digest.load_case(directory, case)) for case in summary["cases"]
+            if case["scene"] == scene and case["drawn"]]
 
 
 def load_energy_jumps(directory):
@@ -130,7 +124,7 @@ def _with_progress(pool, scenes):
 
 def sections(summary, directory, a):
     """Every scene's section, in scene order."""
-    chosen_by_scene = OrderedDict((scene, representative_cases(summary, directory, scene)) for scene in a.scenes)
+    chosen_by_scene = OrderedDict((scene, drawn_cases(summary, directory, scene)) for scene in a.scenes)
     requests = jumps_by_scene(a, load_energy_jumps(directory))
     cores = max(1, os.cpu_count() or 1)
     _SHARED.update(summary=summary, directory=directory, a=a, chosen=chosen_by_scene, requests=requests)
