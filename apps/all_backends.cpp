@@ -14,12 +14,16 @@ namespace collide {
 
 const std::vector<BackendInfo>& all_backends() {
     static const std::vector<BackendInfo> backends = {
-        {"event", "double", "exact event-driven hard disks (EDMD), serial: the reference", &EventSolver::supports,
-         [](const BackendOptions&) -> std::unique_ptr<Solver> { return std::make_unique<EventSolver>(); }, false},
-        {"event-plain", "double", "the same exact event-driven method written plainly (binary heap, cell list), serial",
-         &PlainEventSolver::supports,
-         [](const BackendOptions&) -> std::unique_ptr<Solver> { return std::make_unique<PlainEventSolver>(); }, false,
-         false},  // not in a suite's "all" (BackendInfo::in_all)
+        {.name = "event", .precision = "double",
+         .description = "exact event-driven hard disks (EDMD), serial: the reference", .supports = &EventSolver::supports,
+         .create = [](const BackendOptions&) -> std::unique_ptr<Solver> { return std::make_unique<EventSolver>(); },
+         .event_driven = true},
+        {.name = "event-plain", .precision = "double",
+         .description = "the same exact event-driven method written plainly (binary heap, cell list), serial",
+         .supports = &PlainEventSolver::supports,
+         .create = [](const BackendOptions&) -> std::unique_ptr<Solver> { return std::make_unique<PlainEventSolver>(); },
+         .in_all = false,  // not in a suite's "all" (BackendInfo::in_all)
+         .event_driven = true},
         {"step", "double", "the two stepping rules (collide-first, integrate-first) in double, serial: the readable reference",
          [](const Scene&) -> std::optional<std::string> { return std::nullopt; },
          [](const BackendOptions&) -> std::unique_ptr<Solver> { return std::make_unique<StepSolver>(); }, false},

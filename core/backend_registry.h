@@ -28,6 +28,10 @@ struct BackendInfo {
     // measure every backend against the exact dynamics once (`event`), and the conformance
     // tests hold the plain exact solver against the tuned one. A suite that names it runs it.
     bool in_all = true;
+    // Whether the backend is event-driven: it jumps from collision to collision and has no time
+    // step dt. `collide explain` (and so the report's energy jumps) looks inside one step, so it
+    // refuses such a backend's cases; summary.json records it per backend (`event_driven`).
+    bool event_driven = false;
 };
 
 // Every backend compiled into this build, in a fixed order (event first: the reference).

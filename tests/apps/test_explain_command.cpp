@@ -1,6 +1,6 @@
 // `collide explain` as a user runs it: validate a one-case suite, then name the step of the
 // case's largest energy change (the worked example of docs/stepping-rules.md), as text and as
-// JSON; and the refusals: an unknown case, the exact solver, an interval without a whole step,
+// JSON; and the refusals: an unknown case, the exact solvers, an interval without a whole step,
 // a case whose scene file was edited since the run.
 #include <gtest/gtest.h>
 
@@ -23,7 +23,7 @@ using test::ScratchDirectory;
 // Returns (output directory, the case's id as summary.json records it).
 std::pair<std::string, std::string> validated(const ScratchDirectory& dir) {
     const std::string suite = dir.file("suite.toml");
-    test::write_text_file(suite, "name = \"explain\"\nbackends = [\"event\", \"step\"]\nreference = \"event\"\nseeds = [1]\n"
+    test::write_text_file(suite, "name = \"explain\"\nbackends = [\"event\", \"event-plain\", \"step\"]\nreference = \"event\"\nseeds = [1]\n"
                                  "scene_dir = \"" + std::string(COLLIDE_SOURCE_DIR) + "/data/scenes\"\n\n"
                                  "[[scene]]\nname = \"box_gas_1000\"\nduration = 1.1\ndt = [1e-3]\n");
     const auto r = run_program(COLLIDE_EXECUTABLE, {"validate", suite, "--out", dir.file("out")}, dir);
@@ -69,6 +69,10 @@ TEST(ExplainCommand, RefusesWhatItCannotExplain) {
     const auto exact = run_program(COLLIDE_EXECUTABLE, {"explain", out, "box_gas_1000__event__seed1"}, dir);
     EXPECT_NE(exact.exit_code, 0);
     EXPECT_TRUE(contains(exact.err, "ran on 'event', which has no time steps")) << exact.err;
+    // The rule is the backend's property (BackendInfo::event_driven), not a list of names.
+    const auto plain = run_program(COLLIDE_EXECUTABLE, {"explain", out, "box_gas_1000__event-plain__dt0.001__seed1"}, dir);
+    EXPECT_NE(plain.exit_code, 0);
+    EXPECT_TRUE(contains(plain.err, "ran on 'event-plain', which has no time steps")) << plain.err;
     const auto missing = run_program(COLLIDE_EXECUTABLE, {"explain", dir.file("nowhere"), case_id}, dir);
     EXPECT_NE(missing.exit_code, 0);
     EXPECT_TRUE(contains(missing.err, "nowhere")) << missing.err;

@@ -29,7 +29,8 @@ def installed(prefix, *args, cwd=None):
 def test_the_layout(prefix):
     share = prefix / "share" / "collide"
     for path in ("data/scenes/head_on_equal.toml", "validation/suites/default.toml",
-                 "validation/report/make_report.py", "python/collide/gsd_export.py",
+                 "validation/report/make_report.py", "validation/report/templates/index.html.j2",
+                 "python/collide/gsd_export.py",
                  "python/collide/solver_runner.py", "validation/report/compare.py",
                  "data/scenes/physics/hard_disk_fluid.toml", "data/references/kolafa_rottner_2006.toml"):
         assert (share / path).is_file(), path

@@ -8,6 +8,7 @@ import copy
 import json
 import math
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -18,10 +19,13 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 REPORT = os.path.join(HERE, "..", "..", "validation", "report")
 sys.path.insert(0, REPORT)
 
+import analysis  # noqa: E402
 import digest  # noqa: E402
 import figures  # noqa: E402
-import make_report  # noqa: E402
 import physics  # noqa: E402
+import scenes  # noqa: E402
+import sections  # noqa: E402
+import templating  # noqa: E402
 import verdicts  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 
@@ -81,7 +85,8 @@ class DigestMatchesSummary(unittest.TestCase):
 
     def test_no_number_read_from_prose(self):
         """Issue: the report read numbers back out of the checks' prose and split case ids."""
-        for name in ("digest.py", "make_report.py", "figures.py", "verdicts.py"):
+        for name in ("digest.py", "make_report.py", "analysis.py", "sections.py", "scenes.py", "figures.py",
+                     "verdicts.py"):
             source = open(os.path.join(REPORT, name), encoding="utf-8").read()
             self.assertNotIn('["detail"]).', source, name)
             self.assertNotIn('split("__")', source, name)
@@ -113,12 +118,12 @@ class JumpExplained(unittest.TestCase):
         self.assertTrue(explained, "the mini suite's stepped gas has no jump explained")
         cases = {c["id"]: c for c in summary["cases"]}
         for j in explained:
-            self.assertEqual(j["explained"]["case"], j["case"])
+            self.assertEqual(j["explained"]["case"], j.get("same_as", j["case"]))  # a twin gets its twin's
             self.assertNotEqual(j["backend"], summary["reference"])
             self.assertLessEqual(j["t0"], j["explained"]["time_before"])
             self.assertLessEqual(j["explained"]["time_after"], j["t1"] + 1e-9)
             self.assertEqual(cases[j["case"]]["scene"], j["scene"])
-            note = make_report.explanation_text(j)
+            note = scenes.explanation_text(j)
             self.assertIn("In detail: the step ending at t = ", note)
             self.assertRegex(note, r"(an isolated pair|\d+ disks in contact at once|a disk at)")
         self.assertIn("In detail:", self.html_text())
@@ -131,12 +136,47 @@ class JumpExplained(unittest.TestCase):
         # The interval changed the energy by -0.01 of max K = 1000, i.e. by -10; the step by -5.
         jump = {"change": -0.01, "scale": 1000.0, "problem": "",
                 "explained": {"energy_change": -5.0, "description": "the step ending at t = 1 changes ..."}}
-        self.assertIn("That step is 50 % of the interval's change.", make_report.explanation_text(jump))
+        self.assertIn("That step is 50 % of the interval's change.", scenes.explanation_text(jump))
 
     def test_failure_is_reported(self):
-        note = make_report.explanation_text({"change": -0.01, "scale": 1.0, "explained": None,
+        note = scenes.explanation_text({"change": -0.01, "scale": 1.0, "explained": None,
                                              "problem": "case x: the rerun does not retrace the recorded run"})
         self.assertIn("The step could not be named: case x: the rerun does not retrace", note)
+
+
+class DrawnCases(unittest.TestCase):
+    """Which cases the report draws is summary.json's `drawn` (validation/summary/drawn_cases.h,
+    the one rule, which `collide report` reads for the jumps it explains); the renderer draws
+    those and no others."""
+
+    def test_one_drawn_case_per_scene_and_backend(self):
+        with open(os.path.join(RESULTS, "summary.json"), encoding="utf-8") as f:
+            summary = json.load(f)
+        completed = {(c["scene"], c["backend"]) for c in summary["cases"] if c["status"] == "completed"}
+        drawn = [(c["scene"], c["backend"]) for c in summary["cases"] if c["drawn"]]
+        self.assertEqual(sorted(drawn), sorted(completed))
+
+    def test_the_renderer_draws_what_the_summary_marks(self):
+        with open(os.path.join(RESULTS, "summary.json"), encoding="utf-8") as f:
+            summary = json.load(f)
+        scene = summary["cases"][0]["scene"]
+        mine = [c for c in summary["cases"] if c["scene"] == scene and c["status"] == "completed"]
+        for c in mine:
+            c["drawn"] = c is mine[-1]  # not the smallest dt: the renderer must not choose again
+        chosen = scenes.drawn_cases(summary, RESULTS, scene)
+        self.assertEqual([case["id"] for _, case, _ in chosen], [mine[-1]["id"]])
+
+    def test_jumps_explained_in_drawn_cases_of_stepped_backends(self):
+        with open(os.path.join(RESULTS, "summary.json"), encoding="utf-8") as f:
+            summary = json.load(f)
+        with open(os.path.join(RESULTS, "report", "energy_jumps.json"), encoding="utf-8") as f:
+            jumps = json.load(f)["jumps"]
+        cases = {c["id"]: c for c in summary["cases"]}
+        for j in jumps:
+            self.assertTrue(cases[j["case"]]["drawn"], j["case"])
+            self.assertFalse(summary["backends"][j["backend"]]["event_driven"], j["case"])
+        self.assertTrue(summary["backends"]["event"]["event_driven"])
+        self.assertFalse(summary["backends"]["step"]["event_driven"])
 
 
 class MotionStrips(unittest.TestCase):
@@ -215,11 +255,11 @@ class PredictedDrift(unittest.TestCase):
     def test_prediction_shown_beside_the_measurement(self):
         c = {"subject": "g__step__dt0.001__seed1", "check": "energy_drift", "status": "pass", "value": 0.029,
              "tolerance": 0.05, "comparison": "<=", "detail": "", "predicted": 0.025, "predicted_uncertainty": 0.008}
-        self.assertEqual(make_report.predicted_text(c, percent=True),
+        self.assertEqual(analysis.predicted_text(c, percent=True),
                          "drifts 2.9 % where the rule is expected to drift 2.5 ± 0.8 %")
-        self.assertEqual(make_report.predicted_text(c), "expected 0.025 ± 0.008")
+        self.assertEqual(analysis.predicted_text(c), "expected 0.025 ± 0.008")
         del c["predicted"]
-        self.assertEqual(make_report.predicted_text(c, percent=True), "")
+        self.assertEqual(analysis.predicted_text(c, percent=True), "")
 
 
 class IdenticalBackends(unittest.TestCase):
@@ -269,10 +309,20 @@ class HostileInputs(unittest.TestCase):
         self.assertIn("checks[3]: missing key 'status'", r.stderr)
         self.assertNotIn("Traceback", r.stderr)
 
+    def test_a_summary_without_drawn_cases_is_named(self):
+        s = copy.deepcopy(self.summary)
+        for c in s["cases"]:
+            del c["drawn"]
+        self.write(s)
+        r = render(self.results)
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("which the report draws ('drawn')", r.stderr)
+        self.assertIn("--resume", r.stderr)
+
     def test_truncated_case_file_named(self):
         # A case the report draws (`collide report` checks every other one before the renderer starts).
         scene = self.summary["cases"][0]["scene"]
-        case = make_report.representative_cases(self.summary, self.results, scene)[0][1]
+        case = scenes.drawn_cases(self.summary, self.results, scene)[0][1]
         path = os.path.join(self.results, case["result_file"])
         text = open(path, encoding="utf-8").read()
         with open(path, "w", encoding="utf-8") as f:
@@ -296,8 +346,27 @@ class HostileInputs(unittest.TestCase):
         html = open(os.path.join(self.results, "report", "index.html"), encoding="utf-8").read()
         self.assertIn("box2d[shipped]", html)
         self.assertIn("$x$ gas", html)
-        self.assertIn(f'id="{digest.anchor("scene", "$x$ gas")}"'.replace('"', "'"), html)
+        self.assertIn(f'id="{digest.anchor("scene", "$x$ gas")}"', html)
 
+
+    def test_markup_in_inputs_is_escaped(self):
+        """What an outside solver prints, a scene's description or a check's diagnostic reaches
+        the pages as text (the templates escape it), never as markup."""
+        s = copy.deepcopy(self.summary)
+        hostile = "<script>alert(1)</script> <b>bold</b> 'quoted' \"twice\" & more"
+        s["description"] = hostile
+        s["checks"][0].update(status="fail", detail=hostile)
+        s["passed"] = False
+        s["counts"]["fail"] += 1
+        self.write(s)
+        r = render(self.results)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        for name in ("index.html", "checks.html"):
+            page = open(os.path.join(self.results, "report", name), encoding="utf-8").read()
+            self.assertNotIn("<script>alert", page, name)
+            self.assertNotIn("<b>bold</b>", page, name)
+            self.assertIn("&lt;script&gt;alert(1)&lt;/script&gt; &lt;b&gt;bold&lt;/b&gt;", page, name)
+            self.assertIn("&amp; more", page, name)
 
 
 class PhysicsSectionDrawsTheSummary(unittest.TestCase):
@@ -322,13 +391,13 @@ class PhysicsSectionDrawsTheSummary(unittest.TestCase):
         self.assertEqual(lines, [("Equation of state", 1, 2, "event", "Kolafa & Rottner (2006)")])
 
     def test_table_shows_the_summary_numbers_and_verdicts(self):
-        html = physics.section(self.summary(), make_report.image)
+        html = templating.render("physics.html.j2", physics=physics.section(self.summary()))
         self.assertIn("8.4031 ± 0.0082", html)
         self.assertIn("Henderson (1975): 8.5944", html)
         self.assertIn("FAIL", html)
         self.assertIn("shown, not judged", html)
         self.assertIn("not resolved", html)  # the contact-shell row cannot tell the curves apart
-        self.assertIn("id='physics'", html)
+        self.assertIn('id="physics"', html)
 
     def test_figure_is_drawn_and_markdown_lists_the_failure(self):
         self.assertIsNotNone(physics.eos_figure(self.summary()))
@@ -337,8 +406,41 @@ class PhysicsSectionDrawsTheSummary(unittest.TestCase):
         self.assertIn("FAIL equation_of_state event area fraction 0.6", md)
 
     def test_a_suite_without_physics_rows_has_no_section(self):
-        self.assertEqual(physics.section({"physics": {"rows": [], "curves": []}}, make_report.image), "")
+        self.assertIsNone(physics.section({"physics": {"rows": [], "curves": []}}))
         self.assertEqual(physics.markdown({}), [])
+
+class HtmlFromTemplates(unittest.TestCase):
+    """The pages are laid out by templates/ (jinja2, autoescaped); the Python side hands them
+    data and writes no markup of its own."""
+
+    TAG = re.compile(r"<(/?)(p|table|tr|td|th|b|a|li|ul|figure|img|h[1-6]|div|span|details|summary|pre|br|nav|"
+                     r"code|style|script)[ >]")
+
+    def test_no_markup_in_the_python_modules(self):
+        for name in sorted(os.listdir(REPORT)):
+            if name.endswith(".py"):
+                source = open(os.path.join(REPORT, name), encoding="utf-8").read()
+                self.assertIsNone(self.TAG.search(source), f"{name} writes HTML: {self.TAG.search(source)}")
+                self.assertNotIn("html.escape", source, name)
+
+    def test_templates_escape(self):
+        page = templating.render("bias_fits.html.j2", bias_fits=[dict.fromkeys(
+            ("backend", "name", "fitted", "model", "z", "chi2", "chi2_model"), "<i>x</i>")])
+        self.assertNotIn("<i>", page)
+        self.assertIn("&lt;i&gt;x&lt;/i&gt;", page)
+
+    def test_a_missing_jinja2_is_named(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            os.mkdir(os.path.join(tmp, "jinja2"))
+            with open(os.path.join(tmp, "jinja2", "__init__.py"), "w", encoding="utf-8") as f:
+                f.write("raise ImportError('No module named jinja2')\n")
+            r = subprocess.run([sys.executable, os.path.join(REPORT, "make_report.py"), tmp], capture_output=True,
+                               text=True, env=dict(os.environ, PYTHONPATH=tmp))
+        self.assertNotEqual(r.returncode, 0)
+        self.assertIn("jinja2 is missing", r.stderr)
+        self.assertIn("python3-jinja2", r.stderr)
+        self.assertNotIn("Traceback", r.stderr)
+
 
 def check(scene, backend, name, status="pass", value=0.1, tolerance=1.0, quantised=False, subject=None, margin=None):
     return {"subject": subject or f"{scene}__{backend}__dt0.001__seed1", "scene": scene, "backend": backend,
@@ -364,7 +466,7 @@ class WhatAReaderWasToldWrongly(unittest.TestCase):
             self.assertIn(f'<a href="#{digest.anchor("backend", b)}">{b}', first_screen)
         self.assertIn("cost ÷ exact solver", first_screen)
         self.assertIn("cheapest on", first_screen)
-        a = make_report.Analysis(self.summary)
+        a = analysis.Analysis(self.summary)
         reference = next(v for v in a.verdicts if v["backend"] == self.summary["reference"])
         self.assertIn("exact", reference["verdict"])
 
@@ -428,7 +530,7 @@ class WhatAReaderWasToldWrongly(unittest.TestCase):
         self.assertEqual(row["worst"][2], "energy_drift")
         self.assertAlmostEqual(row["worst"][0], 0.4)
         self.assertEqual(row["ties"], 2)
-        self.assertIn("one of 2 checks at this value", make_report.margin_text(row, link=False))
+        self.assertIn("one of 2 checks at this value", analysis.margin_text(row))
 
     def test_counts_per_combination_and_cannot_run_apart(self):
         cases = [{"id": f"gas__box2d__dt0.001__seed{i}", "scene": "gas", "backend": "box2d", "status": "left_out"}
@@ -460,7 +562,7 @@ class WhatAReaderWasToldWrongly(unittest.TestCase):
         self.assertIn("detectable ≥", self.html)
         fits = [{"backend": "step", "observable": "pressure", "constant": 0.87, "standard_error": 0.1, "model": 1.12,
                  "model_uncertainty": 0.07, "chi2": 4.7, "degrees_of_freedom": 5, "chi2_model": 8.6, "points": 6}]
-        html = make_report.BIAS_FITS.render(rows=make_report.bias_fit_rows({"bias_fits": fits}))
+        html = templating.render("bias_fits.html.j2", bias_fits=sections.bias_fit_rows({"bias_fits": fits}))
         self.assertIn("0.87 ± 0.1", html)
         self.assertIn("1.12 ± 0.07", html)
         self.assertIn("8.6 on 6", html)

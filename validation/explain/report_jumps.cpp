@@ -1,11 +1,14 @@
 #include "validation/explain/report_jumps.h"
 
 #include <atomic>
-#include <map>
+#include <cstdint>
+#include <cstring>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <thread>
 
+#include "core/io/run_schema.h"
 #include "validation/explain/explain_case.h"
 #include "validation/run/case_result.h"
 
@@ -14,8 +17,6 @@ namespace {
 
 struct DrawnCase {
     std::string id, scene, backend;
-    double dt = 0;
-    std::int64_t seed = 0;
 };
 
 // Scenes whose energy_drift check was judged somewhere (a pass or a fail, not left out).
@@ -27,45 +28,85 @@ std::set<std::string> scenes_judging_energy(const nlohmann::json& summary) {
     return scenes;
 }
 
-// Per (scene, backend): the completed case with the smallest dt, then the first seed.
-std::vector<DrawnCase> drawn_cases(const nlohmann::json& summary) {
+bool event_driven(const nlohmann::json& summary, const std::string& backend) {
+    const auto backends = summary.find("backends");
+    if (backends == summary.end() || !backends->contains(backend)) return false;
+    return backends->at(backend).value("event_driven", false);
+}
+
+// The cases the report draws (summary.json's `drawn`) whose jumps are explained, in its order.
+std::vector<DrawnCase> cases_to_explain(const nlohmann::json& summary) {
     const std::set<std::string> scenes = scenes_judging_energy(summary);
-    const std::string reference = summary.at("reference").get<std::string>();
-    std::map<std::pair<std::string, std::string>, DrawnCase> chosen;
-    for (const auto& c : summary.at("cases")) {
-        if (c.at("status") != "completed" || !c.contains("result_file") || c.at("result_file").is_null()) continue;
-        DrawnCase d{c.at("id"), c.at("scene"), c.at("backend"), c.at("dt").is_number() ? c.at("dt").get<double>() : 0.0,
-                    c.at("seed").get<std::int64_t>()};
-        if (!scenes.count(d.scene) || d.backend == reference) continue;
-        auto [it, fresh] = chosen.try_emplace({d.scene, d.backend}, d);
-        if (!fresh && (d.dt < it->second.dt || (d.dt == it->second.dt && d.seed < it->second.seed))) it->second = d;
-    }
     std::vector<DrawnCase> out;
-    for (auto& [key, d] : chosen) out.push_back(d);
+    for (const auto& c : summary.at("cases")) {
+        DrawnCase d{c.at("id"), c.at("scene"), c.at("backend")};
+        if (c.value("drawn", false) && scenes.count(d.scene) && !event_driven(summary, d.backend)) out.push_back(d);
+    }
     return out;
 }
 
-nlohmann::json explain_one(const std::string& dir, const DrawnCase& d, const Suite* suite,
-                           const std::string& suite_problem, const std::vector<BackendInfo>& backends,
-                           std::mutex& opencl) {
-    const CaseResult record = read_case_result(dir + "/cases/" + d.id + ".toml");
-    const std::optional<IntervalJump> jump = largest_interval_jump(record.series);
-    if (!jump) return nullptr;
-    nlohmann::json out = {{"case", d.id}, {"scene", d.scene}, {"backend", d.backend}, {"t0", jump->t0},
-                          {"t1", jump->t1}, {"change", jump->change}, {"median", jump->median},
-                          {"scale", jump->scale}, {"explained", nullptr}, {"problem", ""}};
-    if (!suite) {
-        out["problem"] = suite_problem;
-        return out;
+// FNV-1a over the bits of a record's numbers: every metric of its series (the run schema's
+// columns) and its final state. Equal records hash equally; equal hashes are confirmed by
+// same_numbers before a case is taken for another's twin.
+std::uint64_t numbers_hash(const CaseResult& r) {
+    std::uint64_t h = 14695981039346656037ull;
+    auto mix = [&h](double v) {
+        unsigned char bytes[sizeof v];
+        std::memcpy(bytes, &v, sizeof v);
+        for (unsigned char b : bytes) h = (h ^ b) * 1099511628211ull;
+    };
+    for (const Metrics& m : r.series)
+        for (const MetricColumn& column : metric_columns) mix(column.value(m));
+    for (const auto* a : {&r.final_state.x, &r.final_state.y, &r.final_state.vx, &r.final_state.vy, &r.final_state.radius})
+        for (double v : *a) mix(v);
+    return h;
+}
+
+// Whether two records hold the same numbers, bit for bit (NaN equals NaN, -0 differs from 0).
+bool same_numbers(const CaseResult& a, const CaseResult& b) {
+    auto same = [](double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; };
+    if (a.series.size() != b.series.size()) return false;
+    for (std::size_t k = 0; k < a.series.size(); ++k)
+        for (const MetricColumn& column : metric_columns)
+            if (!same(column.value(a.series[k]), column.value(b.series[k]))) return false;
+    const Snapshot &x = a.final_state, &y = b.final_state;
+    for (auto [p, q] : {std::pair{&x.x, &y.x}, {&x.y, &y.y}, {&x.vx, &y.vx}, {&x.vy, &y.vy}, {&x.radius, &y.radius}}) {
+        if (p->size() != q->size()) return false;
+        for (std::size_t i = 0; i < p->size(); ++i)
+            if (!same((*p)[i], (*q)[i])) return false;
     }
-    try {
-        std::unique_lock<std::mutex> one_device_at_a_time(opencl, std::defer_lock);
-        if (d.backend.rfind("opencl", 0) == 0) one_device_at_a_time.lock();
-        out["explained"] = explanation_json(explain_case(dir, *suite, d.id, backends, {}, jump->t0, jump->t1));
-    } catch (const std::exception& e) {
-        out["problem"] = e.what();
-    }
-    return out;
+    return true;
+}
+
+CaseResult record_of(const std::string& dir, const DrawnCase& d) {
+    return read_case_result(dir + "/cases/" + d.id + ".toml");
+}
+
+// What the first pass finds in a drawn case's record: its jump, if any, and its numbers' hash;
+// or why the record could not be read.
+struct Found {
+    std::optional<IntervalJump> jump;
+    std::uint64_t hash = 0;
+    std::string unreadable;
+};
+
+nlohmann::json jump_json(const DrawnCase& d, const IntervalJump& jump) {
+    return {{"case", d.id}, {"scene", d.scene}, {"backend", d.backend}, {"t0", jump.t0}, {"t1", jump.t1},
+            {"change", jump.change}, {"median", jump.median}, {"scale", jump.scale}, {"explained", nullptr},
+            {"problem", ""}};
+}
+
+// Runs work(k) for k = 0 .. n-1 on up to `jobs` threads.
+template <typename Work>
+void for_each_index(std::size_t n, int jobs, Work work) {
+    std::atomic<std::size_t> next{0};
+    auto run = [&] {
+        for (std::size_t k = next++; k < n; k = next++) work(k);
+    };
+    std::vector<std::thread> threads;
+    for (int t = 1; t < jobs; ++t) threads.emplace_back(run);
+    run();
+    for (auto& t : threads) t.join();
 }
 
 }  // namespace
@@ -73,28 +114,61 @@ nlohmann::json explain_one(const std::string& dir, const DrawnCase& d, const Sui
 nlohmann::json report_energy_jumps(const std::string& dir, const nlohmann::json& summary, const Suite* suite,
                                    const std::string& suite_problem, const std::vector<BackendInfo>& backends,
                                    int jobs) {
-    const std::vector<DrawnCase> cases = drawn_cases(summary);
-    std::vector<nlohmann::json> found(cases.size());
-    std::atomic<std::size_t> next{0};
-    std::mutex opencl;
-    auto work = [&] {
-        for (std::size_t k = next++; k < cases.size(); k = next++) {
-            try {
-                found[k] = explain_one(dir, cases[k], suite, suite_problem, backends, opencl);
-            } catch (const std::exception& e) {  // its record unreadable: said, not dropped
-                found[k] = {{"case", cases[k].id}, {"scene", cases[k].scene}, {"backend", cases[k].backend},
-                            {"explained", nullptr}, {"problem", e.what()}};
-            }
+    const std::vector<DrawnCase> cases = cases_to_explain(summary);
+    std::vector<Found> found(cases.size());
+    for_each_index(cases.size(), jobs, [&](std::size_t k) {
+        try {
+            const CaseResult record = record_of(dir, cases[k]);
+            found[k].jump = largest_interval_jump(record.series);
+            found[k].hash = numbers_hash(record);
+        } catch (const std::exception& e) {  // its record unreadable: said, not dropped
+            found[k].unreadable = e.what();
         }
-    };
-    std::vector<std::thread> threads;
-    for (int t = 1; t < jobs; ++t) threads.emplace_back(work);
-    work();
-    for (auto& t : threads) t.join();
-    nlohmann::json jumps = nlohmann::json::array();
-    for (auto& j : found)
-        if (!j.is_null()) jumps.push_back(std::move(j));
-    return {{"jumps", jumps}};
+    });
+    // A case with a jump whose numbers equal an earlier one's on the same scene is its twin.
+    std::vector<std::optional<std::size_t>> twin(cases.size());
+    for (std::size_t k = 0; k < cases.size(); ++k)
+        for (std::size_t j = 0; j < k && found[k].jump; ++j)
+            if (found[j].jump && !twin[j] && cases[j].scene == cases[k].scene && found[j].hash == found[k].hash &&
+                same_numbers(record_of(dir, cases[j]), record_of(dir, cases[k]))) {
+                twin[k] = j;
+                break;
+            }
+    std::vector<nlohmann::json> jumps(cases.size());
+    std::mutex opencl;
+    for_each_index(cases.size(), jobs, [&](std::size_t k) {
+        const DrawnCase& d = cases[k];
+        if (!found[k].unreadable.empty()) {
+            jumps[k] = {{"case", d.id}, {"scene", d.scene}, {"backend", d.backend}, {"explained", nullptr},
+                        {"problem", found[k].unreadable}};
+            return;
+        }
+        if (!found[k].jump || twin[k]) return;
+        jumps[k] = jump_json(d, *found[k].jump);
+        if (!suite) {
+            jumps[k]["problem"] = suite_problem;
+            return;
+        }
+        try {
+            std::unique_lock<std::mutex> one_device_at_a_time(opencl, std::defer_lock);
+            if (d.backend.rfind("opencl", 0) == 0) one_device_at_a_time.lock();
+            jumps[k]["explained"] = explanation_json(
+                explain_case(dir, *suite, d.id, backends, {}, found[k].jump->t0, found[k].jump->t1));
+        } catch (const std::exception& e) {
+            jumps[k]["problem"] = e.what();
+        }
+    });
+    for (std::size_t k = 0; k < cases.size(); ++k)
+        if (twin[k]) {
+            jumps[k] = jump_json(cases[k], *found[k].jump);
+            jumps[k]["explained"] = jumps[*twin[k]]["explained"];
+            jumps[k]["problem"] = jumps[*twin[k]]["problem"];
+            jumps[k]["same_as"] = cases[*twin[k]].id;
+        }
+    nlohmann::json out = nlohmann::json::array();
+    for (auto& j : jumps)
+        if (!j.is_null()) out.push_back(std::move(j));
+    return {{"jumps", out}};
 }
 
 }  // namespace collide::validation

@@ -6,7 +6,6 @@ so the sweep's error is seen and not only read. The pictures are drawn by `colli
 Needs run files written with frames (`[output] frames = true` in the suite, as suites/full.toml
 has); a suite without frames gets a one-line note instead.
 """
-import html
 import os
 import subprocess
 import tempfile
@@ -63,22 +62,17 @@ def render_strip(collide, directory, case, ref):
             return f.read()
 
 
-def section(summary, directory, scene, image):
-    """HTML for one scene: the strips, a note why there are none, or "" for a scene that is not
-    compared by trajectory. `image(png, caption, alt)` is the report's figure helper."""
+def section(summary, directory, scene):
+    """One scene's strips for templates/scene.html.j2: None for a scene that is not compared by
+    trajectory, {"why": ...} where there are none, else {"frames", "reference", "strips": [{"png",
+    "backend", "dt"}]} (a strip `collide render` could not draw has no png)."""
     if scene not in trajectory_scenes(summary):
-        return ""
+        return None
     pair = chosen_pair(summary, directory, scene)
     collide = collide_program()
     if pair is None or collide is None:
-        why = "the suite stored no frames" if pair is None else "no collide program was found to draw them"
-        return f"<p>No motion strip for {html.escape(scene)}: {why}.</p>"
+        return {"why": "the suite stored no frames" if pair is None else "no collide program was found to draw them"}
     ref, cases = pair
-    parts = []
-    for case in cases:
-        png = render_strip(collide, directory, case, ref)
-        caption = (f"<b>Motion, {html.escape(scene)}: {html.escape(case['backend'])} at dt = {case['dt']:g}</b> "
-                   f"(filled, coloured by speed) against the exact {html.escape(ref['backend'])} solution (white "
-                   f"outlines), {FRAMES} frames from start to end. Red dots mark overlapping pairs.")
-        parts.append(image(png, caption, "motion strip"))
-    return "\n".join(parts)
+    return {"frames": FRAMES, "reference": ref["backend"],
+            "strips": [{"png": render_strip(collide, directory, case, ref), "backend": case["backend"],
+                        "dt": f"{case['dt']:g}"} for case in cases]}

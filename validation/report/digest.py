@@ -25,7 +25,7 @@ NUMBER = (int, float)
 SUMMARY_KEYS = {"suite": str, "passed": bool, "counts": dict, "cases": list, "checks": list,
                 "work_precision": list, "provenance": dict, "wall_seconds": NUMBER, "reference": str}
 CASE_KEYS = {"id": str, "scene": str, "backend": str, "status": str, "seed": int, "dt": NUMBER,
-             "duration": NUMBER, "wall_seconds": NUMBER}
+             "duration": NUMBER, "wall_seconds": NUMBER, "drawn": bool}
 CHECK_KEYS = {"subject": str, "scene": str, "backend": str, "check": str, "status": str, "detail": str}
 LINE_KEYS = {"scene": str, "backend": str, "points": list, "error_kind": str}
 POINT_KEYS = {"dt": NUMBER, "error": NUMBER, "seconds_per_time_unit": NUMBER}
@@ -59,6 +59,9 @@ def load_summary(directory):
     except json.JSONDecodeError as e:
         raise ReportInputError(f"{path}: not valid JSON: {e.msg} at line {e.lineno}, column {e.colno}") from None
     _require(summary, SUMMARY_KEYS, path, "top level")
+    if summary["cases"] and isinstance(summary["cases"][0], dict) and "drawn" not in summary["cases"][0]:
+        raise ReportInputError(f"{path}: the cases do not say which the report draws ('drawn'): written by an "
+                               "older collide; `collide validate SUITE --out DIR --resume` rewrites it")
     for i, case in enumerate(summary["cases"]):
         _require(case, CASE_KEYS, path, f"cases[{i}]")
     for i, check in enumerate(summary["checks"]):

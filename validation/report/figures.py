@@ -2,7 +2,7 @@
 
 Every function returns a PNG as bytes (or None when there is nothing to draw), reduced to a
 256-colour palette (the figures are flat colours; a third of the size of full colour);
-make_report.py embeds them as base64 and writes the caption beside each. Every number drawn is
+the templates (templates/*.html.j2) embed them as base64 with the caption beside each. Every number drawn is
 one summary.json or a case record holds. Axes carry units: lengths and times
 are in the scene's own units, run time in seconds of wall-clock time.
 """

@@ -4,7 +4,6 @@ Every number here comes from summary.json's "physics" object (validation/compare
 computes the rows, data/references/*.toml holds the published values and their citations); this
 module only lays them out and draws the equation-of-state figure.
 """
-import html
 import io
 
 import matplotlib
@@ -44,10 +43,10 @@ def _value(r):
 
 def _reference(r):
     if r["statistic"] == "p":
-        return html.escape(r["reference_name"])
-    text = f"{_num(r['reference'], 5)} ({html.escape(r['reference_name'])})"
+        return r["reference_name"]
+    text = f"{_num(r['reference'], 5)} ({r['reference_name']})"
     if r.get("second_reference") is not None:
-        text += f"; {html.escape(r['second_reference_name'])}: {_num(r['second_reference'], 5)}"
+        text += f"; {r['second_reference_name']}: {_num(r['second_reference'], 5)}"
     return text
 
 
@@ -80,17 +79,12 @@ def summary_lines(summary):
 
 
 def table(summary):
-    head = ("<tr><th>row</th><th>backend</th><th>at</th><th>measured (estimator)</th><th>value ± SE</th>"
-            "<th>replicates</th><th>published</th><th>score</th><th>verdict</th></tr>")
-    body = []
-    for r in rows(summary):
-        at = f"{html.escape(r['parameter_name'])} {_num(r['parameter'])}" if r["parameter_name"] else ""
-        cls = {"pass": "pass", "fail": "fail"}.get(r["verdict"], "lo")
-        body.append(f"<tr><td>{html.escape(ROW_TITLES.get(r['row'], r['row']))}</td><td>{html.escape(r['backend'])}</td>"
-                    f"<td>{at}</td><td>{html.escape(r['measured'])} ({html.escape(r['estimator'])})</td>"
-                    f"<td>{_value(r)}</td><td>{r['replicates']}</td><td>{_reference(r)}</td>"
-                    f"<td>{_score(r)}</td><td class='{cls}' title='{html.escape(r['detail'])}'>{html.escape(_verdict(r))}</td></tr>")
-    return f"<table class='physics'>{head}{''.join(body)}</table>"
+    """Every row, as the texts of its cells."""
+    return [{"row": ROW_TITLES.get(r["row"], r["row"]), "backend": r["backend"],
+             "at": f"{r['parameter_name']} {_num(r['parameter'])}" if r["parameter_name"] else "",
+             "measured": f"{r['measured']} ({r['estimator']})", "value": _value(r), "replicates": r["replicates"],
+             "reference": _reference(r), "score": _score(r), "verdict": _verdict(r), "detail": r["detail"],
+             "class": {"pass": "pass", "fail": "fail"}.get(r["verdict"], "lo")} for r in rows(summary)]
 
 
 def citations(summary):
@@ -99,7 +93,7 @@ def citations(summary):
         seen.setdefault(r["reference_name"], r["citation"])
     for c in (summary.get("physics") or {}).get("curves", []):
         seen.setdefault(c["name"], c["citation"])
-    return "<ul class='where'>" + "".join(f"<li><b>{html.escape(n)}</b>: {html.escape(c)}</li>" for n, c in seen.items()) + "</ul>"
+    return list(seen.items())
 
 
 def eos_figure(summary):
@@ -149,28 +143,12 @@ def eos_figure(summary):
     return buffer.getvalue()
 
 
-def section(summary, image):
-    """The section's HTML ('' when the suite has no physics rows)."""
+def section(summary):
+    """The section's data for templates/physics.html.j2 (None when the suite has no physics rows)."""
     if not rows(summary):
-        return ""
-    lines = "".join(f"<tr><td>{html.escape(t)}</td><td class='{'pass' if p == n else 'fail'}'>{p} of {n} pass</td>"
-                    f"<td>{html.escape(b)}</td><td>{html.escape(ref)}</td></tr>"
-                    for t, p, n, b, ref in summary_lines(summary))
-    figure = image(eos_figure(summary),
-                   "<b>Equation of state of the hard-disk fluid.</b> Top: Z against area fraction, the curves of "
-                   "the published equations of state and the measured points (± 1 SE over replicates). Bottom: "
-                   "the relative difference from the first curve, in %. A hollow point's error bar cannot tell the "
-                   "two published curves apart (not resolved).", "equation of state figure", "physics-eos")
-    return (f"<h2 id='physics'>Reference against physics</h2>"
-            "<p class='where'>Why the reference itself is right: the exact solver against published physics, not "
-            "against itself. Judged rows use exact estimators (the collision virial for Z, counted collisions); "
-            "rows of other backends, or made with the contact-shell estimator, are shown for comparison and not "
-            "judged. A judged row passes within |z| ≤ 3 (its standard error combined with the reference's stated "
-            "uncertainty), p ≥ the reference's threshold, or exact equality.</p>"
-            f"<div class='physics-top'><div><table class='digest'><tr><th>row</th><th>judged</th><th>backends</th>"
-            f"<th>published reference</th></tr>{lines}</table>"
-            f"<details><summary>Every row</summary>{table(summary)}{citations(summary)}</details></div>"
-            f"{figure}</div>")
+        return None
+    return {"lines": summary_lines(summary), "table": table(summary), "citations": citations(summary),
+            "figure": eos_figure(summary)}
 
 
 def markdown(summary):

@@ -5,7 +5,6 @@ A stability map is drawn for every scene swept over dt and one scene parameter (
 suite file): one panel per backend, one cell per (dt, value), coloured by the case's outcome.
 With several seeds per cell the most severe outcome is shown.
 """
-import html
 import tomllib
 from collections import OrderedDict
 
@@ -141,29 +140,26 @@ def first_failures(summary):
 def describe(case, summary=None):
     params = ", ".join(f"{p.split('.')[-1]} = {v:g}" for p, v in case.get("parameters", {}).items())
     where = (dt_text(summary, case) if summary else f"dt = {case['dt']:g}") + (f", {params}" if params else "")
-    return f"{html.escape(case['outcome'])} at {html.escape(where)}"
+    return f"{case['outcome']} at {where}"
+
+
+def _smallest_value(case):
+    return min(case.get("parameters", {}).values(), default=0.0)
 
 
 def first_failure_table(summary):
-    out = ["<table><tr><th>scene</th><th>backend</th><th>cases</th><th>failed</th>"
-           "<th>first failure by dt (smallest failing dt, then smallest value)</th>"
-           "<th>first failure by parameter (smallest failing value, then smallest dt)</th></tr>"]
+    """A row per (scene, backend): its cases, failures and first failures (None: stable)."""
+    out = []
     for (scene, backend), row in first_failures(summary).items():
-        failed = row["failed"]
-        if not failed:
-            cells = "<td class='pass'>none</td><td class='pass'>none</td>"
-        else:
-            def value(c):
-                return min(c.get("parameters", {}).values(), default=0.0)
-            by_dt = min(failed, key=lambda c: (c["dt"], value(c)))
-            by_value = min(failed, key=lambda c: (value(c), c["dt"]))
-            title = html.escape(by_dt.get("outcome_reason", ""))
-            cells = (f"<td class='fail' title='{title}'>{describe(by_dt, summary)}</td>"
-                     f"<td class='fail'>{describe(by_value, summary) if by_value.get('parameters') else ''}</td>")
-        out.append(f"<tr><td>{html.escape(scene)}</td><td>{html.escape(backend)}</td><td>{row['cases']}</td>"
-                   f"<td>{len(failed)}</td>{cells}</tr>")
-    out.append("</table>")
-    return "\n".join(out)
+        failed, entry = row["failed"], {"scene": scene, "backend": backend, "cases": row["cases"],
+                                        "failed": len(row["failed"]), "by_dt": None}
+        if failed:
+            by_dt = min(failed, key=lambda c: (c["dt"], _smallest_value(c)))
+            by_value = min(failed, key=lambda c: (_smallest_value(c), c["dt"]))
+            entry.update(by_dt=describe(by_dt, summary), reason=by_dt.get("outcome_reason", ""),
+                         by_value=describe(by_value, summary) if by_value.get("parameters") else "")
+        out.append(entry)
+    return out
 
 
 def first_failure_matrix(summary):
@@ -172,48 +168,29 @@ def first_failure_matrix(summary):
     rows = first_failures(summary)
     scenes = list(OrderedDict.fromkeys(s for s, _ in rows))
     backends = list(OrderedDict.fromkeys(b for _, b in rows))
-    out = ["<table id='first-failures' class='checks'><tr><th>scene</th>"
-           + "".join(f"<th>{html.escape(b)}</th>" for b in backends) + "</tr>"]
+    out = []
     for scene in scenes:
-        out.append(f"<tr><td>{html.escape(scene)}</td>")
+        cells = []
         for b in backends:
             row = rows.get((scene, b))
             if row is None:
-                out.append("<td class='left_out'>left out</td>")
+                cells.append({"class": "left_out", "text": "left out", "title": None})
             elif not row["failed"]:
-                out.append(f"<td class='pass'>stable ({row['cases']})</td>")
+                cells.append({"class": "pass", "text": f"stable ({row['cases']})", "title": None})
             else:
-                first = min(row["failed"], key=lambda c: (c["dt"], min(c.get("parameters", {}).values(), default=0.0)))
-                title = html.escape(first.get("outcome_reason", ""), quote=True)
-                out.append(f"<td class='fail' title='{title}'>{describe(first, summary)} "
-                           f"({len(row['failed'])}/{row['cases']})</td>")
-        out.append("</tr>")
-    out.append("</table>")
-    return "\n".join(out)
+                first = min(row["failed"], key=lambda c: (c["dt"], _smallest_value(c)))
+                cells.append({"class": "fail", "title": first.get("outcome_reason", ""),
+                              "text": f"{describe(first, summary)} ({len(row['failed'])}/{row['cases']})"})
+        out.append({"scene": scene, "cells": cells})
+    return {"backends": backends, "rows": out}
 
 
-def section(summary, image):
-    """The report's stability section (HTML), or "" without stability outcomes."""
-    if not has_outcomes(summary):
-        return ""
-    parts = ["<h2 id='stability'>Stability</h2>",
-             "<p>Every case is classified by its first failure mode, most severe first: crash (died or threw), "
-             "hang (time limit), nan, stalled (the median disk moved less than a tenth as far as in the exact "
-             "reference: motion lost, e.g. to float rounding), tunnelling (a pair passed through each other where the exact reference "
-             "has them apart), excessive_overlap (largest relative overlap above the backend's max_overlap "
-             "tolerance), energy_growth (energy rose above its start by more than the backend's energy_drift "
-             "tolerance times K(0), where physics lets it only fall), else stable. Definitions: "
-             "docs/stability.md. Hover a table cell for the measured value.</p>"]
-    for scene, (path, backends) in swept_scenes(summary).items():
-        parts.append(image(stability_map(scene, path, backends),
-                           f"<b>Stability map, {html.escape(scene)}.</b> One panel per backend; each cell is one "
-                           f"case at time step dt (horizontal) and scene key {html.escape(path)} (vertical; both "
-                           "axes list the swept values, equally spaced, so a geometric sweep reads as a log axis), "
-                           "coloured by its outcome (legend). The exact reference has no dt and is not drawn; "
-                           "white: no case.", f"stability map of {scene}"))
-    parts.append("<h3 id='first-failures-detail'>First failure of each backend, by dt and by parameter</h3>")
-    parts.append(first_failure_table(summary))
-    return "\n".join(parts)
+def section(summary):
+    """The report's stability section for templates/stability.html.j2: a map per swept scene
+    (PNG) and the first failures."""
+    maps = [{"scene": scene, "path": path, "png": stability_map(scene, path, backends)}
+            for scene, (path, backends) in swept_scenes(summary).items()]
+    return {"maps": maps, "first_failures": first_failure_table(summary)}
 
 
 def markdown(summary):
@@ -223,8 +200,7 @@ def markdown(summary):
              "|---|---|---|---|---|"]
     for (scene, backend), row in first_failures(summary).items():
         failed = row["failed"]
-        first = min(failed, key=lambda c: (c["dt"], min(c.get("parameters", {}).values(), default=0.0))) \
-            if failed else None
+        first = min(failed, key=lambda c: (c["dt"], _smallest_value(c))) if failed else None
         text = describe(first, summary) + ": " + first.get("outcome_reason", "").replace("|", "/") if first else "none"
-        lines.append(f"| {scene} | {backend} | {row['cases']} | {len(failed)} | {html.unescape(text)} |")
+        lines.append(f"| {scene} | {backend} | {row['cases']} | {len(failed)} | {text} |")
     return lines

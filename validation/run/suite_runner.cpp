@@ -263,6 +263,7 @@ SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& avail
     for (const BackendInfo& b : backends) {
         tolerances[b.name] = suite.tolerances.for_backend(b.name, b.precision);
         outcome.precision[b.name] = b.precision;
+        outcome.event_driven[b.name] = b.event_driven;
     }
     for (const CaseSpec& spec : specs) {
         outcome.cases.push_back(results.at(spec.id));

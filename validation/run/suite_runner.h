@@ -45,6 +45,7 @@ struct SuiteOutcome {
     double wall_seconds = 0;
     std::map<std::string, std::string> execution;  // ranks, hosts, jobs per rank (summary provenance)
     std::map<std::string, std::string> precision;  // backend -> "double", "float", ... (BackendInfo)
+    std::map<std::string, bool> event_driven;      // backend -> BackendInfo::event_driven
     std::size_t count(CheckStatus s) const;
     std::size_t physics_failures() const;
     bool passed() const { return count(CheckStatus::fail) == 0 && physics_failures() == 0; }

@@ -18,6 +18,7 @@
 #include "validation/judge/check_table.h"
 #include "validation/models/bias_fit.h"
 #include "validation/models/statistics_bias_model.h"
+#include "validation/summary/drawn_cases.h"
 
 namespace collide::validation {
 namespace {
@@ -84,7 +85,7 @@ double per_time_unit(const CaseResult& r) {
     return r.finished() && r.duration > 0 && std::isfinite(r.wall_seconds) ? r.wall_seconds / r.duration : std::nan("");
 }
 
-Json case_json(const CaseResult& r, const Classification* c, bool frames) {
+Json case_json(const CaseResult& r, const Classification* c, bool frames, bool drawn) {
     Object o;
     o.text("id", r.spec.id).text("scene", r.spec.scene).text("backend", r.spec.backend)
         .boolean("reference", r.spec.reference).text("group", group_id(r.spec))
@@ -96,7 +97,7 @@ Json case_json(const CaseResult& r, const Classification* c, bool frames) {
         .integer("steps", r.steps).integer("contacts", r.contacts)
         .field("seconds_per_time_unit", nullable(per_time_unit(r)))
         .text("result_file", "cases/" + r.spec.id + ".toml").text("hdf5_file", r.hdf5_file)
-        .boolean("frames", !r.hdf5_file.empty() && frames)
+        .boolean("frames", !r.hdf5_file.empty() && frames).boolean("drawn", drawn)
         .field("provenance", string_map(r.provenance));
     Object phases;
     for (const auto& [k, v] : r.phase_seconds) phases.number(k, v);
@@ -173,7 +174,8 @@ Json backends_json(const Suite& suite, const SuiteOutcome& outcome) {
         Object x;
         x.text("base", b.substr(0, b.find('['))).text("precision", precision)
             .boolean("float", precision.rfind("float", 0) == 0).boolean("reference", b == suite.reference)
-            .boolean("stepping_rule", follows_stepping_rules(b));
+            .boolean("stepping_rule", follows_stepping_rules(b))
+            .boolean("event_driven", outcome.event_driven.count(b) && outcome.event_driven.at(b));
         o.field(b, x.json());
     }
     return o.json();
@@ -344,11 +346,12 @@ std::string xml_escape(const std::string& s) {
 
 Json cases_json(const Suite& suite, const SuiteOutcome& outcome) {
     Json out = Json::array();
+    const std::vector<bool> drawn = drawn_cases(outcome.cases);
     for (std::size_t k = 0; k < outcome.cases.size(); ++k) {
         const Classification* c = k < outcome.classifications.size() ? &outcome.classifications[k] : nullptr;
         const CaseSpec& spec = outcome.cases[k].spec;
         const bool frames = spec.scene_index < suite.scenes.size() && stores_frames(suite, suite.scenes[spec.scene_index]);
-        out.push_back(case_json(outcome.cases[k], c, frames));
+        out.push_back(case_json(outcome.cases[k], c, frames, drawn[k]));
     }
     return out;
 }

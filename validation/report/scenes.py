@@ -1,0 +1,138 @@
+"""The data of index.html's scene sections: each scene's figures, drawn by forked processes (one
+scene each, as many at a time as there are cores), and the energy jumps `collide report`
+found and explained in C++ (energy_jumps.json). templates/scene.html.j2 lays them out.
+"""
+import json
+import math
+import multiprocessing
+import os
+import tomllib
+from collections import OrderedDict
+from concurrent.futures import ProcessPoolExecutor, as_completed
+
+import animations
+import digest
+import figures
+import progress
+
+
+def scene_box(path):
+    try:
+        with open(path, "rb") as f:
+            return tomllib.load(f).get("world", {}).get("box")
+    except (OSError, tomllib.TOMLDecodeError):
+        return None
+
+
+def drawn_cases(summary, directory, scene):
+    """[(backend, case, its record)] for the cases of a scene the report draws, one per backend,
+    as summary.json marks them (`drawn`: the rule is validation/summary/drawn_cases.h, one
+    definition, which `collide report` reads too for the jumps it explains). Only these records
+    are read (`collide report` has checked every listed record before the renderer starts)."""
+    return [(case["backend"], case, digest.load_case(directory, case)) for case in summary["cases"]
+            if case["scene"] == scene and case["drawn"]]
+
+
+def load_energy_jumps(directory):
+    """The energy jumps `collide report` found in the cases drawn and explained before the
+    renderer started (validation/explain/report_jumps.h): DIR/report/energy_jumps.json's list,
+    or none where the renderer runs without it (a test that calls it directly)."""
+    path = os.path.join(directory, "report", "energy_jumps.json")
+    if not os.path.exists(path):
+        return []
+    with open(path, encoding="utf-8") as f:
+        return json.load(f)["jumps"]
+
+
+def jumps_by_scene(a, jumps):
+    """{scene: {backend: (case, jump)}} for the backends drawn (an alias is drawn as its twin)."""
+    cases = {c["id"]: c for c in a.summary["cases"]}
+    out = {}
+    for j in jumps:
+        if j["backend"] not in a.aliases and j["case"] in cases:
+            out.setdefault(j["scene"], {})[j["backend"]] = (cases[j["case"]], j)
+    return out
+
+
+def explanation_text(jump):
+    """The step, the disks and the kind of contact behind a jump, as `collide explain` words
+    them (C++ wrote them into energy_jumps.json); or why they could not be named."""
+    if jump.get("problem") or not jump.get("explained"):
+        return f" The step could not be named: {jump.get('problem') or 'no explanation recorded'}."
+    found = jump["explained"]
+    share = ""
+    interval = jump["change"] * jump["scale"]  # the output interval's change
+    if interval and math.isfinite(found["energy_change"]):
+        share = f" That step is {100 * found['energy_change'] / interval:.0f} % of the interval's change."
+    return f" In detail: {found['description']}.{share}"
+
+
+def jump_notes(a, jumps):
+    """The notes under a scene's conservation figure, or None without a jump."""
+    notes = []
+    for backend, (case, j) in jumps.items():
+        note = {"backend": backend, "case": case["id"], "explanation": explanation_text(j), "change": None}
+        if "change" in j:  # else its record could not be read back for the search
+            note.update(change=f"{100 * j['change']:+.2g}", t0=f"{j['t0']:g}", t1=f"{j['t1']:g}",
+                        median=f"{100 * j['median']:.2g}")
+        notes.append(note)
+    if not notes:
+        return None
+    return {"notes": notes, "box2d": any(digest.facts(a.summary, b).get("base") == "box2d" for b in jumps)}
+
+
+def scene_section(summary, directory, a, scene, chosen, jumps):
+    """One scene's figures (PNG bytes, None where a figure has nothing to show) and notes; the
+    energy-jump notes are filled in by the process that lays the page out."""
+    section = {"scene": scene, "anchor": digest.anchor("scene", scene), "empty": not chosen, "jumps": None}
+    if not chosen:
+        return section
+    shown = [(b, r) for b, _, r in chosen if b not in a.aliases]
+    labels = {b: " = ".join([b] + [x for x, y in a.aliases.items() if y == b]) for b, _ in shown}
+    backend, case, result = chosen[0]
+    section.update(
+        work_precision=figures.work_precision(summary, scene, digest, a.aliases, a.fit),
+        shown=", ".join(f"{b} at dt = {c['dt']:g}, seed {c['seed']}" for b, c, _ in chosen),
+        conservation=figures.conservation(shown, scene, {b: j for b, (_, j) in jumps.items()}, labels),
+        overlaps=figures.overlap_histogram(shown, scene, labels),
+        configuration=figures.configuration(result, scene_box(summary.get("scene_files", {}).get(scene, "")),
+                                            scene, backend),
+        configuration_case=case["id"], motion=animations.section(summary, directory, scene))
+    return section
+
+
+_SHARED = {}  # what the drawing processes inherit when forked (nothing is pickled but a scene name)
+
+
+def _scene_section_worker(scene):
+    s = _SHARED
+    return scene_section(s["summary"], s["directory"], s["a"], scene, s["chosen"][scene], s["requests"].get(scene, {}))
+
+
+def _with_progress(pool, scenes):
+    """Each scene's section from the pool, in scene order, with a progress line on the way
+    (progress.py: in place on a terminal, quiet in short logs)."""
+    futures = [pool.submit(_scene_section_worker, scene) for scene in scenes]
+    line = progress.ProgressLine()
+    done = 0
+    for _ in as_completed(futures):
+        done += 1
+        line.update(done / len(futures), f"report: {done} of {len(futures)} scenes drawn")
+    line.finish()
+    return [f.result() for f in futures]
+
+
+def sections(summary, directory, a):
+    """Every scene's section, in scene order."""
+    chosen_by_scene = OrderedDict((scene, drawn_cases(summary, directory, scene)) for scene in a.scenes)
+    requests = jumps_by_scene(a, load_energy_jumps(directory))
+    cores = max(1, os.cpu_count() or 1)
+    _SHARED.update(summary=summary, directory=directory, a=a, chosen=chosen_by_scene, requests=requests)
+    try:
+        with ProcessPoolExecutor(max_workers=cores, mp_context=multiprocessing.get_context("fork")) as pool:
+            drawn = _with_progress(pool, a.scenes)
+    finally:
+        _SHARED.clear()
+    for section in drawn:
+        section["jumps"] = jump_notes(a, requests.get(section["scene"], {}))
+    return drawn
