@@ -209,6 +209,42 @@ TEST(Robustness, ResumeRerunsACaseWhoseHdf5FileIsTruncated) {
     EXPECT_TRUE(contains(resumed.err, "running head_on_equal__step__seed1 again: " + h5)) << resumed.err;
 }
 
+// ---- 5b. the report checks every case's files, drawn or not -------------------------------
+
+// `collide report` parses in full only the records it draws from (the smallest dt); every
+// other record is checked against its checksum and its HDF5 file against the counts in
+// summary.json. A changed byte in the record of the case not drawn (`step` at dt = 0.02; `step`
+// is held against `event`, so it runs at both time steps), or its run file cut short, is
+// still named.
+TEST(Robustness, ReportNamesADamagedRecordOrRunFileOfACaseItDoesNotDraw) {
+    ScratchDirectory dir;
+    const std::string suite = suite_file(dir, "name = \"head_on_equal\"\npath = \"" +
+                                                  test::scene_file("head_on_equal.toml") + "\"\ndt = [0.02, 0.01]\n",
+                                     120, "event");
+    const std::string out = dir.file("out");
+    ASSERT_EQ(run_collide({"validate", suite, "--out", out}, dir).exit_code, 0);
+    ASSERT_EQ(run_collide({"report", out}, dir).exit_code, 0) << "intact files: the report is written";
+    const std::string record = out + "/cases/head_on_equal__step__dt0.02__seed1.toml";
+    const std::string h5 = out + "/runs/head_on_equal__step__dt0.02__seed1.h5";
+    ASSERT_TRUE(fs::exists(record) && fs::exists(h5));
+
+    const std::string intact = test::read_text_file(record);
+    std::string edited = intact;
+    const auto at = edited.find("disks = 2");
+    ASSERT_NE(at, std::string::npos);
+    edited.replace(at, 9, "disks = 3");
+    test::write_text_file(record, edited);
+    const auto damaged = run_collide({"report", out}, dir);
+    EXPECT_NE(damaged.exit_code, 0);
+    EXPECT_TRUE(contains(damaged.err, record) && contains(damaged.err, "checksum does not match")) << damaged.err;
+
+    test::write_text_file(record, intact);
+    fs::resize_file(h5, fs::file_size(h5) / 2);
+    const auto truncated = run_collide({"report", out}, dir);
+    EXPECT_NE(truncated.exit_code, 0);
+    EXPECT_TRUE(contains(truncated.err, h5)) << truncated.err;
+}
+
 // ---- 6. a full disk: a clear message, no crash, no partial file ---------------------------
 
 TEST(Robustness, RunOnAFullDiskFailsWithTheReasonAndLeavesNothing) {

@@ -338,23 +338,32 @@ std::string this_host() {
 
 }  // namespace
 
-std::string case_files_problem(const CaseResult& result, const std::string& output_dir, bool frames) {
-    if (result.hdf5_file.empty()) return "";
+RunFileExpectation run_file_expectation(const CaseResult& result) {
+    RunFileExpectation e;
+    e.hdf5_file = result.hdf5_file;
+    const auto host = result.provenance.find("hdf5_host");
+    if (host != result.provenance.end()) e.hdf5_host = host->second;
+    e.outputs = result.series.size();
+    e.disks = result.disks;
+    return e;
+}
+
+std::string run_file_problem(const RunFileExpectation& expected, const std::string& output_dir, bool frames) {
+    if (expected.hdf5_file.empty()) return "";
     // A case run by an MPI rank on another node keeps its HDF5 file there (without
     // --gather-hdf5); the record says where, and only that node could check the file.
-    const auto host = result.provenance.find("hdf5_host");
-    if (host != result.provenance.end() && host->second != this_host()) return "";
-    const std::string path = output_dir + "/" + result.hdf5_file;
+    if (!expected.hdf5_host.empty() && expected.hdf5_host != this_host()) return "";
+    const std::string path = output_dir + "/" + expected.hdf5_file;
     if (!std::filesystem::is_regular_file(path)) return path + ": missing";
     try {
         // Every check of the run file (core/io/run_reader.h), then its agreement with the record.
         const RunFile run(path);
-        if (run.output_count() != result.series.size())
+        if (run.output_count() != expected.outputs)
             return path + ": " + std::to_string(run.output_count()) + " outputs where the case record has " +
-                   std::to_string(result.series.size());
-        if (result.disks && run.disk_count() != result.disks)
+                   std::to_string(expected.outputs);
+        if (expected.disks && run.disk_count() != expected.disks)
             return path + ": " + std::to_string(run.disk_count()) + " disks where the case record has " +
-                   std::to_string(result.disks);
+                   std::to_string(expected.disks);
         if (frames && run.has_frames()) run.verify_frames();
     } catch (const RunFileError& e) {
         return e.what();
@@ -363,5 +372,11 @@ std::string case_files_problem(const CaseResult& result, const std::string& outp
     }
     return "";
 }
+
+std::string case_files_problem(const CaseResult& result, const std::string& output_dir, bool frames) {
+    return run_file_problem(run_file_expectation(result), output_dir, frames);
+}
+
+void verify_case_record(const std::string& path) { verified_record_text(path); }
 
 }  // namespace collide::validation

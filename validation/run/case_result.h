@@ -75,4 +75,19 @@ CaseSpec case_spec_from_text(const std::string& text);
 // stored frames are left unread (`collide report` reads none; `collide render` checks those it draws).
 std::string case_files_problem(const CaseResult& result, const std::string& output_dir, bool frames = true);
 
+// What a case's HDF5 file must agree with: where it is (relative to the output directory, ""
+// if none), the host that wrote it when an MPI rank kept it on its own node, and the record's
+// counts of outputs and disks. From a record, or from the case's entry in summary.json.
+struct RunFileExpectation {
+    std::string hdf5_file, hdf5_host;
+    std::size_t outputs = 0, disks = 0;
+};
+RunFileExpectation run_file_expectation(const CaseResult& result);
+std::string run_file_problem(const RunFileExpectation& expected, const std::string& output_dir, bool frames);
+
+// Throws std::runtime_error naming the file when the record's bytes do not match its checksum
+// (cut short, edited, damaged); parses nothing. `collide report` checks every record so and
+// parses those it reads.
+void verify_case_record(const std::string& path);
+
 }  // namespace collide::validation

@@ -95,6 +95,7 @@ Json case_json(const CaseResult& r, const Classification* c, bool frames, bool d
         .integer("disks", (long long)r.disks).number("duration", r.duration)
         .number("wall_seconds", r.wall_seconds).number("warmup_seconds", r.warmup_seconds)
         .integer("steps", r.steps).integer("contacts", r.contacts)
+        .integer("outputs", (long long)r.series.size())
         .field("seconds_per_time_unit", nullable(per_time_unit(r)))
         .text("result_file", "cases/" + r.spec.id + ".toml").text("hdf5_file", r.hdf5_file)
         .boolean("frames", !r.hdf5_file.empty() && frames).boolean("drawn", drawn)
