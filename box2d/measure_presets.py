@@ -11,17 +11,20 @@ its tuned value to its shipped one, on three scenes:
            the kinetic energy lost (Box2D's translation cap of 2 m per step)
 
 Usage:  box2d/measure_presets.py [--collide build/release/collide] [--out DIR]
-Needs Python 3 with numpy and h5py (Debian: python3-numpy, python3-h5py).
+Needs Python 3 with numpy (Debian: python3-numpy) and the `collide` module built beside the
+program (build/release/python), whose read_run reads the run files.
 """
 import argparse
 import os
 import subprocess
+import sys
 
-import h5py
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SCENES = os.path.join(HERE, "..", "data", "scenes")
+sys.path.insert(0, os.path.join(HERE, "..", "validation", "report"))
+from collide_program import collide_module  # noqa: E402
 
 
 def lanes_scene(lanes=50, radius=0.05, speed=250.0, dt=1e-3):
@@ -39,31 +42,32 @@ def lanes_scene(lanes=50, radius=0.05, speed=250.0, dt=1e-3):
 
 
 def run(collide, scene_text, options, path):
-    """Runs the scene on box2d with `options` as its [backend.box2d] table."""
+    """Runs the scene on box2d with `options` as its [backend.box2d] table; its run file as
+    collide.read_run gives it."""
     table = "\n".join(f"{k} = {v}" for k, v in options.items())
     with open(path + ".toml", "w") as f:
         f.write(scene_text + f"\n[backend.box2d]\n{table}\n")
     subprocess.run([collide, "run", path + ".toml", "-b", "box2d", "-o", path + ".h5", "--frames"],
                    check=True, stdout=subprocess.DEVNULL)
-    return h5py.File(path + ".h5", "r")
+    return collide_module(collide).read_run(path + ".h5", frames=True)
 
 
 def energy_column(f):
-    k = f["metrics/kinetic_energy"][:]
+    k = f["metrics"]["kinetic_energy"]
     return f"{k[-1] / k[0] - 1:+.2e}"
 
 
 def pile_column(f):
-    k = f["metrics/kinetic_energy"][:]
-    moving = np.count_nonzero(f["particles/inv_mass"][:])
-    asleep = int(f["stats/counters"].attrs.get("asleep_bodies", 0))
-    return f"{k[-1] / moving:.2e}; {asleep} asleep; overlap {f['metrics/max_overlap'][-1]:.3f}"
+    k = f["metrics"]["kinetic_energy"]
+    moving = np.count_nonzero(f["particles"]["inv_mass"])
+    asleep = int(f["stats"]["counters"].get("asleep_bodies", 0))
+    return f"{k[-1] / moving:.2e}; {asleep} asleep; overlap {f['metrics']['max_overlap'][-1]:.3f}"
 
 
 def speed_column(f):
-    x = f["frames/position"][-1, :, 0]
+    x = f["positions"][-1, :, 0]
     through = np.mean(x[0::2] > x[1::2])
-    k = f["metrics/kinetic_energy"][:]
+    k = f["metrics"]["kinetic_energy"]
     return f"{through:.2f} through; K lost {1 - k[-1] / k[0]:.2f}"
 
 
@@ -90,10 +94,10 @@ def main():
         cells = []
         for name, (text, column) in scenes.items():
             opts = options if options is not None else {"restitution_threshold": 1.0 / scales[name]}
-            with run(args.collide, text, opts, os.path.join(args.out, f"{name}_{label}")) as f:
-                if label == "tuned":
-                    scales[name] = float(f.attrs["backend_box2d_length_scale"])
-                cells.append(column(f))
+            f = run(args.collide, text, opts, os.path.join(args.out, f"{name}_{label}"))
+            if label == "tuned":
+                scales[name] = float(f["attributes"]["backend_box2d_length_scale"])
+            cells.append(column(f))
         print(f"| {label} | " + " | ".join(cells) + " |", flush=True)
 
 

@@ -194,7 +194,8 @@ void check_export(const std::string& run, const std::string& out) {
 }
 
 // A run file read back through the checked reader (core/io/run_reader.h): every check `collide
-// render` and `collide report` make, then the columns of the run schema as NumPy arrays. With
+// render` and `collide report` make, then the columns of the run schema as NumPy arrays and the
+// solver's statistics (/stats, as Simulation.stats() gives them). With
 // `frames`, every frame as (T, N, 2) arrays (each checked as it is read).
 py::dict read_run(const std::string& path, bool frames) {
     const RunFile run(path);
@@ -211,6 +212,7 @@ py::dict read_run(const std::string& path, bool frames) {
     d["attributes"] = attributes;
     d["metrics"] = metric_series_dict(series);
     d["particles"] = particles;
+    d["stats"] = stats_dict(run.stats());
     d["has_frames"] = run.has_frames();
     if (frames && !run.has_frames())
         throw std::invalid_argument(path + ": written without frames: rerun with frames=True (`collide run --frames`)");

@@ -1,6 +1,6 @@
 // `collide report DIR`: renders DIR/report/index.html (self-contained, figures embedded) and
 // DIR/report/summary.md from the results of `collide validate`, with the Python renderer in
-// validation/report/ run by the interpreter CMake found (Debian's matplotlib, numpy, h5py).
+// validation/report/ run by the interpreter CMake found (Debian's matplotlib, numpy, jinja2).
 
 #include <algorithm>
 #include <atomic>

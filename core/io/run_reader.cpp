@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 
 #include "core/io/output_file.h"
 #include "core/io/run_schema.h"
@@ -54,6 +55,31 @@ hsize_t length_of(hid_t file, const std::string& name, const std::string& path) 
     return dims[0];
 }
 
+// Every attribute name of `object`, in name order; false when they cannot be listed (damage).
+bool attribute_names(hid_t object, std::vector<std::string>& names) {
+    auto collect = [](hid_t, const char* name, const H5A_info_t*, void* data) -> herr_t {
+        static_cast<std::vector<std::string>*>(data)->push_back(name);
+        return 0;
+    };
+    return H5Aiterate2(object, H5_INDEX_NAME, H5_ITER_INC, nullptr, collect, &names) >= 0;
+}
+
+// The scalar attribute `name` of `object`, an 8-byte integer (or float) as the writer stores it.
+template <typename Number>
+Number number_attribute(hid_t object, const std::string& name, const std::string& where) {
+    constexpr bool integer = std::is_integral_v<Number>;
+    Hdf5Handle attribute = attribute_handle(H5Aexists(object, name.c_str()) > 0 ? H5Aopen(object, name.c_str(), H5P_DEFAULT) : -1);
+    Hdf5Handle type = datatype_handle(attribute ? H5Aget_type(attribute.get()) : -1);
+    Hdf5Handle space = dataspace_handle(attribute ? H5Aget_space(attribute.get()) : -1);
+    Number value{};
+    if (!type || H5Tget_class(type.get()) != (integer ? H5T_INTEGER : H5T_FLOAT) || H5Tget_size(type.get()) != 8 ||
+        !space || H5Sget_simple_extent_ndims(space.get()) != 0 ||
+        H5Aread(attribute.get(), integer ? H5T_NATIVE_INT64 : H5T_NATIVE_DOUBLE, &value) < 0)
+        throw RunFileError(where + ": attribute '" + name + "' missing, not one " + (integer ? "int64" : "float64") +
+                           " or unreadable (damaged?)");
+    return value;
+}
+
 }  // namespace
 
 RunFile::RunFile(const std::string& path) : path_(path) {
@@ -95,15 +121,27 @@ std::string RunFile::attribute(const std::string& name) const {
 // Every root attribute (all are text), by name, for their checksum.
 std::map<std::string, std::string> RunFile::root_attributes() const {
     std::vector<std::string> names;
-    auto collect = [](hid_t, const char* name, const H5A_info_t*, void* data) -> herr_t {
-        static_cast<std::vector<std::string>*>(data)->push_back(name);
-        return 0;
-    };
-    if (H5Aiterate2(file_.get(), H5_INDEX_NAME, H5_ITER_INC, nullptr, collect, &names) < 0)
-        fail("cannot list the root attributes (damaged?)");
+    if (!attribute_names(file_.get(), names)) fail("cannot list the root attributes (damaged?)");
     std::map<std::string, std::string> attributes;
     for (const std::string& name : names) attributes[name] = attribute(name);
     return attributes;
+}
+
+SolverStats RunFile::stats() const {
+    const std::string where = path_ + ": /stats";
+    Hdf5Handle group = group_handle(has_link(file_.get(), "stats") ? H5Gopen2(file_.get(), "stats", H5P_DEFAULT) : -1);
+    if (!group) fail("/stats: missing, or not a group");
+    SolverStats stats;
+    stats.steps = number_attribute<std::int64_t>(group.get(), "steps", where);
+    stats.contacts = number_attribute<std::int64_t>(group.get(), "contacts", where);
+    for (auto [name, values] : {std::pair{"phase_seconds", &stats.phase_seconds}, {"counters", &stats.counters}}) {
+        Hdf5Handle inner = group_handle(has_link(group.get(), name) ? H5Gopen2(group.get(), name, H5P_DEFAULT) : -1);
+        std::vector<std::string> keys;
+        if (!inner || !attribute_names(inner.get(), keys)) fail(std::string("/stats/") + name + ": missing, or unreadable");
+        for (const std::string& key : keys)
+            (*values)[key] = number_attribute<double>(inner.get(), key, where + "/" + name);
+    }
+    return stats;
 }
 
 void RunFile::check_format() const {

@@ -30,6 +30,7 @@
 #include "core/io/hdf5_handle.h"
 #include "core/metrics.h"
 #include "core/particle_state.h"
+#include "core/solver.h"
 
 namespace collide {
 
@@ -59,6 +60,9 @@ public:
     Metrics metrics_at(std::size_t k) const;
     // Every root attribute (all are text), by name.
     std::map<std::string, std::string> root_attributes() const;
+    // /stats as the run recorded it (RunWriter::write_stats): steps and contacts, the wall time
+    // per phase and the backend's counters; each attribute an 8-byte number of its kind.
+    SolverStats stats() const;
 
     // Frames (only with has_frames()): the time of each, and the state at frame k.
     const std::vector<double>& frame_times() const { return frame_times_; }

@@ -5,7 +5,9 @@
                                          [--only NAME ...]
 
 Each figure runs `collide run` (or `collide bench`) on scenes of the library, sometimes with one
-[run] key changed, reads the HDF5 run files (docs/output-format.md) and plots with matplotlib.
+[run] key changed, reads the run files with collide.read_run (the Python module built beside the
+program: the same checked reader as every other command, docs/output-format.md) and plots with
+matplotlib.
 Nothing is simulated here. The figures of speed depend on the machine they are made on; their
 captions in the course say so.
 """
@@ -20,7 +22,6 @@ import sys
 import tempfile
 import tomllib
 
-import h5py
 import matplotlib
 
 matplotlib.use("Agg")
@@ -32,6 +33,7 @@ SCENES = ROOT / "data" / "scenes"
 # The guard and atomic write every output of collide goes through (docs/refusals.md).
 sys.path.insert(0, str(ROOT / "validation" / "report"))
 import safe_output  # noqa: E402
+from collide_program import collide_module  # noqa: E402  (collide.read_run reads the run files)
 
 
 class Lab:
@@ -39,6 +41,7 @@ class Lab:
 
     def __init__(self, collide, scratch):
         self.collide = collide
+        self.reader = collide_module(collide)
         self.scratch = pathlib.Path(scratch)
         self.count = 0
         self.bench_sizes = None
@@ -68,7 +71,7 @@ class Lab:
         done = subprocess.run(command, capture_output=True, text=True)
         if done.returncode != 0:
             raise SystemExit(f"make_figures: {' '.join(command)} failed:\n{done.stderr}")
-        return h5py.File(out, "r")
+        return self.reader.read_run(out, frames=frames)  # the checked C++ reader (core/io/run_reader.h)
 
 
 def finish(fig, ax, out, name, xlabel, ylabel, title, legend=True, legend_loc=None):
@@ -121,7 +124,7 @@ FEW_SPEED = r"($v_0$)"
 
 def head_on_mass_ratio(lab, out):
     f = lab.run(SCENES / "head_on_mass_ratio_10.toml", "event", frames=True)
-    t, v = f["frames/time"][:], f["frames/velocity"][:, :, 0]
+    t, v = f["frame_times"], f["velocities"][:, :, 0]
     fig, ax = plt.subplots(figsize=(6, 3.2))
     ax.plot(t, v[:, 0], label="light disk (m = 1)")
     ax.plot(t, v[:, 1], label="heavy disk (m = 10)")
@@ -134,7 +137,7 @@ def head_on_mass_ratio(lab, out):
 
 def glancing(lab, out):
     f = lab.run(SCENES / "glancing.toml", "event", frames=True)
-    t, x, v = f["frames/time"][:], f["frames/position"][:], f["frames/velocity"][:]
+    t, x, v = f["frame_times"], f["positions"][:], f["velocities"][:]
     fig, ax = plt.subplots(figsize=(6, 3.4))
     for i, label in enumerate(("striker", "target")):
         ax.plot(x[:, i, 0], x[:, i, 1], marker=".", ms=3, label=label)
@@ -171,8 +174,8 @@ def pi_circle(lab, out):
     scene = lab.scene("stiff/pi_billiard_k2.toml", output_interval="0.002")
     scene.write_text(scene.read_text().replace("mass = 10000.0", "mass = 100.0"))
     f = lab.run(scene, "event", frames=True)
-    v = f["frames/velocity"][:, :, 0]
-    m = f["particles/mass"][:]
+    v = f["velocities"][:, :, 0]
+    m = f["particles"]["mass"]
     a, b = np.sqrt(m[0]) * v[:, 0], np.sqrt(m[1]) * v[:, 1]
     keep = np.r_[True, (np.abs(np.diff(a)) + np.abs(np.diff(b))) > 1e-12]
     a, b = a[keep], b[keep]
@@ -211,7 +214,7 @@ def rayleigh(s, kT):
 def maxwell(lab, out):
     # physics/maxwell_relaxation: every disk starts at speed 1; kT = 1/2 is fixed by the energy.
     f = lab.run(SCENES / "physics/maxwell_relaxation.toml", "event", frames=True)
-    t, v = f["frames/time"][:], f["frames/velocity"][:]
+    t, v = f["frame_times"], f["velocities"][:]
     speed = np.hypot(v[..., 0], v[..., 1])
     kT = float(np.mean(0.5 * speed[0] ** 2))
     s = np.linspace(0, 3.5 * np.sqrt(kT), 200)
@@ -246,7 +249,7 @@ def block_z(lab, scene_at, durations):
     2-D): the mean over the blocks and its standard error."""
     counts = []
     for duration in durations:
-        c = lab.run(scene_at(duration), "event")["stats/counters"].attrs
+        c = lab.run(scene_at(duration), "event")["stats"]["counters"]
         counts.append((float(c["virial_sum"]), float(c["kinetic_integral"]), float(c["simulated_time"])))
     zs = [1 + (w1 - w0) / (2 * (t1 - t0)) / ((k1 - k0) / (t1 - t0))
           for (w0, k0, t0), (w1, k1, t1) in zip(counts, counts[1:])]
@@ -300,8 +303,8 @@ def equation_of_state(lab, out):
 
 def snapshot(lab, out):
     f = lab.run(SCENES / "box_gas_1000.toml", "event", frames=True)
-    x, r = f["frames/position"][-1], f["particles/radius"][:]
-    v = f["frames/velocity"][-1]
+    x, r = f["positions"][-1], f["particles"]["radius"]
+    v = f["velocities"][-1]
     fig, ax = plt.subplots(figsize=(5.4, 4.6))
     speed = np.hypot(v[:, 0], v[:, 1])
     norm = matplotlib.colors.Normalize(0, speed.max())
@@ -328,19 +331,19 @@ def list_scene(x, v, box, duration, interval, boundary="reflect"):
 def chaos(lab, out):
     # Two event runs of box_gas_1000 whose initial states differ by 1e-12 in one coordinate.
     start = lab.run(SCENES / "box_gas_1000.toml", "event", frames=True)
-    x, v = start["frames/position"][0], start["frames/velocity"][0]
+    x, v = start["positions"][0], start["velocities"][0]
     runs = []
     for shift in (0.0, 1e-12):
         moved = x.copy()
         moved[0, 0] += shift
         scene = lab.write_scene(list_scene(moved, v, "[0.0, 0.0, 50.0, 50.0]", "10.0", "0.05"), "chaos")
         runs.append(lab.run(scene, "event", frames=True))
-    t = runs[0]["frames/time"][:]
+    t = runs[0]["frame_times"]
     separation = np.sqrt(sum(np.sum((runs[0][k][:] - runs[1][k][:]) ** 2, axis=(1, 2))
-                             for k in ("frames/position", "frames/velocity")))
+                             for k in ("positions", "velocities")))
     fit = (separation > 1e-11) & (separation < 1e-2)
     slope, intercept = np.polyfit(t[fit], np.log(separation[fit]), 1)
-    rate = float(start["stats/counters"].attrs["collision_rate"])
+    rate = float(start["stats"]["counters"]["collision_rate"])
     fig, ax = plt.subplots(figsize=(6, 3.4))
     ax.semilogy(t, separation, label="phase-space distance of the two runs")
     ax.semilogy(t[fit], np.exp(intercept + slope * t[fit]), "k--",
@@ -360,10 +363,10 @@ def enskog_rate(density, eta, kT):
 
 def haff(lab, out):
     f = lab.run(SCENES / "physics/haff_cooling.toml", "event")
-    t, K = f["metrics/time"][:], f["metrics/kinetic_energy"][:]
-    scene = tomllib.loads(f.attrs["scene_text"])   # the scene file the run read (docs/output-format.md)
+    t, K = f["metrics"]["time"], f["metrics"]["kinetic_energy"]
+    scene = tomllib.loads(f["attributes"]["scene_text"])   # the scene file the run read (docs/output-format.md)
     x0, y0, x1, y1 = scene["world"]["box"]
-    n, e = len(f["particles/mass"]), scene["physics"]["restitution"]
+    n, e = len(f["particles"]["mass"]), scene["physics"]["restitution"]
     T = K / n
     density = n / ((x1 - x0) * (y1 - y0))
     eta = density * np.pi / 4   # radius 1/2
@@ -399,10 +402,10 @@ def phase_mean_error(lab, name, striker, backend, dt, phases=6):
         text = f"x = {x0 + vx * shift!r}, y"
         scene = lab.scene(name, dt=f"{dt:g}")
         scene.write_text(scene.read_text().replace(f"x = {x0}, y", text, 1))
-        exact = lab.run(scene, "event", frames=True)["frames/position"][-1]
+        exact = lab.run(scene, "event", frames=True)["positions"][-1]
         f = lab.run(scene, backend, frames=True)
-        errors.append(np.max(np.linalg.norm(f["frames/position"][-1] - exact, axis=1)))
-        seconds.append(sum(float(s) for s in f["stats/phase_seconds"].attrs.values()))
+        errors.append(np.max(np.linalg.norm(f["positions"][-1] - exact, axis=1)))
+        seconds.append(sum(float(s) for s in f["stats"]["phase_seconds"].values()))
     return float(np.mean(errors)), float(np.std(errors, ddof=1) / np.sqrt(phases)), float(np.mean(seconds))
 
 
@@ -425,12 +428,12 @@ def cradle(lab, out):
     exact = None
     for backend, dt in (("event", "1e-3"), ("step", "1e-1"), ("step", "2e-2")):
         f = lab.run(lab.scene("stiff/newtons_cradle.toml", dt=dt), backend, frames=True)
-        t, x = f["frames/time"][:], f["frames/position"][:, 5, 0]
+        t, x = f["frame_times"], f["positions"][:, 5, 0]
         if exact is None:
             exact = x
             label = "event"
         else:   # the lasting lag: how far behind event the far disk ends, over its final speed
-            lag = (exact[-1] - x[-1]) / f["frames/velocity"][-1, 5, 0]
+            lag = (exact[-1] - x[-1]) / f["velocities"][-1, 5, 0]
             label = f"{backend}, dt = {dt}: ends {lag:.2g} behind"
         ax.plot(t, x, label=label)
     ax.set_xlim(0.5, 3)
@@ -442,7 +445,7 @@ def energy_crowd(lab, out):
     fig, ax = plt.subplots(figsize=(6, 3.2))
     for backend, dt in (("event", "1e-3"), ("step", "1e-3"), ("step", "2e-3")):
         f = lab.run(lab.scene("box_gas_1000.toml", dt=dt, duration="4.0"), backend)
-        t, k = f["metrics/time"][:], f["metrics/kinetic_energy"][:]
+        t, k = f["metrics"]["time"], f["metrics"]["kinetic_energy"]
         label = backend if backend == "event" else f"{backend}, dt = {dt}"
         ax.plot(t, (k - k[0]) / k[0], label=label)
     finish(fig, ax, out, "ch3_energy_crowd", TIME, r"$(K - K_0)/K_0$ (dimensionless)",
@@ -481,7 +484,7 @@ def overlap_series(lab, out):
     bins = np.logspace(-5, -1, 41)
     for backend in ("step", "cpu", "box2d"):
         f = lab.run(lab.scene("box_gas_1000.toml", duration="4.0", output_interval="0.02"), backend)
-        depth = f["metrics/max_overlap"][:]
+        depth = f["metrics"]["max_overlap"]
         ax.hist(depth[depth > 0], bins=bins, histtype="step", lw=1.2,
                 label=f"{backend} ({np.sum(depth == 0)} of {depth.size} times without overlap)")
     ax.axvline(predicted, color="k", ls="--", lw=0.8, label=r"$\langle|u|\rangle\,dt/\sigma$ = one step's approach")
@@ -495,7 +498,7 @@ def replicates(lab, out):
     z = []
     for seed in range(1, 6):
         f = lab.run(lab.scene("periodic_gas.toml", seed=str(seed), duration="2.0"), "event")
-        z.append(float(f["stats/counters"].attrs["pressure"]))
+        z.append(float(f["stats"]["counters"]["pressure"]))
     z = np.array(z)
     fig, ax = plt.subplots(figsize=(6, 3.0))
     names = [f"seed {s}" for s in range(1, 6)]
@@ -559,8 +562,8 @@ def threads(lab, out):
     names, rates = [], []
     for backend, extra in (("step", ()), ("cpu", ("--threads", "1")), ("cpu", ("--threads", "2"))):
         f = lab.run(scene, backend, extra=extra)
-        seconds = sum(float(s) for s in f["stats/phase_seconds"].attrs.values())
-        rates.append(1000 * int(f["stats"].attrs["steps"]) / seconds)
+        seconds = sum(float(s) for s in f["stats"]["phase_seconds"].values())
+        rates.append(1000 * int(f["stats"]["steps"]) / seconds)
         names.append(backend + (f", {extra[1]} thread{'s' if extra[1] != '1' else ''}" if extra else ""))
     ax.barh(names, rates)
     ax.categorical = "y"

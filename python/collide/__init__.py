@@ -88,6 +88,7 @@ def read_run(path, frames=False):
     metrics      name -> NumPy array, one per column of docs/output-format.md's /metrics
                  (int64 for the counts), and total_energy
     particles    radius, mass, inv_mass
+    stats        steps, contacts, phase_seconds and counters (/stats), as Simulation.stats()
     attributes   the root attributes: provenance, scene_text, seed, ...
     has_frames   whether the file holds frames
     With `frames=True` also frame_times (T,), positions and velocities (T, N, 2)."""

@@ -1,7 +1,11 @@
 """A run file's frames as a GSD file in HOOMD's schema, for OVITO, freud and HOOMD
 (docs/exporting.md). Run as a script by `collide export --format gsd`, imported by
 `collide.export`; needs only h5py, numpy and gsd (Debian: python3-h5py, python3-numpy,
-python3-gsd), not the collide extension.
+python3-gsd), not the collide extension. It is the one script that still reads run files with
+h5py rather than collide.read_run: `collide export` runs it with the system interpreter, which
+does not find the extension (it lies in the build tree, or under the install prefix's own
+site-packages) and, in a sanitized build, could not load it without preloading the sanitizer
+runtimes; the program checks every frame with its own reader (core/io/run_reader.h) first.
 
     python3 gsd_export.py RUN.h5 OUT.gsd
 

@@ -97,6 +97,32 @@ TEST(RunReader, ReadsBackWhatTheWriterWrote) {
     EXPECT_EQ(frame.vy, expected.vy);
 }
 
+TEST(RunReader, ReadsTheSolversStatistics) {
+    ScratchDirectory dir;
+    const std::string path = dir.file("run.h5");
+    {
+        RunWriter writer(path, false);
+        writer.write_attributes({{"backend", "step"}, {"scene_text", "# scene"}});
+        writer.write_particles(three_disks());
+        writer.append(metrics_at(0), three_disks());
+        writer.write_stats({7, 3, {{"grid", 0.25}, {"collide", 0.5}}, {{"pressure", 1.5}}});
+        writer.commit();
+    }
+    const SolverStats stats = RunFile(path).stats();
+    EXPECT_EQ(stats.steps, 7);
+    EXPECT_EQ(stats.contacts, 3);
+    EXPECT_EQ(stats.phase_seconds, (std::map<std::string, double>{{"collide", 0.5}, {"grid", 0.25}}));
+    EXPECT_EQ(stats.counters, (std::map<std::string, double>{{"pressure", 1.5}}));
+    // A run written without them (or a file whose /stats was removed) says so by name.
+    const std::string bare = write_run(dir, three_disks());
+    try {
+        RunFile(bare).stats();
+        ADD_FAILURE() << "no /stats, no refusal";
+    } catch (const RunFileError& e) {
+        EXPECT_NE(std::string(e.what()).find("/stats: missing"), std::string::npos) << e.what();
+    }
+}
+
 TEST(RunReader, ArraysOfUnequalLengthAreRefused) {
     ScratchDirectory dir;
     const std::string path = write_run(dir, three_disks());

@@ -20,6 +20,10 @@ def test_read_run_matches_the_file(small_gas, tmp_path):
         assert np.array_equal(run["velocities"], f["frames/velocity"][...])
         assert np.array_equal(run["particles"]["radius"], f["particles/radius"][...])
         assert run["attributes"]["scene_text"] == f.attrs["scene_text"]
+        assert run["stats"]["steps"] == f["stats"].attrs["steps"] > 0
+        assert run["stats"]["contacts"] == f["stats"].attrs["contacts"]
+        assert run["stats"]["phase_seconds"] == dict(f["stats/phase_seconds"].attrs) != {}
+        assert run["stats"]["counters"] == dict(f["stats/counters"].attrs)
     for name, series in result["metrics"].items():
         assert np.array_equal(run["metrics"][name], series), name
     assert not run["metrics"]["time"].flags.writeable

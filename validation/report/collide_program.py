@@ -1,9 +1,12 @@
 """The collide program, for the part of the report it draws itself (`collide render` for motion
 strips): never a second implementation here. (The energy jumps come explained from `collide
-report` itself, in energy_jumps.json.)"""
+report` itself, in energy_jumps.json.) And its Python module, for the scripts that read run
+files (docs/figures/make_figures.py, box2d/measure_presets.py): collide.read_run, the same
+checked reader as every command (core/io/run_reader.h)."""
 import os
+import pathlib
 import shutil
-import subprocess
+import sys
 
 
 def collide_program():
@@ -19,3 +22,11 @@ def collide_program():
     except OSError:
         pass
     return shutil.which("collide")
+
+
+def collide_module(program):
+    """The Python module `collide` built beside `program` (build/<preset>/python; docs/python.md),
+    or the one already on the path (an installed package)."""
+    sys.path.insert(0, str(pathlib.Path(program).resolve().parent / "python"))
+    import collide
+    return collide
