@@ -7,7 +7,6 @@ import math
 import multiprocessing
 import os
 import tomllib
-from collections import OrderedDict
 from concurrent.futures import ProcessPoolExecutor, as_completed
 
 import animations
@@ -105,13 +104,23 @@ _SHARED = {}  # what the drawing processes inherit when forked (nothing is pickl
 
 
 def _scene_section_worker(scene):
+    """A scene's section, its drawn records read in the drawing process (records are read in
+    parallel, not one after another before the drawing starts)."""
     s = _SHARED
-    return scene_section(s["summary"], s["directory"], s["a"], scene, s["chosen"][scene], s["requests"].get(scene, {}))
+    chosen = drawn_cases(s["summary"], s["directory"], scene)
+    return scene_section(s["summary"], s["directory"], s["a"], scene, chosen, s["requests"].get(scene, {}))
+
+
+def _headline_worker(_):
+    s = _SHARED
+    return figures.headline(s["a"].summary, digest, s["a"].aliases)
 
 
 def _with_progress(pool, scenes):
-    """Each scene's section from the pool, in scene order, with a progress line on the way
+    """The headline figure and each scene's section from the pool (the headline submitted first:
+    it is the largest single figure), in scene order, with a progress line on the way
     (progress.py: in place on a terminal, quiet in short logs)."""
+    headline = pool.submit(_headline_worker, None)
     futures = [pool.submit(_scene_section_worker, scene) for scene in scenes]
     line = progress.ProgressLine()
     done = 0
@@ -119,20 +128,20 @@ def _with_progress(pool, scenes):
         done += 1
         line.update(done / len(futures), f"report: {done} of {len(futures)} scenes drawn")
     line.finish()
-    return [f.result() for f in futures]
+    return headline.result(), [f.result() for f in futures]
 
 
 def sections(summary, directory, a):
-    """Every scene's section, in scene order."""
-    chosen_by_scene = OrderedDict((scene, drawn_cases(summary, directory, scene)) for scene in a.scenes)
+    """The headline figure's PNG (None where it has nothing to show) and every scene's section,
+    in scene order: all drawn by forked processes, as many at a time as there are cores."""
     requests = jumps_by_scene(a, load_energy_jumps(directory))
     cores = max(1, os.cpu_count() or 1)
-    _SHARED.update(summary=summary, directory=directory, a=a, chosen=chosen_by_scene, requests=requests)
+    _SHARED.update(summary=summary, directory=directory, a=a, requests=requests)
     try:
         with ProcessPoolExecutor(max_workers=cores, mp_context=multiprocessing.get_context("fork")) as pool:
-            drawn = _with_progress(pool, a.scenes)
+            headline, drawn = _with_progress(pool, a.scenes)
     finally:
         _SHARED.clear()
     for section in drawn:
         section["jumps"] = jump_notes(a, requests.get(section["scene"], {}))
-    return drawn
+    return headline, drawn

@@ -6,7 +6,6 @@ import math
 from collections import OrderedDict
 
 import digest
-import figures
 import physics
 import stability
 from analysis import digest_rows, fmt, verdict_text
@@ -21,12 +20,6 @@ def digest_table(a):
     rows = [dict(r, **{k: v for k, v in verdict_of.get(r["backend"], empty).items() if k in empty})
             for r in digest_rows(a)]
     return {"rows": rows, "checks": f"{c['pass']} passed, {c['fail']} failed, {c['left_out']} left out"}
-
-
-def headline(a):
-    """The headline figure's PNG, or None (the template says why: a stability suite, or no
-    work-precision data)."""
-    return figures.headline(a.summary, digest, a.aliases)
 
 
 def failures(a):
@@ -178,15 +171,18 @@ def provenance(summary):
     return [(k, str(v)) for k, v in rows.items()]
 
 
-def page(a, scene_sections):
-    """Everything index.html.j2 shows; `scene_sections` from scenes.sections()."""
+def page(a, drawn):
+    """Everything index.html.j2 shows; `drawn` = (headline PNG or None, scene sections) from
+    scenes.sections(). The headline is None where the template says why: a stability suite, or
+    no work-precision data."""
+    headline, scene_sections = drawn
     s = a.summary
     return {"suite": s["suite"], "reference": s["reference"], "description": s.get("description", ""),
             "passed": a.passed, "verdict": verdict_text(a), "is_stability": a.stability,
             "first_failures": stability.first_failure_matrix(s) if a.stability else None,
             "stability": stability.section(s) if a.stability else None,
             "digest": digest_table(a), "identical": a.identical, "physics": physics.section(s),
-            "scenes_toc": [(digest.anchor("scene", sc), sc) for sc in a.scenes], "headline": headline(a),
+            "scenes_toc": [(digest.anchor("scene", sc), sc) for sc in a.scenes], "headline": headline,
             "unexpected": a.unexpected, "failures": failures(a), "check_matrix": check_matrix(a),
             "left_out": left_out(a), "has_work_precision": bool(s["work_precision"]), "orders": orders(a),
             "bias_fits": bias_fit_rows(s), "scenes": scene_sections, "machine": machine_text(s),
