@@ -28,6 +28,8 @@ struct BenchArgs {
     bool quick = false;                 // smaller ladder, for smoke tests
     double max_seconds_per_case = 60;   // a case whose first frame exceeds this is stopped
     std::string scene_dir;              // the scene library (data/scenes), for suites that run its scenes
+    std::string suite_dir;              // the validation suites (validation/suites), for `workflow`
+    int runs = 0;                       // whole-command runs of `workflow`; 0: its default (3)
 };
 
 // Whether `backend` should run: --backend names it, or --backend was not given.

@@ -30,6 +30,8 @@ void add_bench_command(CLI::App& app) {
     cmd->add_option("--threads", args->bench.threads, "Thread counts to try");
     // (Not --frames: `collide run --frames` is a switch that stores states; here it is a count.)
     cmd->add_option("--steps", args->bench.steps, "Timed steps of dt per scenario (stepping suites)")->capture_default_str();
+    cmd->add_option("--runs", args->bench.runs, "Whole-command runs of the workflow suite (default 3)")
+        ->check(CLI::PositiveNumber);
     cmd->add_flag("--quick", args->bench.quick, "Small sizes only (smoke test)");
     cmd->add_option("--max-seconds", args->bench.max_seconds_per_case, "Stop a backend at the size where one case exceeds this")
         ->capture_default_str();
@@ -56,6 +58,7 @@ void add_bench_command(CLI::App& app) {
             if (chosen(suite))
                 for (const char* ext : {".csv", ".json"}) check_output_path(args->out + "-" + suite.name + ext);
         args->bench.scene_dir = resource_path("data/scenes");
+        args->bench.suite_dir = resource_path("validation/suites");
         bool ran = false;
         for (const auto& suite : bench::all_bench_suites()) {
             if (!chosen(suite)) continue;

@@ -107,6 +107,28 @@ TEST(BenchCommand, EventSuiteWritesAConsistentTablePerAreaFractionAndSize) {
     EXPECT_TRUE(contains(text.str(), "\"git_commit\"")) << "the JSON carries the build's provenance";
 }
 
+// The workflow suite times whole commands as a user runs them and judges each median against
+// its target; --quick runs a two-scene suite and says its times are not judged.
+TEST(BenchCommand, WorkflowTimesValidateAndReportAndPrintsEachTarget) {
+    ScratchDirectory dir;
+    const auto result = run_program(COLLIDE_EXECUTABLE, {"bench", "workflow", "--quick", "--runs", "2", "-o", dir.file("b")}, dir);
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    const std::vector<CsvRow> rows = read_csv(dir.file("b-workflow.csv"));
+    ASSERT_EQ(rows.size(), 4u);  // two runs, then the validate and report medians
+    for (int k = 0; k < 2; ++k) {
+        EXPECT_EQ(rows[k].at("measure"), "run");
+        EXPECT_GT(std::stod(rows[k].at("validate_seconds")), 0);
+        EXPECT_GT(std::stod(rows[k].at("report_seconds")), 0);
+    }
+    EXPECT_EQ(rows[2].at("measure"), "validate");
+    EXPECT_EQ(rows[2].at("target_seconds"), "60");
+    EXPECT_EQ(rows[3].at("measure"), "report");
+    EXPECT_EQ(rows[3].at("target_seconds"), "10");
+    EXPECT_TRUE(contains(result.out, "target: under 60.0 s (median of 2 runs); measured: ")) << result.out;
+    EXPECT_TRUE(contains(result.out, "target: under 10.0 s (median of 2 runs); measured: ")) << result.out;
+    EXPECT_TRUE(contains(result.out, "not judged (--quick runs a smaller suite)")) << result.out;
+}
+
 // `--steps` is the count of timed steps (`run --frames` is a different thing: a switch that
 // stores states); the JSON beside the CSV is valid JSON with the same rows and the provenance.
 TEST(BenchCommand, StepsSetsTheTimedStepsAndTheJsonHoldsTheRows) {
