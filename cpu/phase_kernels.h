@@ -8,6 +8,7 @@
 // text `step` and the OpenCL kernels compile.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 
@@ -284,15 +285,56 @@ void reflect_block(ParticleState<float>& s, const PhaseParams& p, std::size_t be
 // are still in the first-level cache when reflect_block reads them back.
 inline constexpr std::size_t kWallBlock = 256;
 
+// The wall-free parts of the two update loops, for one block. Their pointers are declared
+// restrict (no array overlaps another) and the parameters are copied by value: the vectoriser
+// must know that no store of the loop changes what it reads, or it keeps the loop scalar.
+inline void add_corrections_block(float* __restrict x, float* __restrict y, float* __restrict vx,
+                                  float* __restrict vy, const float* __restrict dx, const float* __restrict dy,
+                                  const float* __restrict dvx, const float* __restrict dvy, std::size_t begin,
+                                  std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+        x[i] += dx[i];
+        y[i] += dy[i];
+        vx[i] += dvx[i];
+        vy[i] += dvy[i];
+    }
+}
+
+// Corrections, explicit Euler and forces; a stone keeps its corrected values (a select).
+template <bool Gravity, bool Damping, bool Stones>
+void correct_and_integrate_block(float* __restrict x, float* __restrict y, float* __restrict vx, float* __restrict vy,
+                                 const float* __restrict dx, const float* __restrict dy, const float* __restrict dvx,
+                                 const float* __restrict dvy, const float* __restrict inv_mass, const PhaseParams p,
+                                 float dt, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+        const float xi = x[i] + dx[i], yi = y[i] + dy[i], vxi = vx[i] + dvx[i], vyi = vy[i] + dvy[i];
+        float xm = xi + vxi * dt, ym = yi + vyi * dt, vxm = vxi, vym = vyi;
+        kick<Gravity, Damping, false>(vxm, vym, 1.0f, p, dt);
+        const bool moving = !Stones || inv_mass[i] != 0.0f;  // stones are kinematic
+        x[i] = moving ? xm : xi;
+        y[i] = moving ? ym : yi;
+        vx[i] = moving ? vxm : vxi;
+        vy[i] = moving ? vym : vyi;
+    }
+}
+
 // Integrate-first, phase 6: apply the corrections, then the world bounds.
-// Both update loops work on local copies and store every value back unconditionally: the
-// wall law's branches then become selects and the loop vectorises (a conditional store to
-// the arrays would keep it scalar).
+// Periodic walls: the loop works on local copies and stores every value back unconditionally,
+// so the wrap's branches become selects. Reflecting walls: the corrections in a vectorised
+// loop, then reflect_block.
 template <bool Stones, bool Periodic>
 std::int64_t correct_range(ParticleState<float>& s, Corrections c, const PhaseParams& p, std::size_t begin,
                            std::size_t end) {
     float *x = s.x.data(), *y = s.y.data(), *vx = s.vx.data(), *vy = s.vy.data();
     const float *radius = s.radius.data(), *inv_mass = s.inv_mass.data();
+    if constexpr (!Periodic) {
+        for (std::size_t block = begin; block < end; block += kWallBlock) {
+            const std::size_t block_end = std::min(end, block + kWallBlock);
+            add_corrections_block(x, y, vx, vy, c.dx, c.dy, c.dvx, c.dvy, block, block_end);
+            reflect_block<Stones>(s, p, block, block_end);
+        }
+        return 0;
+    }
     for (std::size_t i = begin; i < end; ++i) {
         float xi = x[i] + c.dx[i], yi = y[i] + c.dy[i], vxi = vx[i] + c.dvx[i], vyi = vy[i] + c.dvy[i];
         apply_bounds<Stones, Periodic>(xi, yi, vxi, vyi, radius[i], inv_mass[i], p);
@@ -307,11 +349,22 @@ std::int64_t correct_range(ParticleState<float>& s, Corrections c, const PhasePa
 // Collide-first, after the contact pass: apply the corrections, explicit Euler (position with
 // the velocity before this step's forces, then the forces), then the world bounds; the same
 // order of operations as StepSolver::step_collide_first, fused into one pass over memory.
+// Reflecting walls: the update of a block in a vectorised loop (a stone keeps its corrected
+// values, chosen by a select), then reflect_block.
 template <bool Gravity, bool Damping, bool Stones, bool Periodic>
 std::int64_t correct_and_integrate_range(ParticleState<float>& s, Corrections c, const PhaseParams& p, float dt,
                                          std::size_t begin, std::size_t end) {
     float *x = s.x.data(), *y = s.y.data(), *vx = s.vx.data(), *vy = s.vy.data();
     const float *radius = s.radius.data(), *inv_mass = s.inv_mass.data();
+    if constexpr (!Periodic) {
+        for (std::size_t block = begin; block < end; block += kWallBlock) {
+            const std::size_t block_end = std::min(end, block + kWallBlock);
+            correct_and_integrate_block<Gravity, Damping, Stones>(x, y, vx, vy, c.dx, c.dy, c.dvx, c.dvy, inv_mass, p,
+                                                                  dt, block, block_end);
+            reflect_block<Stones>(s, p, block, block_end);
+        }
+        return 0;
+    }
     for (std::size_t i = begin; i < end; ++i) {
         float xi = x[i] + c.dx[i], yi = y[i] + c.dy[i], vxi = vx[i] + c.dvx[i], vyi = vy[i] + c.dvy[i];
         if (!Stones || inv_mass[i] != 0.0f) {  // stones are kinematic
