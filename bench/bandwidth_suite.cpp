@@ -6,10 +6,10 @@
 //   3. bound = bandwidth / bytes per particle-step, against the measured throughput of the
 //      benchmark gas with all threads: the fraction of the bound reached.
 //   4. The compute ceiling: the same gas, small enough that its whole working set stays in the
-//      caches, on the same threads. No DRAM traffic limits it, so it is the fastest the code
-//      can go on this machine; the large run's fraction of it says how much of the large run's
-//      time memory costs, and a ceiling below the bound says that the bound is out of reach of
-//      this code whatever its memory traffic.
+//      caches, on the same threads, best of 5 windows. No DRAM traffic limits it, so it is the
+//      fastest the code can go on this machine; the large run's fraction of it says how much of
+//      the large run's time memory costs, and a ceiling below the bound says that the bound is
+//      out of reach of this code whatever its memory traffic.
 //   5. Issue 39's target, fraction_of_bound >= 0.8 at N = 1e6 on two threads, with the verdict.
 #include <omp.h>
 
@@ -91,12 +91,19 @@ void run_bandwidth_suite(const BenchArgs& args, BenchReport& report) {
 
     // The compute ceiling: N = 2e4 (a working set of about 4 MiB, in the caches; above the
     // size below which the backend runs one thread, cpu/parallel_for.h), as many particle-steps
-    // as the large run (at most 1e8: a few seconds) so that the timings are alike in length.
+    // as the large run (at most 1e8: a few seconds) in 5 windows, the best of which counts: a
+    // ceiling is what the code reaches when the machine lets it (the triad, too, is a best of
+    // several), and on a shared machine one window may meet another job.
     const std::int64_t small = std::min<std::int64_t>(particles, 20000);
     const GasCase small_gas = bench_gas(small);
     const double large_work = double(particles) * (args.quick ? 40 : args.steps);
-    const int small_steps = int(std::max(40.0, std::min(large_work, 1e8) / double(small)));
-    const FrameTiming c = measure_frames(find_backend("cpu"), options, small_gas, small_steps, 1e9);
+    const int windows = 5;
+    const int window_steps = int(std::max(40.0, std::min(large_work, 1e8) / double(small) / windows));
+    FrameTiming c;
+    for (int w = 0; w < windows; ++w) {
+        const FrameTiming window = measure_frames(find_backend("cpu"), options, small_gas, window_steps, 1e9);
+        if (window.particle_steps_per_second > c.particle_steps_per_second) c = window;
+    }
     const double ceiling = c.particle_steps_per_second;
     Row ceiling_row{{"measure", "cpu_in_cache"}, {"working_set_mib", bytes * double(small) / (1 << 20)},
                     {"fraction_of_bound", ceiling / bound}};
@@ -114,7 +121,8 @@ void run_bandwidth_suite(const BenchArgs& args, BenchReport& report) {
     report.note("bytes per particle-step is a model of compulsory traffic (bench/bandwidth_suite.cpp); "
                 "a working set below the last-level cache size can run above the DRAM bound");
     report.note("cpu_in_cache is the same gas at N = " + std::to_string(small) +
-                ", whose working set stays in the caches: the compute ceiling of this code on these threads. "
+                ", whose working set stays in the caches, best of " + std::to_string(windows) +
+                " windows: the compute ceiling of this code on these threads. "
                 "Its own fraction_of_bound is the most the large run could reach if memory cost nothing");
     char verdict[256];
     const bool configured = particles == 1000000 && all == 2;
