@@ -35,6 +35,10 @@ void CellList::count_block(Block& b, const float* x, const float* y) {
         hi = std::max(hi, cell[i]);
     }
     b.lo = lo;
+    // Room for every cell, once: assign() allocates exactly what it is asked for, so a range
+    // one cell wider than last step's would reallocate, and a fresh allocation of megabytes
+    // comes from the kernel as new pages (hundreds of page faults, each page zeroed).
+    if (b.count.capacity() < std::size_t(cell_count())) b.count.reserve(std::size_t(cell_count()));
     b.count.assign(hi - lo + 1, 0);
     std::uint32_t* count = b.count.data() - lo;
     for (std::size_t i = b.begin; i < b.end; ++i) ++count[cell[i]];

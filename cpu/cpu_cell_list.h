@@ -64,6 +64,19 @@ public:
     // Slots of cell c = cy * cells_x() + cx: [cell_start()[c], cell_start()[c + 1]).
     const std::uint32_t* cell_start() const { return cell_start_.data(); }
 
+    // The column of cells a disk at x = px belongs to: the rule build() sorts by.
+    std::int64_t column_of(float px) const { return cell_index(px, xmin_, inv_cell_w_, std::int32_t(cells_x_)); }
+
+    // The cell starts of row `row` (cell_start() + row * cells_x(), cells_x() + 1 entries):
+    // for a row outside the box, a row of zeros (reflecting walls: no cells) or the row it
+    // wraps to (periodic walls; the caller keeps to rows -1 .. cells_y()).
+    template <bool Periodic>
+    const std::uint32_t* row_start(std::int64_t row) const {
+        if (row >= 0 && row < cells_y_) return cell_start_.data() + row * cells_x_;
+        if constexpr (Periodic) return cell_start_.data() + (row < 0 ? row + cells_y_ : row - cells_y_) * cells_x_;
+        return no_cells_.data();
+    }
+
     // The slot ranges that hold the candidates of every disk in cell (cx, cy): its
     // own cell and the 8 around it, row by row from bottom to top (at most 6 ranges: a row
     // splits in two where periodic walls wrap it). Returns how many were written to `out`.

@@ -8,9 +8,11 @@
 // text `step` and the OpenCL kernels compile.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 
+#include "candidate_mask.h"
 #include "cpu_cell_list.h"
 #include "core/particle_state.h"
 #include "physics/stepping_laws.h"
@@ -87,23 +89,33 @@ std::int64_t integrate_range(ParticleState<float>& s, const PhaseParams& p, floa
 // the mirror image for itself. Returns the number of contacts, each pair counted once (by
 // its lower slot, or by the moving disk when the other is a stone, which never runs the loop).
 //
-// The work is organised per cell: all disks of a cell share one 3x3 neighbourhood, so its
-// (at most six) candidate slot ranges are computed once per cell, not per disk. InCellOrder:
-// the state itself is in cell order (CpuSolver's reorder), so slot k is disk k and the
-// candidates are contiguous in every array; otherwise slots map to disks through the index.
+// The candidates of disk i are the (at most six) slot ranges of its 3x3 cell neighbourhood,
+// visited row by row from bottom to top, each range in slot order: the neighbour order of
+// every sum. InCellOrder: the state itself is in cell order (CpuSolver's reorder), so slot k
+// is disk k, the candidates are contiguous in every array, and collide_range_in_cell_order
+// (below) tests them four at a time; otherwise slots map to disks through the index and the
+// loop here tests them one by one.
+template <bool Friction, bool Stones, bool UniformRadius, bool Periodic>
+std::int64_t collide_range_in_cell_order(const ParticleState<float>& s, const CellList& grid, const PhaseParams& p,
+                                         Corrections out, std::size_t row_begin, std::size_t row_end);
+
 template <bool Friction, bool Stones, bool UniformRadius, bool Periodic, bool InCellOrder>
 std::int64_t collide_range(const ParticleState<float>& s, const CellList& grid, const PhaseParams& p,
                           Corrections out, std::size_t row_begin, std::size_t row_end) {
+    if constexpr (InCellOrder) {
+        return collide_range_in_cell_order<Friction, Stones, UniformRadius, Periodic>(s, grid, p, out, row_begin,
+                                                                                      row_end);
+    }
     const float *x = s.x.data(), *y = s.y.data(), *vx = s.vx.data(), *vy = s.vy.data();
     const float *radius = s.radius.data(), *inv_mass = s.inv_mass.data();
     const std::uint32_t* index = grid.sorted_index();
-    auto disk = [index](std::uint32_t slot) { return InCellOrder ? slot : index[slot]; };
     const std::uint32_t* cell_start = grid.cell_start();
     const std::int64_t cells_x = grid.cells_x();
     // Constant zero friction lets the compiler drop the law's friction branch entirely.
     const float mu = Friction ? p.friction : 0.0f;
     const float uniform_contact2 = (p.radius + p.radius) * (p.radius + p.radius);
     std::int64_t contacts = 0;
+    // Per cell: all disks of a cell share one neighbourhood, computed once.
     for (std::int64_t cy = std::int64_t(row_begin); cy < std::int64_t(row_end); ++cy) {
         for (std::int64_t cx = 0; cx < cells_x; ++cx) {
             const std::uint32_t first = cell_start[cy * cells_x + cx], last = cell_start[cy * cells_x + cx + 1];
@@ -111,7 +123,7 @@ std::int64_t collide_range(const ParticleState<float>& s, const CellList& grid, 
             SlotRange ranges[6];
             const int range_count = grid.neighbour_ranges<Periodic>(cx, cy, ranges);
             for (std::uint32_t a = first; a < last; ++a) {
-                const std::uint32_t i = disk(a);
+                const std::uint32_t i = index[a];
                 float dx = 0, dy = 0, dvx = 0, dvy = 0;
                 const float wi = inv_mass[i];
                 if (!Stones || wi != 0.0f) {  // a stone's share is always zero
@@ -119,7 +131,7 @@ std::int64_t collide_range(const ParticleState<float>& s, const CellList& grid, 
                     const float ri = UniformRadius ? p.radius : radius[i];
                     for (int r = 0; r < range_count; ++r) {
                         for (std::uint32_t b = ranges[r].begin; b < ranges[r].end; ++b) {
-                            const std::uint32_t j = disk(b);
+                            const std::uint32_t j = index[b];
                             float sep_x = xi - x[j], sep_y = yi - y[j];
                             if constexpr (Periodic) {
                                 sep_x = WallLaw<float>::minimum_image(sep_x, p.width);
@@ -151,15 +163,178 @@ std::int64_t collide_range(const ParticleState<float>& s, const CellList& grid, 
     return contacts;
 }
 
+// The contact pass on a state in cell order, per disk rather than per cell, with the distance
+// test four candidates at a time (candidate_mask.h). Disk a's cell column comes from its x by
+// the grid's own rule (CellList::column_of: the same float operations on the same x as the
+// sort, hence the same cell), so the loop walks the slots of a row of cells without visiting
+// the empty cells between them. Its three neighbour ranges (rows cy-1, cy, cy+1, columns
+// cx-1 .. cx+1) are read from the row starts fixed for the whole row; when each holds at most
+// four slots (nearly always below area fraction 0.5) each is one block test, all three are
+// tested before any branch, and one branch, almost never taken, leads to the contact law. The
+// law then runs, in scalar and in slot order, for the candidates the masks report: the same
+// pairs in the same order as the scalar loop above, hence bitwise the same sums. Longer
+// ranges, and the columns where periodic walls split a row in two, take the general path:
+// every range in blocks of four.
+template <bool Friction, bool Stones, bool UniformRadius, bool Periodic>
+std::int64_t collide_range_in_cell_order(const ParticleState<float>& s, const CellList& grid, const PhaseParams& p,
+                                         Corrections out, std::size_t row_begin, std::size_t row_end) {
+    const float *x = s.x.data(), *y = s.y.data(), *vx = s.vx.data(), *vy = s.vy.data();
+    const float *radius = s.radius.data(), *inv_mass = s.inv_mass.data();
+    const std::uint32_t* cell_start = grid.cell_start();
+    const std::int64_t cells_x = grid.cells_x();
+    // The fast path needs three distinct rows and, with periodic walls, a column whose
+    // neighbours do not wrap.
+    const bool periodic_fast = grid.cells_x() >= 3 && grid.cells_y() >= 3;
+    const float mu = Friction ? p.friction : 0.0f;
+    CandidateQuery q{0, 0, 0, (p.radius + p.radius) * (p.radius + p.radius), p.width, p.height,
+                     x, y, UniformRadius ? nullptr : radius, std::uint32_t(s.size())};
+    std::int64_t contacts = 0;
+    for (std::int64_t cy = std::int64_t(row_begin); cy < std::int64_t(row_end); ++cy) {
+        const std::uint32_t row_first = cell_start[cy * cells_x], row_last = cell_start[(cy + 1) * cells_x];
+        const std::uint32_t *below = grid.row_start<Periodic>(cy - 1), *own = grid.row_start<Periodic>(cy),
+                            *above = grid.row_start<Periodic>(cy + 1);
+        for (std::uint32_t a = row_first; a < row_last; ++a) {
+            float dx = 0, dy = 0, dvx = 0, dvy = 0;
+            const float wi = inv_mass[a];
+            if (!Stones || wi != 0.0f) {  // a stone's share is always zero
+                const float xi = x[a], yi = y[a], vxi = vx[a], vyi = vy[a];
+                const float ri = UniformRadius ? p.radius : radius[a];
+                q.xi = xi;
+                q.yi = yi;
+                q.ri = ri;
+                // Disk a's share of its contact with slot b, added in the order of the calls.
+                auto visit = [&](std::uint32_t b) {
+                    float sep_x = xi - x[b], sep_y = yi - y[b];
+                    if constexpr (Periodic) {
+                        sep_x = WallLaw<float>::minimum_image(sep_x, p.width);
+                        sep_y = WallLaw<float>::minimum_image(sep_y, p.height);
+                    }
+                    const float contact = UniformRadius ? ri + ri : ri + radius[b];
+                    const auto d = ContactLaw<float>::delta(sep_x, sep_y, vxi - vx[b], vyi - vy[b], contact, wi,
+                                                            inv_mass[b], p.restitution, mu);
+                    dx += d.dx;
+                    dy += d.dy;
+                    dvx += d.dvx;
+                    dvy += d.dvy;
+                    if (a < b || (Stones && inv_mass[b] == 0.0f)) ++contacts;
+                };
+                auto visit_mask = [&](unsigned mask, std::uint32_t block) {
+                    for (; mask != 0; mask &= mask - 1) visit(block + std::uint32_t(__builtin_ctz(mask)));
+                };
+                const std::int64_t cx = grid.column_of(xi);
+                bool general = Periodic && (!periodic_fast || cx == 0 || cx == cells_x - 1);
+                if (!general) {
+                    const std::int64_t lo = Periodic || cx > 0 ? cx - 1 : 0;
+                    const std::int64_t hi = Periodic || cx + 2 < cells_x ? cx + 2 : cells_x;
+                    const std::uint32_t b0 = below[lo], e0 = below[hi], b1 = own[lo], e1 = own[hi];
+                    const std::uint32_t b2 = above[lo], e2 = above[hi];
+                    general = (e0 - b0 > 4) | (e1 - b1 > 4) | (e2 - b2 > 4);
+                    if (!general) {
+                        const unsigned m0 = candidate_mask<UniformRadius, Periodic>(q, b0, e0, a);
+                        const unsigned m1 = candidate_mask<UniformRadius, Periodic>(q, b1, e1, a);
+                        const unsigned m2 = candidate_mask<UniformRadius, Periodic>(q, b2, e2, a);
+                        if ((m0 | m1 | m2) != 0) [[unlikely]] {
+                            visit_mask(m0, b0);
+                            visit_mask(m1, b1);
+                            visit_mask(m2, b2);
+                        }
+                    }
+                }
+                if (general) [[unlikely]] {
+                    SlotRange ranges[6];
+                    const int range_count = grid.neighbour_ranges<Periodic>(cx, cy, ranges);
+                    for (int r = 0; r < range_count; ++r) {
+                        for (std::uint32_t block = ranges[r].begin; block < ranges[r].end; block += 4)
+                            visit_mask(candidate_mask<UniformRadius, Periodic>(q, block, ranges[r].end, a), block);
+                    }
+                }
+            }
+            out.dx[a] = dx;
+            out.dy[a] = dy;
+            out.dvx[a] = dvx;
+            out.dvy[a] = dvy;
+        }
+    }
+    return contacts;
+}
+
+// The walls of a reflecting box, for the disks [begin, end) of a block whose update has just
+// been stored. The wall law (apply_bounds) changes a disk only when it overlaps a wall, and at
+// N = 10^6 about one disk in ten thousand does in a step; but its branches keep a loop that
+// applies it to every disk scalar. So the update loops below store the update without the
+// walls (a loop without branches, which the compiler vectorises), then this pass looks for a
+// disk overlapping a wall (the law's own tests, reduced to one flag in a vectorised loop) and
+// applies the law, in scalar, to the disks of the block only if there is one. The law then
+// sees the same values it saw when it ran inside the update: bitwise the same result.
+template <bool Stones>
+void reflect_block(ParticleState<float>& s, const PhaseParams& p, std::size_t begin, std::size_t end) {
+    float *x = s.x.data(), *y = s.y.data(), *vx = s.vx.data(), *vy = s.vy.data();
+    const float *radius = s.radius.data(), *inv_mass = s.inv_mass.data();
+    unsigned touching = 0;
+    for (std::size_t i = begin; i < end; ++i) {
+        const float r = radius[i];
+        touching |= unsigned(x[i] - r < p.xmin) | unsigned(x[i] + r > p.xmax) | unsigned(y[i] - r < p.ymin) |
+                    unsigned(y[i] + r > p.ymax);
+    }
+    if (touching == 0) return;
+    for (std::size_t i = begin; i < end; ++i)
+        apply_bounds<Stones, false>(x[i], y[i], vx[i], vy[i], radius[i], inv_mass[i], p);
+}
+
+// Disks per block of the update loops with reflecting walls: the block's x, y, vx, vy (4 KiB)
+// are still in the first-level cache when reflect_block reads them back.
+inline constexpr std::size_t kWallBlock = 256;
+
+// The wall-free parts of the two update loops, for one block. Their pointers are declared
+// restrict (no array overlaps another) and the parameters are copied by value: the vectoriser
+// must know that no store of the loop changes what it reads, or it keeps the loop scalar.
+inline void add_corrections_block(float* __restrict x, float* __restrict y, float* __restrict vx,
+                                  float* __restrict vy, const float* __restrict dx, const float* __restrict dy,
+                                  const float* __restrict dvx, const float* __restrict dvy, std::size_t begin,
+                                  std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+        x[i] += dx[i];
+        y[i] += dy[i];
+        vx[i] += dvx[i];
+        vy[i] += dvy[i];
+    }
+}
+
+// Corrections, explicit Euler and forces; a stone keeps its corrected values (a select).
+template <bool Gravity, bool Damping, bool Stones>
+void correct_and_integrate_block(float* __restrict x, float* __restrict y, float* __restrict vx, float* __restrict vy,
+                                 const float* __restrict dx, const float* __restrict dy, const float* __restrict dvx,
+                                 const float* __restrict dvy, const float* __restrict inv_mass, const PhaseParams p,
+                                 float dt, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+        const float xi = x[i] + dx[i], yi = y[i] + dy[i], vxi = vx[i] + dvx[i], vyi = vy[i] + dvy[i];
+        float xm = xi + vxi * dt, ym = yi + vyi * dt, vxm = vxi, vym = vyi;
+        kick<Gravity, Damping, false>(vxm, vym, 1.0f, p, dt);
+        const bool moving = !Stones || inv_mass[i] != 0.0f;  // stones are kinematic
+        x[i] = moving ? xm : xi;
+        y[i] = moving ? ym : yi;
+        vx[i] = moving ? vxm : vxi;
+        vy[i] = moving ? vym : vyi;
+    }
+}
+
 // Integrate-first, phase 6: apply the corrections, then the world bounds.
-// Both update loops work on local copies and store every value back unconditionally: the
-// wall law's branches then become selects and the loop vectorises (a conditional store to
-// the arrays would keep it scalar).
+// Periodic walls: the loop works on local copies and stores every value back unconditionally,
+// so the wrap's branches become selects. Reflecting walls: the corrections in a vectorised
+// loop, then reflect_block.
 template <bool Stones, bool Periodic>
 std::int64_t correct_range(ParticleState<float>& s, Corrections c, const PhaseParams& p, std::size_t begin,
                            std::size_t end) {
     float *x = s.x.data(), *y = s.y.data(), *vx = s.vx.data(), *vy = s.vy.data();
     const float *radius = s.radius.data(), *inv_mass = s.inv_mass.data();
+    if constexpr (!Periodic) {
+        for (std::size_t block = begin; block < end; block += kWallBlock) {
+            const std::size_t block_end = std::min(end, block + kWallBlock);
+            add_corrections_block(x, y, vx, vy, c.dx, c.dy, c.dvx, c.dvy, block, block_end);
+            reflect_block<Stones>(s, p, block, block_end);
+        }
+        return 0;
+    }
     for (std::size_t i = begin; i < end; ++i) {
         float xi = x[i] + c.dx[i], yi = y[i] + c.dy[i], vxi = vx[i] + c.dvx[i], vyi = vy[i] + c.dvy[i];
         apply_bounds<Stones, Periodic>(xi, yi, vxi, vyi, radius[i], inv_mass[i], p);
@@ -174,11 +349,22 @@ std::int64_t correct_range(ParticleState<float>& s, Corrections c, const PhasePa
 // Collide-first, after the contact pass: apply the corrections, explicit Euler (position with
 // the velocity before this step's forces, then the forces), then the world bounds; the same
 // order of operations as StepSolver::step_collide_first, fused into one pass over memory.
+// Reflecting walls: the update of a block in a vectorised loop (a stone keeps its corrected
+// values, chosen by a select), then reflect_block.
 template <bool Gravity, bool Damping, bool Stones, bool Periodic>
 std::int64_t correct_and_integrate_range(ParticleState<float>& s, Corrections c, const PhaseParams& p, float dt,
                                          std::size_t begin, std::size_t end) {
     float *x = s.x.data(), *y = s.y.data(), *vx = s.vx.data(), *vy = s.vy.data();
     const float *radius = s.radius.data(), *inv_mass = s.inv_mass.data();
+    if constexpr (!Periodic) {
+        for (std::size_t block = begin; block < end; block += kWallBlock) {
+            const std::size_t block_end = std::min(end, block + kWallBlock);
+            correct_and_integrate_block<Gravity, Damping, Stones>(x, y, vx, vy, c.dx, c.dy, c.dvx, c.dvy, inv_mass, p,
+                                                                  dt, block, block_end);
+            reflect_block<Stones>(s, p, block, block_end);
+        }
+        return 0;
+    }
     for (std::size_t i = begin; i < end; ++i) {
         float xi = x[i] + c.dx[i], yi = y[i] + c.dy[i], vxi = vx[i] + c.dvx[i], vyi = vy[i] + c.dvy[i];
         if (!Stones || inv_mass[i] != 0.0f) {  // stones are kinematic

@@ -149,6 +149,31 @@ TEST(BenchCommand, StepsSetsTheTimedStepsAndTheJsonHoldsTheRows) {
     EXPECT_EQ(json.at("rows")[0].at("n"), 500);
 }
 
+// The bandwidth suite: the triad rows, the in-cache compute ceiling (one thread, times the
+// threads) and the large run, whose fractions are consistent with its own columns, and the
+// target's verdict line (here not the target's configuration: N = 2000).
+TEST(BenchCommand, BandwidthSuitePrintsTheBoundTheComputeCeilingAndTheTargetsVerdict) {
+    ScratchDirectory dir;
+    const auto result = run_program(COLLIDE_EXECUTABLE, {"bench", "bandwidth", "--quick", "--sizes", "2000", "--threads",
+                                                         "2", "-o", dir.file("b")}, dir);
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    const std::vector<CsvRow> rows = read_csv(dir.file("b-bandwidth.csv"));
+    ASSERT_EQ(rows.size(), 4u);
+    const CsvRow& ceiling = rows[2];
+    const CsvRow& cpu = rows[3];
+    EXPECT_EQ(ceiling.at("measure"), "cpu_in_cache");
+    EXPECT_EQ(cpu.at("measure"), "cpu");
+    const double bound = number(cpu, "bound_particle_steps_per_s");
+    EXPECT_NEAR(number(cpu, "fraction_of_bound"), number(cpu, "particle_steps_per_s") / bound,
+                1e-4 * number(cpu, "fraction_of_bound"));
+    // The ceiling: one thread in the caches, times the two threads of the large run.
+    EXPECT_EQ(number(ceiling, "threads"), 1);
+    EXPECT_NEAR(number(cpu, "compute_ceiling_particle_steps_per_s"), 2 * number(ceiling, "particle_steps_per_s"),
+                1e-4 * number(ceiling, "particle_steps_per_s"));
+    EXPECT_TRUE(contains(result.out, "target: fraction_of_bound >= 0.8 at N = 1e6, 2 threads")) << result.out;
+    EXPECT_TRUE(contains(result.out, "not the target's configuration")) << result.out;
+}
+
 // The opencl suite's launch-cost rows: both scenes of the library, both backends, the ratio
 // of the two costs and the targets (3 for two disks, 1.5 for periodic_gas).
 TEST(BenchCommand, OpenclSuitePrintsTheCostPerStepAgainstCpuWithItsTarget) {
