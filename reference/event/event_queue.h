@@ -39,7 +39,10 @@
 // collisions per second of `event-plain`, whose queue is a std::priority_queue of every
 // prediction, with prefetching off (N = 1e5, area fraction 0.3, periodic, one core;
 // `python3 bench/event_optimisations.py 100000`, median of three runs;
-// docs/course/5-making-it-fast.md).
+// docs/course/5-making-it-fast.md). Two details of the calendar's own code (the front's
+// emptiness tested inline, the short queue of link_soon kept as a ring) took 5 % of the
+// instructions per collision off the whole solver (bench/journal.md, "event: the calendar
+// without a call per look at the top").
 #pragma once
 
 #include <algorithm>
@@ -69,7 +72,7 @@ public:
         node_.assign(n, Node{});
         for (std::uint32_t p = 0; p < n; ++p) node_[p].key = p;
         heap_.clear();
-        waiting_count_ = 0;
+        waiting_first_ = waiting_count_ = 0;
         bucket_count_ = std::uint32_t(std::max<std::size_t>(16, n));
         head_.assign(std::size_t(bucket_count_) + 2, none);  // the ring, then overflow and idle
         bucketed_ = overflowing_ = idle_ = 0;
@@ -163,7 +166,7 @@ public:
 private:
     static constexpr std::uint32_t front = 0xfffffffeu;
     static constexpr std::uint32_t waiting = 0xfffffffdu;  // bucket of an entry not yet linked (link_soon)
-    static constexpr std::uint32_t max_waiting = 4;
+    static constexpr std::uint32_t max_waiting = 4;  // (a power of 2: waiting_place)
     static constexpr std::size_t max_particles = 0xfffffff0u;
 
     // With a payload the slot is given a cache line of its own (the solver's fills one).
@@ -231,31 +234,44 @@ private:
     // A waiting entry's bucket lies beyond the one being served (the bucket index is taken
     // when the update comes, and the index being served moves on only after the queue is
     // emptied), so the front, and with it the order of events, is the same as without the wait.
+    //
+    // The short queue is a ring of max_waiting places (waiting_first_ is the oldest), so that
+    // taking the oldest moves nothing: shifting the array down, as it first did, cost a call
+    // of the C library's memmove at about every event.
     void link_soon(std::uint32_t p, std::uint32_t target) {
         if (waiting_count_ == max_waiting) link_oldest_waiting();
         prefetch_line(&head_[target]);
         node_[p].bucket = waiting;
         node_[p].index = target;  // (index is free: it is used only in the front)
-        waiting_[waiting_count_++] = p;
+        waiting_[waiting_place(waiting_count_++)] = p;
     }
     void link_oldest_waiting() {
-        const std::uint32_t p = waiting_[0];
-        std::copy(waiting_ + 1, waiting_ + waiting_count_, waiting_);
+        const std::uint32_t p = waiting_[waiting_first_];
+        waiting_first_ = waiting_place(1);
         --waiting_count_;
         link(p, node_[p].index);
     }
     void link_all_waiting() {
         while (waiting_count_ > 0) link_oldest_waiting();
     }
-    // Drops a waiting particle from the queue without linking it (it is being re-filed).
+    // Drops a waiting particle from the queue without linking it (it is being re-filed); the
+    // younger ones move up one place, so the order stays oldest first.
     void forget_waiting(std::uint32_t p) {
-        std::uint32_t* at = std::find(waiting_, waiting_ + waiting_count_, p);
-        std::copy(at + 1, waiting_ + waiting_count_, at);
+        std::uint32_t k = 0;
+        while (waiting_[waiting_place(k)] != p) ++k;
+        for (; k + 1 < waiting_count_; ++k) waiting_[waiting_place(k)] = waiting_[waiting_place(k + 1)];
         --waiting_count_;
     }
+    // The place in the ring of the k-th oldest waiting particle (max_waiting is a power of 2).
+    std::uint32_t waiting_place(std::uint32_t k) const { return (waiting_first_ + k) & (max_waiting - 1); }
 
-    // Makes the front heap non-empty (the queue is not empty).
+    // Makes the front heap non-empty (the queue is not empty). The solver asks for the top
+    // about three times per event, and the front is nearly always non-empty: that test stays
+    // inline at the caller, the work of refilling the front does not.
     void settle() {
+        if (heap_.empty()) refill_front();
+    }
+    void refill_front() {
         while (heap_.empty()) {
             link_all_waiting();
             if (!built_ || rebuild_wanted_ || bucketed_ == 0) {
@@ -436,7 +452,8 @@ private:
     std::uint64_t refill_at_ = 0;       // the absolute index at which the overflow is sorted in
     std::uint64_t poured_ = 0;          // entries poured since the last refill
     std::uint64_t builds_ = 0;
-    std::uint32_t waiting_[max_waiting] = {};  // link_soon(): particles not yet linked, oldest first
+    std::uint32_t waiting_[max_waiting] = {};  // link_soon(): particles not yet linked, a ring
+    std::uint32_t waiting_first_ = 0;          // whose oldest is here
     std::uint32_t waiting_count_ = 0;
     std::uint32_t ahead_ = none;        // next_upcoming(): the entry reached last
     std::uint64_t ahead_index_ = 0;     // and the absolute index of the bucket it was reached in

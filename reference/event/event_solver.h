@@ -73,6 +73,7 @@ private:
     void renumber_if_due();
     void renumber();
     void check_progress(std::uint32_t i);
+    void count_event_without_progress(std::uint32_t i, double resolution);
 
     // Free flight of disk i from its own clock to `now_` (written back: the clock moves).
     void bring_to_now(std::uint32_t i);
@@ -102,6 +103,7 @@ private:
     void earliest_pair_in(std::uint32_t i, Prediction& p, VisitCells& visit_cells) const;
     // Adds disk i's earliest wall or border event to p and files the earlier event in the queue.
     void file_prediction(std::uint32_t i, Prediction& p);
+    // (earliest_border_or_wall under gravity, _straight without.)
     double earliest_border_or_wall(std::uint32_t i, std::uint8_t& which, EventKind& kind) const;
     double earliest_border_or_wall_straight(std::uint32_t i, std::uint8_t& which, EventKind& kind) const;
 

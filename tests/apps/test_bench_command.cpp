@@ -101,6 +101,14 @@ TEST(BenchCommand, EventSuiteWritesAConsistentTablePerAreaFractionAndSize) {
     ASSERT_NE(second_small, std::string::npos) << result.err;
     EXPECT_LT(first_small, first_large);
     EXPECT_LT(first_large, second_small);
+    // Each area fraction's targets of `event` are printed with the measured figure; sizes other
+    // than the targets' are said to be so, not judged.
+    EXPECT_TRUE(contains(result.out, "event, area fraction 0.5: target: >= 2e6 collisions/s at N = 1e5; measured: N = 1e5 not run"))
+        << result.out;
+    EXPECT_TRUE(contains(result.out, "event, area fraction 0.1: target: >= 1e6 collisions/s at N = 1e5"));
+    EXPECT_TRUE(contains(result.out, "event, area fraction 0.7: target: cost per collision from N = 1e3 to 1e6 within 1.3x; "
+                                     "measured: "));
+    EXPECT_TRUE(contains(result.out, "(not the target's sizes: not judged)"));
     std::ifstream json(dir.file("b-event.json"));
     std::stringstream text;
     text << json.rdbuf();
