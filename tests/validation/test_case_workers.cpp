@@ -116,14 +116,14 @@ TEST(CaseWorkers, ACaseOverTheTimeLimitIsKilledAndTheNextOneRuns) {
     EXPECT_EQ(results.at("after").status, RunStatus::completed);
 }
 
-TEST(CaseWorkers, EveryRunnableCaseGoesToAWorkerAndALeftOutOneDoesNot) {
+TEST(CaseWorkers, EveryCaseGoesToAWorkerALeftOutOneToo) {
     CaseSpec spec;
     for (const char* backend : {"opencl", "opencl[fast]", "cpu", "step", "event", "box2d[shipped]"}) {
         spec.backend = backend;
         EXPECT_TRUE(validation::runs_in_worker(spec)) << backend;
     }
     spec.left_out = "the backend refuses the scene";
-    EXPECT_FALSE(validation::runs_in_worker(spec));
+    EXPECT_TRUE(validation::runs_in_worker(spec));
 }
 
 TEST(CaseWorkers, ASpecSurvivesItsRequestText) {

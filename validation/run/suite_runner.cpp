@@ -188,7 +188,7 @@ void check_output_places(const std::string& dir, const std::vector<CaseSpec>& sp
 
 int default_jobs() { return std::max(1u, std::thread::hardware_concurrency()); }
 
-bool runs_in_worker(const CaseSpec& spec) { return spec.left_out.empty(); }
+bool runs_in_worker(const CaseSpec&) { return true; }
 
 SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& available, const RunnerOptions& options) {
     const auto start = std::chrono::steady_clock::now();

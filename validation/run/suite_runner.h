@@ -59,7 +59,9 @@ int default_jobs();
 // pay, for each case, the fork's copied pages, the libraries' set-up and (opencl) the OpenCL
 // platform, context and program (0.2-0.3 s on PoCL); the default suite took 114-123 s that
 // way against 75-83 s in workers, with the same value for every check. A case left out (the
-// backend refuses the scene) only records why, in a process of its own.
+// backend refuses the scene) only records why, in a worker too: a fork of its own for each of
+// them copied the runner's page tables and then faulted on every page the runner wrote
+// (copy-on-write), about 5 % of the default suite's processor time (bench/journal.md).
 bool runs_in_worker(const CaseSpec& spec);
 
 // `backends` are the backends the suite may use (all_backends() in the program, test doubles
