@@ -73,5 +73,21 @@ TEST(TomlNesting, ParseSceneRunsTheGuardBeforeTheParser) {
     }
 }
 
+// toml++ 3.3.0 reached a branch it marks unreachable (undefined behaviour) when it asked
+// whether a character from U+00A1 to U+049A is whitespace; the scene-parser fuzzer found it
+// under UndefinedBehaviorSanitizer (core/io/toml_library.cpp has the fix). Such a character
+// where a key or a value belongs is a parse error naming the file and the line.
+TEST(TomlNesting, ACharacterFromLatin1SupplementToCyrillicIsAParseErrorNotUndefinedBehaviour) {
+    for (const char* character : {"\u00A1", "\u00E9", "\u0416", "\u049A"}) {
+        const std::string text = std::string("description = \"x\"\n") + character + " = 1\n";
+        try {
+            parse_scene(text, "odd.toml");
+            ADD_FAILURE() << "no SceneError for " << text;
+        } catch (const SceneError& e) {
+            EXPECT_NE(std::string(e.what()).find("odd.toml"), std::string::npos) << e.what();
+        }
+    }
+}
+
 }  // namespace
 }  // namespace collide
