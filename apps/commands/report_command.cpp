@@ -12,7 +12,6 @@
 #include <memory>
 #include <optional>
 #include <mutex>
-#include <set>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -48,17 +47,18 @@ nlohmann::json read_summary(const std::string& dir) {
     return summary;
 }
 
-// The ids of the cases summary.json lists (their records are cases/<id>.toml).
-std::set<std::string> listed_case_ids(const nlohmann::json& summary) {
-    std::set<std::string> ids;
+// The cases summary.json lists, by id (their records are cases/<id>.toml).
+using ListedCases = std::map<std::string, const nlohmann::json*>;
+ListedCases listed_cases(const nlohmann::json& summary) {
+    ListedCases cases;
     for (const auto& c : summary["cases"])
-        if (c.is_object() && c.contains("id") && c["id"].is_string()) ids.insert(c["id"].get<std::string>());
-    return ids;
+        if (c.is_object() && c.contains("id") && c["id"].is_string()) cases.emplace(c["id"].get<std::string>(), &c);
+    return cases;
 }
 
 // Files in cases/ that belong to no listed case (a case of an earlier suite, an editor's
 // backup): not read, and named, so that nobody takes them for part of this report.
-void warn_about_stray_files(const std::string& dir, const std::set<std::string>& ids) {
+void warn_about_stray_files(const std::string& dir, const ListedCases& ids) {
     std::vector<std::string> stray;
     std::error_code error;
     for (const auto& entry : std::filesystem::directory_iterator(dir + "/cases", error)) {
@@ -123,13 +123,10 @@ std::string case_problem(const std::string& dir, const nlohmann::json& entry, st
 // those it draws. The records are read on every core at once; the HDF5 library is not
 // thread-safe, so the run files are checked one at a time. The first problem by case id is named.
 void check_case_files(const std::string& dir, const nlohmann::json& summary) {
-    const std::set<std::string> listed = listed_case_ids(summary);
+    const ListedCases listed = listed_cases(summary);  // by id, so the first problem named is by id
     warn_about_stray_files(dir, listed);
-    std::map<std::string, const nlohmann::json*> entries;  // by id, so the first problem named is by id
-    for (const auto& c : summary["cases"])
-        if (c.is_object() && c.contains("id") && c["id"].is_string()) entries.emplace(c["id"].get<std::string>(), &c);
     std::vector<const nlohmann::json*> cases;
-    for (const auto& [id, entry] : entries) cases.push_back(entry);
+    for (const auto& [id, entry] : listed) cases.push_back(entry);
     std::vector<std::string> problems(cases.size());
     std::atomic<std::size_t> next{0};
     std::mutex hdf5;
