@@ -18,7 +18,9 @@ Stones (mass given, "stone" set) have inverse mass 0 and never move. Scenes with
 damping, friction or restitution below 1 are refused: the motion between events is then no
 longer a straight line, or inelastic collapse needs a model of its own.
 
-    collide validate exact_disks.toml --out results     (the suite beside this file)
+    collide validate tests/external/exact_solvers.toml --out results/exact --jobs 2
+
+runs it, and four known-wrong copies of it (tests/external/faulty_exact.py), against `event`.
 """
 
 import numpy as np
