@@ -48,7 +48,8 @@ def figure(cases, scene, labels=None):
         ax.plot(t, error, color=c, linestyle=style, linewidth=min(width, 2.0),
                 label=figures.tex(f"{labels.get(backend, backend)}, seed {case['seed']}"))
         if j["limit"]:
-            ax.plot(t[:len(j["limit"])], j["limit"], color=c, linestyle="--", linewidth=0.8, alpha=0.7)
+            ax.plot(t[:len(j["limit"])], j["limit"], color=c, linestyle="--", linewidth=0.8, alpha=0.7,
+                    label=figures.tex(f"its limit, up to T_h{' (exact: margin × twins)' if j['exact'] else ''}"))
         if j["twins"]:
             twins = np.asarray([np.nan if s is None else max(s, floor) for s in j["twin_separation"]], dtype=float)
             ax.plot(t, twins, color="0.5", linestyle=":", linewidth=1.2,
