@@ -623,7 +623,8 @@ class PredictabilityHorizonShown(unittest.TestCase):
             self.html = f.read()
 
     def test_every_drawn_trajectory_case_says_what_was_judged(self):
-        drawn = [c for c in self.summary["cases"] if c["drawn"] and "trajectory" in c]
+        aliases = analysis.Analysis(self.summary).aliases  # a backend with another's numbers is drawn as it
+        drawn = [c for c in self.summary["cases"] if c["drawn"] and "trajectory" in c and c["backend"] not in aliases]
         self.assertTrue(drawn, "the mini suite has a trajectory scene")
         for c in drawn:
             j = c["trajectory"]
