@@ -26,6 +26,7 @@ import physics  # noqa: E402
 import scenes  # noqa: E402
 import sections  # noqa: E402
 import templating  # noqa: E402
+import trajectory  # noqa: E402
 import verdicts  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 
@@ -609,6 +610,52 @@ class WhatAReaderWasToldWrongly(unittest.TestCase):
         size = os.path.getsize(os.path.join(RESULTS, "report", "index.html"))
         self.assertLess(size, 1_000_000)
         self.assertNotIn("<table class='checks'><tr><th>case (scene__backend__sweep__seed)", self.html)
+
+
+class PredictabilityHorizonShown(unittest.TestCase):
+    """The trajectory figure and its sentences: T_h and the judged output times as summary.json
+    records them (validation/compare/predictability_horizon.h), nothing decided here."""
+
+    def setUp(self):
+        with open(os.path.join(RESULTS, "summary.json"), encoding="utf-8") as f:
+            self.summary = json.load(f)
+        with open(os.path.join(RESULTS, "report", "index.html"), encoding="utf-8") as f:
+            self.html = f.read()
+
+    def test_every_drawn_trajectory_case_says_what_was_judged(self):
+        aliases = analysis.Analysis(self.summary).aliases  # a backend with another's numbers is drawn as it
+        drawn = [c for c in self.summary["cases"] if c["drawn"] and "trajectory" in c and c["backend"] not in aliases]
+        self.assertTrue(drawn, "the mini suite has a trajectory scene")
+        for c in drawn:
+            j = c["trajectory"]
+            self.assertEqual(len(j["times"]), j["outputs"])
+            self.assertEqual(len(j["limit"]), j["judged_outputs"])
+            self.assertIn(f"({c['id']}): {trajectory.judged_text(c)}", self.html)
+        self.assertIn('alt="trajectory error against time"', self.html)
+
+    def sample(self, **changes):
+        j = {"horizon": 9.7, "horizon_reached": True, "first_unjudged": 9.8, "threshold": 5e-4, "margin": 1000.0,
+             "twins": 3, "judged": True, "judged_outputs": 98, "outputs": 201, "exact": True,
+             "times": [0.0, 0.1, 0.2], "error": [0.0, 1e-15, None], "limit": [1e-11, 2e-11],
+             "twin_separation": [1e-14, 2e-14, 1.0]}
+        j.update(changes)
+        return {"id": "s__event-plain__seed2", "seed": 2, "trajectory": j}
+
+    def test_the_horizon_is_named_and_drawn(self):
+        case = self.sample()
+        self.assertIn("T_h = 9.7: output times t ≤ 9.7 judged (98 of 201)", trajectory.judged_text(case))
+        self.assertIn("t = 9.8", trajectory.judged_text(case))
+        section = trajectory.section([("event-plain", case, None)], "s")
+        self.assertTrue(section["png"].startswith(b"\x89PNG"))
+        self.assertEqual(section["margin"], "1000")
+
+    def test_a_horizon_before_the_first_output_is_not_judged(self):
+        case = self.sample(judged=False, judged_outputs=1, horizon=0.0, first_unjudged=0.1, limit=[1e-11])
+        self.assertTrue(trajectory.judged_text(case).startswith("not judged:"))
+
+    def test_a_horizon_beyond_the_run_judges_every_output(self):
+        case = self.sample(horizon_reached=False, first_unjudged=None, judged_outputs=201)
+        self.assertIn("all 201 output times judged", trajectory.judged_text(case))
 
 
 if __name__ == "__main__":

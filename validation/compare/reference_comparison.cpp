@@ -7,6 +7,7 @@
 #include <limits>
 #include <sstream>
 
+#include "validation/compare/predictability_horizon.h"
 #include "validation/judge/check_table.h"
 #include "validation/judge/observables.h"
 #include "validation/judge/statistics.h"
@@ -14,22 +15,40 @@
 
 namespace collide::validation {
 
-double trajectory_error(const CaseResult& a, const CaseResult& ref, const Scene*) {
-    if (a.trajectory.empty() || a.trajectory.size() != ref.trajectory.size()) return std::nan("");
+double smallest_radius(const Snapshot& s) {
     double r_min = std::numeric_limits<double>::infinity();
-    for (double r : ref.initial.radius) r_min = std::min(r_min, r);
+    for (double r : s.radius) r_min = std::min(r_min, r);
+    return r_min;
+}
+
+double snapshot_separation(const Snapshot& a, const Snapshot& b, double r_min) {
+    if (a.x.size() != b.x.size()) return std::nan("");
     double worst = 0;
-    for (std::size_t k = 0; k < a.trajectory.size(); ++k) {
-        const Snapshot& s = a.trajectory[k];
-        const Snapshot& t = ref.trajectory[k];
-        if (s.x.size() != t.x.size() || std::fabs(a.trajectory_time[k] - ref.trajectory_time[k]) > 1e-9)
-            return std::nan("");
-        for (std::size_t i = 0; i < s.x.size(); ++i) {
-            const double d = std::hypot(s.x[i] - t.x[i], s.y[i] - t.y[i]);
-            if (!(d <= worst)) worst = d;  // also carries a NaN through
-        }
+    for (std::size_t i = 0; i < a.x.size(); ++i) {
+        const double d = std::hypot(a.x[i] - b.x[i], a.y[i] - b.y[i]);
+        if (!(d <= worst)) worst = d;  // also carries a NaN through
     }
     return worst / r_min;
+}
+
+std::vector<double> trajectory_error_series(const CaseResult& a, const CaseResult& ref) {
+    if (a.trajectory.empty() || a.trajectory.size() != ref.trajectory.size()) return {};
+    const double r_min = smallest_radius(ref.initial);
+    std::vector<double> out;
+    for (std::size_t k = 0; k < a.trajectory.size(); ++k) {
+        if (std::fabs(a.trajectory_time[k] - ref.trajectory_time[k]) > 1e-9) return {};
+        out.push_back(snapshot_separation(a.trajectory[k], ref.trajectory[k], r_min));
+    }
+    return out;
+}
+
+double trajectory_error(const CaseResult& a, const CaseResult& ref, const Scene*) {
+    const std::vector<double> series = trajectory_error_series(a, ref);
+    if (series.empty()) return std::nan("");
+    double worst = 0;
+    for (double e : series)
+        if (!(e <= worst)) worst = e;
+    return worst;
 }
 
 namespace {
@@ -156,11 +175,104 @@ std::optional<StatisticalDifference> statistical_difference(const ReplicateMeans
     return d;
 }
 
+// The reference run a case's trajectory is compared with: same seed, and the same dt when the
+// reference ran per dt.
+const CaseResult* trajectory_partner(const CaseResult& r, const Group& ref) {
+    const CaseResult* partner = nullptr;
+    for (const CaseResult* q : ref.cases)
+        if (q->spec.seed == r.spec.seed && (!q->spec.dt || q->spec.dt == r.spec.dt)) partner = q;
+    return partner;
+}
+
+std::string output_count(std::size_t judged, std::size_t outputs) {
+    return std::to_string(judged) + " of " + std::to_string(outputs) + " output times";
+}
+
+// Why a group's trajectory_error judged what it judged: the horizon of each seed, in words.
+std::string horizon_words(const std::vector<std::pair<const CaseResult*, TrajectoryJudgement>>& judged) {
+    std::ostringstream s;
+    s << "judged up to the predictability horizon T_h (twins of the reference within tolerance / " << horizon_margin
+      << "):";
+    for (const auto& [r, j] : judged) {
+        s << " seed " << r->spec.seed << ": ";
+        if (!j.measured) s << "no twins recorded, all " << output_count(j.times.size(), j.times.size());
+        else if (!j.horizon.reached) s << "beyond the run, all " << output_count(j.times.size(), j.times.size());
+        else if (!j.judged()) s << "T_h before the first output time, none judged";
+        else s << "T_h = " << j.horizon.time << ", " << output_count(j.horizon.judged, j.times.size());
+        s << ";";
+    }
+    s << " after T_h only conservation and statistics judge";
+    return s.str();
+}
+
+// trajectory_error of one sweep group: each seed's error judged at the output times up to its
+// reference's predictability horizon (predictability_horizon.h); the check reports the seed
+// and output time with the largest error / limit. The per-case judgements go to `records`.
+CheckResult trajectory_check(const Group& g, const Group& ref, double tolerance, bool exact,
+                             std::map<std::string, TrajectoryJudgement>& records, std::vector<double>& seconds,
+                             std::vector<double>& errors) {
+    CheckResult c = make_check(g, "trajectory_error");
+    c.tolerance = tolerance;
+    std::vector<std::pair<const CaseResult*, TrajectoryJudgement>> judged;
+    bool comparable = true;
+    for (const CaseResult* r : g.cases) {
+        const CaseResult* partner = trajectory_partner(*r, ref);
+        std::vector<double> series;
+        if (r->finished() && partner && partner->finished()) series = trajectory_error_series(*r, *partner);
+        if (series.empty()) {
+            comparable = false;
+            continue;
+        }
+        TrajectoryJudgement j = judge_trajectory(partner->trajectory_time, series, partner->twin_separation,
+                                                 tolerance, exact);
+        records[r->spec.id] = j;
+        if (!j.judged()) continue;
+        judged.emplace_back(r, j);
+        if (std::isfinite(j.error[j.worst])) {
+            seconds.push_back(r->wall_seconds / r->duration);
+            errors.push_back(*std::max_element(j.error.begin(), j.error.begin() + std::ptrdiff_t(j.horizon.judged)));
+        }
+    }
+    if (!comparable) {
+        c.status = CheckStatus::fail;
+        c.value = std::nan("");
+        c.detail = "no comparable trajectory (the case or its reference did not finish, or too many disks to record)";
+        return c;
+    }
+    if (judged.empty()) {
+        c.status = CheckStatus::left_out;
+        c.detail = "not judged: in every seed the reference's twins part by more than tolerance / " +
+                   std::to_string(int(horizon_margin)) +
+                   " before the first output time (the predictability horizon is shorter than the output interval)";
+        return c;
+    }
+    const auto worst = std::max_element(judged.begin(), judged.end(), [](const auto& a, const auto& b) {
+        return !std::isnan(a.second.ratio()) && !(b.second.ratio() <= a.second.ratio());
+    });
+    const TrajectoryJudgement& w = worst->second;
+    c.value = w.error[w.worst];
+    c.tolerance = w.limit[w.worst];
+    bool passed = true;
+    for (const auto& [r, j] : judged) passed = passed && j.passed();
+    c.status = passed ? CheckStatus::pass : CheckStatus::fail;
+    std::ostringstream s;
+    if (!passed)
+        s << "maximum position error / r_min = " << c.value << " exceeds the limit " << c.tolerance << " at t = "
+          << w.times[w.worst] << " (seed " << worst->first->spec.seed << "); ";
+    if (w.exact)
+        s << "an exact solver is held to " << horizon_margin
+          << " x the twins' separation at each output time (rounding level), at most the tolerance " << tolerance
+          << "; ";
+    c.detail = s.str() + horizon_words(judged);
+    return c;
+}
+
 }  // namespace
 
 Comparisons compare_with_reference(const Suite& suite, const std::vector<CaseResult>& results,
                                    const std::vector<SceneFeatures>& features,
-                                   const std::map<std::string, Tolerances>& tolerances) {
+                                   const std::map<std::string, Tolerances>& tolerances,
+                                   const std::set<std::string>& exact) {
     Comparisons out;
     // Groups in first-seen order, so the report follows the suite's order.
     std::vector<Group> groups;
@@ -217,29 +329,8 @@ Comparisons compare_with_reference(const Suite& suite, const std::vector<CaseRes
         std::vector<double> seconds, errors;
 
         if (entry.comparison == Comparison::trajectory) {
-            double worst = 0;
-            for (const CaseResult* r : g.cases) {
-                const CaseResult* partner = nullptr;
-                for (const CaseResult* q : ref->cases)
-                    if (q->spec.seed == r->spec.seed && (!q->spec.dt || q->spec.dt == r->spec.dt)) partner = q;
-                double e = std::nan("");
-                if (r->finished() && partner && partner->finished()) e = trajectory_error(*r, *partner);
-                if (!(e <= worst)) worst = e;
-                if (r->finished() && std::isfinite(e)) {
-                    seconds.push_back(r->wall_seconds / r->duration);
-                    errors.push_back(e);
-                }
-            }
-            CheckResult c = make_check(g, "trajectory_error");
-            if (std::isnan(worst)) {
-                c.status = CheckStatus::fail;
-                c.value = worst;
-                c.tolerance = tol.trajectory_error;
-                c.detail = "no comparable trajectory (the case or its reference did not finish, or too many disks to record)";
-            } else {
-                judge_at_most(c, worst, tol.trajectory_error, "maximum position error / r_min");
-            }
-            out.checks.push_back(c);
+            out.checks.push_back(trajectory_check(g, *ref, tol.trajectory_error, exact.count(spec.backend) > 0,
+                                                  out.trajectories, seconds, errors));
         } else {
             // Stepped rules differ from the exact dynamics by a derived first-order bias: their
             // statistics are judged against it (statistics_bias_model.h); every other backend

@@ -6,11 +6,13 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "validation/judge/checks.h"
 #include "validation/compare/convergence_order.h"
+#include "validation/compare/predictability_horizon.h"
 #include "validation/plan/suite.h"
 
 namespace collide::validation {
@@ -57,12 +59,29 @@ struct WorkPrecisionLine {
 struct Comparisons {
     std::vector<CheckResult> checks;
     std::vector<WorkPrecisionLine> work_precision;
+    // Each trajectory case's error judged up to its reference's predictability horizon, by
+    // case id (predictability_horizon.h): summary.json records them.
+    std::map<std::string, TrajectoryJudgement> trajectories;
 };
 
-// `tolerances` maps a backend name to its tolerances; `features` is parallel to suite.scenes.
+// `tolerances` maps a backend name to its tolerances; `features` is parallel to suite.scenes;
+// `exact`: the backends that claim exact dynamics in double (no time step, every contact at its
+// time), whose trajectories are held to the rounding level of the reference's twins.
 Comparisons compare_with_reference(const Suite& suite, const std::vector<CaseResult>& results,
                                    const std::vector<SceneFeatures>& features,
-                                   const std::map<std::string, Tolerances>& tolerances);
+                                   const std::map<std::string, Tolerances>& tolerances,
+                                   const std::set<std::string>& exact = {});
+
+// The smallest radius of a snapshot's disks: trajectory errors are measured in it.
+double smallest_radius(const Snapshot& s);
+
+// The largest distance between a disk of `a` and the same disk of `b`, / r_min (NaN when the
+// snapshots hold different numbers of disks or a position is not finite).
+double snapshot_separation(const Snapshot& a, const Snapshot& b, double r_min);
+
+// snapshot_separation at every common output time, in the reference's r_min; empty when the
+// trajectories cannot be compared (not recorded, other output times).
+std::vector<double> trajectory_error_series(const CaseResult& a, const CaseResult& reference);
 
 // max over common output times and disks of the (minimum-image) distance between two
 // trajectories, divided by the smallest radius; NaN when they cannot be compared.

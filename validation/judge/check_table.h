@@ -62,11 +62,13 @@ inline constexpr CheckDefinition check_table[] = {
     {"wall_penetration", CheckKind::case_check, "max_t max over disks of (depth beyond a wall) / r", "<= tolerance",
      "wall_penetration", &Tolerances::wall_penetration, "reflecting walls: a periodic box has none",
      "applicability.cpp: wall_penetration_left_out; checks.cpp: case_checks"},
-    {"trajectory_error", CheckKind::trajectory, "max over output times and disks of |x - x_ref| / r_min",
-     "<= tolerance", "trajectory_error", &Tolerances::trajectory_error,
-     "compare = \"trajectory\" (few bodies: trajectories are not chaotic), against the reference run of the "
-     "same seed",
-     "reference_comparison.cpp: trajectory_error"},
+    {"trajectory_error", CheckKind::trajectory,
+     "max over output times t <= T_h (the predictability horizon) and disks of |x - x_ref| / r_min",
+     "<= tolerance; a solver claiming exact dynamics in double: <= 1000 x the reference twins' separation at t",
+     "trajectory_error", &Tolerances::trajectory_error,
+     "compare = \"trajectory\" (few bodies), against the reference run of the same seed, up to its predictability "
+     "horizon; not judged where the horizon is shorter than the first output time",
+     "reference_comparison.cpp: trajectory_check; predictability_horizon.cpp"},
     {"pressure", CheckKind::statistics,
      "z-score of Z = P/(rho kT) against the reference, over replicates (stepped backends: against the reference "
      "plus the rule's predicted bias)",

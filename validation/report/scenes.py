@@ -13,6 +13,7 @@ import animations
 import digest
 import figures
 import progress
+import trajectory
 
 
 def scene_box(path):
@@ -96,7 +97,8 @@ def scene_section(summary, directory, a, scene, chosen, jumps):
         overlaps=figures.overlap_histogram(shown, scene, labels),
         configuration=figures.configuration(result, scene_box(summary.get("scene_files", {}).get(scene, "")),
                                             scene, backend),
-        configuration_case=case["id"], motion=animations.section(summary, directory, scene))
+        configuration_case=case["id"], motion=animations.section(summary, directory, scene),
+        trajectory=trajectory.section([(b, c, r) for b, c, r in chosen if b not in a.aliases], scene, labels))
     return section
 
 

@@ -12,6 +12,8 @@
 #include "core/metrics.h"
 #include "validation/judge/observables.h"
 #include "validation/compare/phase_shift.h"
+#include "validation/compare/predictability_horizon.h"
+#include "validation/run/twin_runs.h"
 
 namespace collide::validation {
 namespace {
@@ -117,6 +119,11 @@ void measure(const CaseSpec& spec, const CaseContext& ctx, CaseResult& result) {
         result.contacts = stats.contacts;
     }
     result.provenance = solver->provenance();
+    // The reference of a trajectory comparison measures its own predictability horizon: its
+    // twins run after the timed run, untimed (predictability_horizon.h).
+    if (spec.reference && entry.comparison == Comparison::trajectory && record_trajectory && result.finished())
+        result.twin_separation = twin_separation(scene, *ctx.backend, case_backend_options(spec), initial,
+                                                 result.trajectory, spec.seed, horizon_twins);
     if (writer) {
         writer->write_attributes(file_attributes(scene, spec, *solver));
         writer->commit();

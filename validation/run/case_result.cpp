@@ -122,6 +122,7 @@ void write_case_result(const CaseResult& r, const std::string& path) {
                      {"final", to_table(r.final_state)},
                      {"trajectory_time", to_array(r.trajectory_time)},
                      {"trajectory", trajectory},
+                     {"twin_separation", to_array(r.twin_separation)},
                      {"overlap_depths", to_array(r.overlap_depths)},
                      {"compressibility", to_array(r.compressibility)},
                      {"hdf5_file", r.hdf5_file}};
@@ -318,6 +319,7 @@ CaseResult read_case_result(const std::string& path) {
         if (!t) in.damaged("an entry of 'trajectory' is not a table");
         r.trajectory.push_back(in.snapshot(*t, "trajectory[]."));
     }
+    r.twin_separation = in.numbers(root, "twin_separation");
     r.overlap_depths = in.numbers(root, "overlap_depths");
     r.compressibility = in.numbers(root, "compressibility");
     r.hdf5_file = in.text(root, "hdf5_file");

@@ -50,6 +50,9 @@ struct CaseResult {
     Snapshot initial, final_state;
     std::vector<double> trajectory_time;       // output times of the recorded trajectory
     std::vector<Snapshot> trajectory;          // positions at those times (few-body scenes only)
+    // A reference run of a trajectory scene: its twins' largest separation from it at each of
+    // those times [r_min] (twin_runs.h); empty for every other case.
+    std::vector<double> twin_separation;
     std::vector<double> overlap_depths;        // relative depths of overlapping pairs, final state
     std::vector<double> compressibility;       // Z = P/(rho kT) per snapshot in the second half
     std::string hdf5_file;                     // relative to the output directory, "" if none

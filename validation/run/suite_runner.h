@@ -39,6 +39,7 @@ struct SuiteOutcome {
     std::vector<CheckResult> checks;
     std::vector<Classification> classifications;  // parallel to cases; empty unless suite.stability
     std::vector<WorkPrecisionLine> work_precision;
+    std::map<std::string, TrajectoryJudgement> trajectories;  // by case id (predictability_horizon.h)
     PhysicsComparison physics;                     // "Reference against physics" (physics_rows.h)
     std::size_t cases_run = 0, cases_resumed = 0;
     int jobs = 1;  // the cases run at the same time in this process (options.jobs resolved)

@@ -85,7 +85,29 @@ double per_time_unit(const CaseResult& r) {
     return r.finished() && r.duration > 0 && std::isfinite(r.wall_seconds) ? r.wall_seconds / r.duration : std::nan("");
 }
 
-Json case_json(const CaseResult& r, const Classification* c, bool frames, bool drawn) {
+Json numbers_json(const std::vector<double>& v) { return array(v, [](double x) { return nullable(x); }); }
+
+// A trajectory case's judgement up to its reference's predictability horizon
+// (predictability_horizon.h): the horizon and what was judged; the series themselves only for
+// a drawn case (the report draws them: error, limit and twin separation against time).
+Json trajectory_json(const TrajectoryJudgement& j, bool series) {
+    Object o;
+    o.field("horizon", nullable(j.horizon.time)).boolean("horizon_reached", j.horizon.reached)
+        .field("first_unjudged", nullable(j.horizon.first_unjudged)).number("threshold", j.horizon.threshold)
+        .number("margin", horizon_margin).integer("twins", j.measured ? horizon_twins : 0)
+        .boolean("judged", j.judged()).integer("judged_outputs", (long long)j.horizon.judged)
+        .integer("outputs", (long long)j.times.size()).boolean("exact", j.exact);
+    if (!j.limit.empty())
+        o.number("worst_time", j.times[j.worst]).field("worst_error", nullable(j.error[j.worst]))
+            .number("worst_limit", j.limit[j.worst]);
+    if (series)
+        o.field("times", numbers_json(j.times)).field("error", numbers_json(j.error))
+            .field("twin_separation", numbers_json(j.twin_separation)).field("limit", numbers_json(j.limit));
+    return o.json();
+}
+
+Json case_json(const CaseResult& r, const Classification* c, bool frames, bool drawn,
+               const TrajectoryJudgement* trajectory) {
     Object o;
     o.text("id", r.spec.id).text("scene", r.spec.scene).text("backend", r.spec.backend)
         .boolean("reference", r.spec.reference).text("group", group_id(r.spec))
@@ -107,6 +129,7 @@ Json case_json(const CaseResult& r, const Classification* c, bool frames, bool d
     for (const auto& [path, value] : r.spec.parameters) parameters.number(path, value);
     o.field("parameters", parameters.json());
     if (c) o.text("outcome", to_string(c->outcome)).text("outcome_reason", c->reason);
+    if (trajectory) o.field("trajectory", trajectory_json(*trajectory, drawn));
     return o.json();
 }
 
@@ -352,7 +375,9 @@ Json cases_json(const Suite& suite, const SuiteOutcome& outcome) {
         const Classification* c = k < outcome.classifications.size() ? &outcome.classifications[k] : nullptr;
         const CaseSpec& spec = outcome.cases[k].spec;
         const bool frames = spec.scene_index < suite.scenes.size() && stores_frames(suite, suite.scenes[spec.scene_index]);
-        out.push_back(case_json(outcome.cases[k], c, frames, drawn[k]));
+        const auto judgement = outcome.trajectories.find(spec.id);
+        out.push_back(case_json(outcome.cases[k], c, frames, drawn[k],
+                                judgement == outcome.trajectories.end() ? nullptr : &judgement->second));
     }
     return out;
 }
