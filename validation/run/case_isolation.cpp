@@ -1,6 +1,7 @@
 #include "validation/run/case_isolation.h"
 
 #include "core/io/fd_io.h"
+#include "core/process/descendants.h"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -92,6 +93,7 @@ void stop_cases_and_die(std::map<pid_t, Child>& running, Workers& workers, const
         ::waitpid(pid, nullptr, 0);
         remove_temporaries(options.runs_dir, options.result_dir, pid);
     }
+    end_children_except({});  // what the killed cases' solvers left running
     const int signal_number = stop_signal;
     ::signal(signal_number, SIG_DFL);
     ::raise(signal_number);
@@ -311,6 +313,9 @@ void run_isolated_claiming(const IsolationOptions& options, const std::function<
                                                           [](const auto& w) { return bool(w.second.current); }));
     };
     bool claimed_all = false;
+    // A case killed at its time limit orphans what its solver left running (a daemon outside
+    // its process group): adopted here, it is ended below before the summary is written.
+    become_subreaper();
     stop_signal = 0;
     for (int s : stop_signals) ::signal(s, record_stop_signal);
     // A worker that died leaves its request pipe without a reader: writing to it must fail
@@ -380,6 +385,7 @@ void run_isolated_claiming(const IsolationOptions& options, const std::function<
     // No case left: each worker reads the end of its requests and exits.
     for (const auto& [pid, worker] : workers) close_worker(worker);
     for (const auto& [pid, worker] : workers) ::waitpid(pid, nullptr, 0);
+    end_children_except({});  // every case is over: any process still here is a stray
     ::signal(SIGPIPE, previous_sigpipe);
     for (int s : stop_signals) ::signal(s, SIG_DFL);
 }
