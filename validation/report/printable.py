@@ -6,8 +6,8 @@ of the C++ side.
                   so that no escape reaches the terminal and no line break forges a line of
                   collide's own output; letters of any script pass;
   markdown(text)  terminal(), then what Markdown would read as markup written as text: HTML
-                  (& < >) as entities, so a solver's "<script>" or "<b>" is shown, not run or
-                  drawn; '|' (a table cell's end), '`' (a code span) and '](' (a link)
+                  (& < >) as entities, so a tag a solver prints (script, b) is shown as text,
+                  not run or drawn; '|' (a table cell's end), '`' (a code span) and '](' (a link)
                   escaped with a backslash, and a backslash itself.
 """
 
