@@ -51,7 +51,7 @@ std::string ProgramOutcome::describe(double limit_seconds) const {
 namespace {
 
 // Ends what the program left behind: the rest of its process group, and every descendant that
-// left the group (setsid) and was adopted here as an orphan (become_subreaper). A process of
+// left the group (setsid) and was adopted here as an orphan (SubreaperScope). A process of
 // the group that is still dying may yet orphan a child, so the group is waited for until it is
 // gone (its zombies are reaped here as adopted children), at most a second.
 void end_what_the_call_left(pid_t group, const std::set<pid_t>& children_before) {
@@ -73,7 +73,7 @@ ProgramOutcome call_program(const std::string& command, const std::string& argum
     using Clock = std::chrono::steady_clock;
     const std::string script = command + " \"$1\"";  // the request directory as the last argument
     const pid_t parent = ::getpid();
-    become_subreaper();  // the program's orphans are adopted here, not by init
+    const SubreaperScope adopt_orphans;  // the program's orphans are adopted here, not by init
     const std::set<pid_t> children_before = child_processes();
     const auto start = Clock::now();
     const pid_t pid = ::fork();

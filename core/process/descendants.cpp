@@ -57,7 +57,12 @@ void scan_proc_for_children(std::set<pid_t>& out) {
 
 }  // namespace
 
-bool become_subreaper() { return ::prctl(PR_SET_CHILD_SUBREAPER, 1, 0, 0, 0) == 0; }
+SubreaperScope::SubreaperScope() {
+    ::prctl(PR_GET_CHILD_SUBREAPER, &previous_, 0, 0, 0);
+    ::prctl(PR_SET_CHILD_SUBREAPER, 1, 0, 0, 0);
+}
+
+SubreaperScope::~SubreaperScope() { ::prctl(PR_SET_CHILD_SUBREAPER, previous_, 0, 0, 0); }
 
 std::set<pid_t> child_processes() {
     std::set<pid_t> children;

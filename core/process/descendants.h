@@ -13,8 +13,19 @@
 
 namespace collide {
 
-// Makes this process the reaper of its orphaned descendants; false where the kernel refuses.
-bool become_subreaper();
+// While it lives, this process is the reaper of its orphaned descendants; the previous setting
+// comes back at its end, so that a program using collide (a Python interpreter) does not go on
+// adopting the orphans of its other children.
+class SubreaperScope {
+public:
+    SubreaperScope();
+    ~SubreaperScope();
+    SubreaperScope(const SubreaperScope&) = delete;
+    SubreaperScope& operator=(const SubreaperScope&) = delete;
+
+private:
+    int previous_ = 0;
+};
 
 // The processes whose parent is this process now (any of its threads), zombies included:
 // from /proc/self/task/*/children, else by a scan of /proc/*/stat.

@@ -315,7 +315,7 @@ void run_isolated_claiming(const IsolationOptions& options, const std::function<
     bool claimed_all = false;
     // A case killed at its time limit orphans what its solver left running (a daemon outside
     // its process group): adopted here, it is ended below before the summary is written.
-    become_subreaper();
+    const SubreaperScope adopt_orphans;
     stop_signal = 0;
     for (int s : stop_signals) ::signal(s, record_stop_signal);
     // A worker that died leaves its request pipe without a reader: writing to it must fail
