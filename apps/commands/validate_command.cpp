@@ -55,9 +55,9 @@ void execute(const ValidateArgs& args) {
     options.dispatch = dispatch.get();
     const auto outcome = validation::run_suite(suite, backends, options);
     if (!reports) return;
-    std::printf("suite     %s: %zu cases (%zu run, %zu resumed) in %.1f s, %d at a time%s\n", suite.name.c_str(),
-                outcome.cases.size(), outcome.cases_run, outcome.cases_resumed, outcome.wall_seconds, outcome.jobs,
-                dispatch ? " per rank" : "");
+    std::printf("suite     %s: %zu cases (%zu run, %zu resumed) in %.1f s, %d at a time%s\n",
+                printable(suite.name).c_str(), outcome.cases.size(), outcome.cases_run, outcome.cases_resumed,
+                outcome.wall_seconds, outcome.jobs, dispatch ? " per rank" : "");
     std::printf("checks    %zu passed, %zu failed, %zu left out\n", outcome.count(validation::CheckStatus::pass),
                 outcome.count(validation::CheckStatus::fail), outcome.count(validation::CheckStatus::left_out));
     // One line per failed check: its detail may quote a solver's output, whose line breaks and
