@@ -6,6 +6,7 @@
 #include "commands/commands.h"
 #include "core/io/hdf5_handle.h"
 #include "core/io/provenance.h"
+#include "core/text/printable.h"
 
 int main(int argc, char** argv) {
     collide::skip_hdf5_cleanup_at_exit();
@@ -34,7 +35,9 @@ int main(int argc, char** argv) {
                      "for the memory available, or a limit such as `ulimit -v` is set)\n";
         return 1;
     } catch (const std::exception& e) {
-        std::cerr << "collide: error: " << e.what() << "\n";
+        // A message quotes what collide read (a key, a path, a program's output): shown through
+        // the one sanitiser, so no terminal escape in it reaches the terminal.
+        std::cerr << "collide: error: " << collide::printable(e.what(), collide::LineBreaks::kept) << "\n";
         return 1;
     }
     return 0;

@@ -1,7 +1,12 @@
 // Command-line checks of the files and directories a command reads, naming the system's own
 // cause (core/io/output_file.h, input_path_problem): CLI11's ExistingFile says "File does not
 // exist" for a loop of symbolic links, a path too long or a directory without permission.
+// A refused input is collide's error, not a usage error: the validator throws (CLI11 passes
+// anything but its own ValidationError through), so main() prints "collide: error: PATH: why"
+// and exits 1 as docs/refusals.md says, for every command, instead of CLI11's exit 105.
 #pragma once
+
+#include <stdexcept>
 
 #include <CLI/CLI.hpp>
 
@@ -13,7 +18,8 @@ inline CLI::Validator readable_input(bool directory) {
     return CLI::Validator(
         [directory](std::string& path) {
             const std::string why = input_path_problem(path, directory);
-            return why.empty() ? std::string() : path + ": " + why;
+            if (!why.empty()) throw std::runtime_error(path + ": " + why);
+            return std::string();
         },
         directory ? "DIR" : "FILE", directory ? "readable directory" : "readable file");
 }

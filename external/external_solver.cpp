@@ -11,6 +11,7 @@
 
 #include "core/numerics/number_text.h"
 #include "core/numerics/target_time.h"
+#include "core/text/printable.h"
 #include "npy.h"
 #include "program_call.h"
 #include "sha256.h"

@@ -1,5 +1,7 @@
 #include "program_call.h"
 
+#include "core/process/descendants.h"
+
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/prctl.h>
@@ -8,8 +10,8 @@
 
 #include <cerrno>
 #include <chrono>
-#include <cstdio>
 #include <cstring>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -46,11 +48,33 @@ std::string ProgramOutcome::describe(double limit_seconds) const {
     return out.str();
 }
 
+namespace {
+
+// Ends what the program left behind: the rest of its process group, and every descendant that
+// left the group (setsid) and was adopted here as an orphan (SubreaperScope). A process of
+// the group that is still dying may yet orphan a child, so the group is waited for until it is
+// gone (its zombies are reaped here as adopted children), at most a second.
+void end_what_the_call_left(pid_t group, const std::set<pid_t>& children_before) {
+    using Clock = std::chrono::steady_clock;
+    const auto start = Clock::now();
+    for (;;) {
+        ::kill(-group, SIGKILL);
+        end_children_except(children_before);
+        if (::kill(-group, 0) != 0 || Clock::now() - start > std::chrono::seconds(1)) break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    end_children_except(children_before);
+}
+
+}  // namespace
+
 ProgramOutcome call_program(const std::string& command, const std::string& argument, const std::string& directory,
                             const std::string& output_path, double limit_seconds) {
     using Clock = std::chrono::steady_clock;
     const std::string script = command + " \"$1\"";  // the request directory as the last argument
     const pid_t parent = ::getpid();
+    const SubreaperScope adopt_orphans;  // the program's orphans are adopted here, not by init
+    const std::set<pid_t> children_before = child_processes();
     const auto start = Clock::now();
     const pid_t pid = ::fork();
     if (pid < 0) throw std::runtime_error(std::string("fork failed: ") + std::strerror(errno));
@@ -71,30 +95,13 @@ ProgramOutcome call_program(const std::string& command, const std::string& argum
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
-    ::kill(-pid, SIGKILL);  // whatever the program left running in its group
+    end_what_the_call_left(pid, children_before);
     outcome.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     if (!outcome.timed_out) {
         if (WIFEXITED(status)) outcome.exit_status = WEXITSTATUS(status);
         else if (WIFSIGNALED(status)) outcome.signal = WTERMSIG(status);
     }
     return outcome;
-}
-
-std::string printable_tail(const std::string& text, std::size_t max_chars) {
-    std::string out;
-    const std::size_t from = text.size() > max_chars ? text.size() - max_chars : 0;
-    if (from) out = "...";
-    char hex[5];
-    for (std::size_t i = from; i < text.size(); ++i) {
-        const unsigned char c = static_cast<unsigned char>(text[i]);
-        if ((c >= 0x20 && c < 0x7f) || c == '\n') {
-            out += char(c);
-        } else {
-            std::snprintf(hex, sizeof hex, "\\x%02x", c);
-            out += hex;
-        }
-    }
-    return out;
 }
 
 }  // namespace collide::external

@@ -3,6 +3,8 @@
 // hang, exit with any status, print anything), the caller gets an outcome, never a hang:
 // at the limit the whole process group is killed, and if the caller itself dies (the suite
 // runner kills a case past its time limit) the program gets SIGKILL too (PR_SET_PDEATHSIG).
+// A descendant that leaves the group (setsid, a daemon) is adopted by the caller as its child
+// subreaper and ended with the call too (core/process/descendants.h).
 #pragma once
 
 #include <string>
@@ -24,10 +26,5 @@ struct ProgramOutcome {
 // when the process cannot be started at all (fork fails).
 ProgramOutcome call_program(const std::string& command, const std::string& argument, const std::string& directory,
                             const std::string& output_path, double limit_seconds);
-
-// At most `max_chars` of the end of `text`, with every byte that is not printable ASCII (or a
-// newline) shown as \xNN: a program's output quoted in a message can then hold no terminal
-// escapes, no invalid UTF-8 and no control characters (the report escapes HTML as well).
-std::string printable_tail(const std::string& text, std::size_t max_chars);
 
 }  // namespace collide::external

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "core/text/printable.h"
 #include "core/io/progress_line.h"
 #include "apps/input_paths.h"
 #include "core/metrics.h"
@@ -43,7 +44,8 @@ std::string suite_of(const ExplainArgs& args) {
 }
 
 void print_text(const validation::ReplayedCase& c, const validation::EnergyJump& jump) {
-    std::printf("case      %s (%s, dt = %g)\n", c.spec.id.c_str(), c.spec.backend.c_str(), c.scene.run.dt);
+    std::printf("case      %s (%s, dt = %g)\n", printable(c.spec.id).c_str(), printable(c.spec.backend).c_str(),
+                c.scene.run.dt);
     if (!c.scene.overrides.empty())
         std::printf("set       %s (a what-if rerun, not the recorded run)\n", c.scene.overrides.c_str());
     std::printf("step      %lld: t = %.6g -> %.6g\n", static_cast<long long>(jump.step), jump.time_before, jump.time_after);

@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 
+#include "core/text/printable.h"
 #include "core/io/progress_line.h"
 #include "commands.h"
 #include "core/backend_registry.h"
@@ -82,7 +83,7 @@ double relative_change(double initial, double final_value) {
 void print_summary(const Scene& scene, const std::string& backend, const RunResult& r) {
     const Metrics& a = r.series.front();
     const Metrics& b = r.series.back();
-    std::printf("scene     %s (%zu disks, seed %llu)\n", scene.name.c_str(), r.final_state.size(),
+    std::printf("scene     %s (%zu disks, seed %llu)\n", printable(scene.name).c_str(), r.final_state.size(),
                 static_cast<unsigned long long>(scene.seed));
     if (!scene.overrides.empty()) std::printf("set       %s\n", scene.overrides.c_str());
     std::printf("backend   %s, %lld steps, %lld contacts, %.3f s wall time\n", backend.c_str(),

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "core/text/printable.h"
 #include "apps/resource_path.h"
 #include "commands.h"
 #include "core/scene/scene_loader.h"
@@ -24,9 +25,10 @@ void add_scenes_command(CLI::App& app) {
         for (const auto& f : files) {
             const std::string rel = fs::relative(f, dir).string();
             try {
-                std::printf("%-40s %s\n", rel.c_str(), load_scene(f.string()).description.c_str());
+                std::printf("%-40s %s\n", printable(rel).c_str(),
+                            printable(load_scene(f.string()).description).c_str());
             } catch (const std::exception& e) {
-                std::printf("%-40s (invalid: %s)\n", rel.c_str(), e.what());
+                std::printf("%-40s (invalid: %s)\n", printable(rel).c_str(), printable(e.what()).c_str());
             }
         }
     });

@@ -11,6 +11,7 @@
 #include "apps/input_paths.h"
 #include "commands.h"
 #include "core/backend_registry.h"
+#include "core/text/printable.h"
 #include "validation/run/suite_runner.h"
 
 namespace collide::cli {
@@ -54,20 +55,23 @@ void execute(const ValidateArgs& args) {
     options.dispatch = dispatch.get();
     const auto outcome = validation::run_suite(suite, backends, options);
     if (!reports) return;
-    std::printf("suite     %s: %zu cases (%zu run, %zu resumed) in %.1f s, %d at a time%s\n", suite.name.c_str(),
-                outcome.cases.size(), outcome.cases_run, outcome.cases_resumed, outcome.wall_seconds, outcome.jobs,
-                dispatch ? " per rank" : "");
+    std::printf("suite     %s: %zu cases (%zu run, %zu resumed) in %.1f s, %d at a time%s\n",
+                printable(suite.name).c_str(), outcome.cases.size(), outcome.cases_run, outcome.cases_resumed,
+                outcome.wall_seconds, outcome.jobs, dispatch ? " per rank" : "");
     std::printf("checks    %zu passed, %zu failed, %zu left out\n", outcome.count(validation::CheckStatus::pass),
                 outcome.count(validation::CheckStatus::fail), outcome.count(validation::CheckStatus::left_out));
+    // One line per failed check: its detail may quote a solver's output, whose line breaks and
+    // escapes are shown as \xNN (printable) so that they cannot forge lines of this summary.
     for (const auto& c : outcome.checks)
         if (c.status == validation::CheckStatus::fail)
-            std::printf("FAIL      %s: %s: %s\n", c.subject.c_str(), c.check.c_str(), c.detail.c_str());
+            std::printf("FAIL      %s: %s: %s\n", printable(c.subject).c_str(), printable(c.check).c_str(),
+                        printable(c.detail).c_str());
     std::printf("output    %s/summary.json, %s/junit.xml\n", args.out.c_str(), args.out.c_str());
     if (suite.stability) {
         // A stability suite's product is the classification: breaking cases are findings.
         // It fails only where something unexpected happened (validation/judge/stability.h).
         const auto unexpected = validation::unexpected_outcomes(outcome.cases, outcome.classifications);
-        for (const auto& line : unexpected) std::printf("UNEXPECTED %s\n", line.c_str());
+        for (const auto& line : unexpected) std::printf("UNEXPECTED %s\n", printable(line).c_str());
         std::printf("stability %zu cases classified, %zu unexpected%s\n", outcome.classifications.size(),
                     unexpected.size(), unexpected.empty() ? " (failed checks above are findings of the map)" : "");
         if (!unexpected.empty()) throw CLI::RuntimeError(1);

@@ -5,6 +5,7 @@
 
 #include "core/scene/scene_loader.h"
 #include "core/scene/toml_fields.h"
+#include "core/text/printable.h"
 
 namespace collide {
 namespace {
@@ -109,8 +110,13 @@ Scene scene_with_overrides(const Scene& scene, const std::vector<SceneOverride>&
     toml::table root = toml::parse(scene.source_text, file);  // parsed once before, so it parses
     for (const SceneOverride& o : overrides) {
         const TomlPathFail fail = [&](const std::string& why) {
-            throw SceneError(file + ": --set " + shortened(o.text()) + ": " + why);
+            throw SceneError(file + ": --set " + shortened(printable(o.text())) + ": " + why);
         };
+        // A line break would end the value's TOML line: "run.dt=0.002\n# x" ran with 0.002 and
+        // recorded the whole text. Any control character is refused, so what runs is what is recorded.
+        if (has_control_character(o.path) || has_control_character(o.value))
+            fail(std::string("the ") + (has_control_character(o.path) ? "path" : "value") +
+                 " holds a control character (shown as \\xNN); a --set is one line of printable text");
         const auto dot = o.path.rfind('.');
         const std::string last = dot == std::string::npos ? o.path : o.path.substr(dot + 1);
         if (last.empty()) fail("an empty component");

@@ -92,6 +92,16 @@ std::string origin(const Suite& suite, const CaseSpec& c) {
 // A case id names the case's record and run file, its --resume entry and its report row: two
 // cases with one id would write one file and lose the other result. Refused before any case
 // runs, naming both sources and the usual causes.
+// What a backend of the suite is and where it was named, for messages: "the outside solver
+// 'box2d-shipped' (--solver)", "the variant 'box2d[shipped]' (suite.toml, [variant."box2d[shipped]"])".
+std::string backend_origin(const Suite& suite, const std::string& backend) {
+    for (const auto& s : suite.solvers)
+        if (s.name == backend) return "the outside solver '" + backend + "' (" + s.origin + ")";
+    if (find_variant(backend, suite))
+        return "the variant '" + backend + "' (" + suite.source_path + ", [variant.\"" + backend + "\"])";
+    return "the built-in backend '" + backend + "'";
+}
+
 void refuse_duplicate_ids(const Suite& suite, const std::vector<CaseSpec>& cases) {
     std::map<std::string, std::size_t> first;
     for (std::size_t i = 0; i < cases.size(); ++i) {
@@ -99,6 +109,12 @@ void refuse_duplicate_ids(const Suite& suite, const std::vector<CaseSpec>& cases
         if (inserted) continue;
         const CaseSpec& a = cases[it->second];
         const CaseSpec& b = cases[i];
+        // Two backends whose labels give one id token (box2d[shipped] and box2d-shipped): the
+        // clash is theirs, whatever the scenes.
+        if (a.backend != b.backend)
+            throw SuiteError(backend_origin(suite, a.backend) + " and " + backend_origin(suite, b.backend) +
+                             " name their cases alike ('" + backend_id_token(a.backend) + "', as in case '" + b.id +
+                             "'): one would overwrite the other's records and runs; rename one of them");
         throw SuiteError(origin(suite, b) + ": case '" + b.id + "' is planned twice (also by " + origin(suite, a) +
                          "); each case needs its own id: give scenes that share a file stem different `name`s (with `path` naming each file), "
                          "and list each seed, dt and `set` value once");

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/scene/toml_fields.h"
+#include "validation/plan/backend_variant.h"
 #include "validation/plan/solver_tables.h"
 #include "validation/models/statistics_bias_model.h"
 
@@ -77,10 +78,18 @@ std::vector<BackendInfo> backends_with_solvers(const Suite& suite, std::vector<B
                                                const PythonRunner& python) {
     std::vector<std::string> stepped;
     for (external::ExternalSolverSpec spec : suite.solvers) {
-        const auto clash = [&](const std::string& n) { return n == spec.name; };
-        if (std::any_of(built_in.begin(), built_in.end(), [&](const BackendInfo& b) { return clash(b.name); }) ||
-            std::any_of(suite.variants.begin(), suite.variants.end(), [&](const auto& v) { return clash(v.label); }))
-            throw SuiteError(spec.origin + ": '" + spec.name + "' is the name of a backend already; choose another");
+        // A clash of the names that case ids and file names spell (backend_id_token): the
+        // variant box2d[shipped] writes box2d-shipped's files.
+        const auto clash = [&](const std::string& n) { return backend_id_token(n) == backend_id_token(spec.name); };
+        for (const BackendInfo& b : built_in)
+            if (clash(b.name))
+                throw SuiteError(spec.origin + ": the outside solver '" + spec.name + "' is named like the backend '" +
+                                 b.name + "', whose case ids and files it would share; choose another name");
+        for (const auto& v : suite.variants)
+            if (clash(v.label))
+                throw SuiteError(spec.origin + ": the outside solver '" + spec.name + "' is named like the variant '" +
+                                 v.label + "' (" + suite.source_path + ", [variant.\"" + v.label + "\"]), whose case "
+                                 "ids and files spell it '" + backend_id_token(v.label) + "'; choose another name");
         if (!spec.python_class.empty())
             spec.command = shell_quote(python.python) + " " + shell_quote(python.runner) + " " + shell_quote(spec.python_class);
         spec.call_time_limit = call_share_of_case_limit * suite.time_limit_seconds;

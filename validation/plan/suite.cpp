@@ -9,6 +9,7 @@
 #include "core/io/output_file.h"
 #include "core/scene/scene_loader.h"
 #include "core/scene/toml_fields.h"
+#include "core/text/printable.h"
 #include "validation/judge/check_table.h"
 #include "validation/plan/external_solvers.h"
 #include "validation/plan/solver_tables.h"
@@ -185,6 +186,9 @@ std::vector<SceneParameter> read_parameter_sweeps(const toml::table& t, const st
     for (const auto& [key, value] : *table) {
         const std::string path(key.str());
         const TomlFields inner(*table, where + ".set", file);
+        if (has_control_character(path))
+            inner.fail(path, "a path into the scene file, without control characters (the key holds one: '" +
+                                 printable(path) + "')");
         if (value.is_table())
             inner.fail(path, "an array of numbers (quote a dotted path: \"" + path + ".…\" = [...])");
         const toml::array* values = value.as_array();
@@ -197,6 +201,34 @@ std::vector<SceneParameter> read_parameter_sweeps(const toml::table& t, const st
         out.push_back(std::move(p));
     }
     return out;
+}
+
+// A `set` of a scene key that the entry's own run settings set again: the case would be
+// labelled with the set's value (run.dt=0.002) but run with the entry's (dt = [0.001]),
+// since case_scene applies those after the sweep. Refused, naming the file, the line and both.
+void refuse_set_beside_run_setting(const toml::table& t, const SuiteScene& s, const std::string& file,
+                                   const std::string& where) {
+    if (s.set.empty()) return;
+    struct Setting {
+        const char* scene_key;
+        const char* entry_key;
+        bool set_by_entry;
+    };
+    const Setting settings[] = {{"run.dt", "dt", !s.dt.empty()},
+                                {"run.substeps", "substeps", !s.substeps.empty()},
+                                {"run.duration", "duration", s.duration.has_value()},
+                                {"run.output_interval", "output_interval", s.output_interval.has_value()},
+                                {"seed", "seeds", true}};
+    const TomlFields inner(*t.get("set")->as_table(), where + ".set", file);
+    for (const SceneParameter& p : s.set)
+        for (const Setting& setting : settings) {
+            if (p.path != setting.scene_key || !setting.set_by_entry) continue;
+            const std::string entry_key = setting.entry_key;
+            inner.fail(p.path, "no sweep of a setting that the entry sets itself: `" + entry_key + "` sets " +
+                                   setting.scene_key + " for every case (after the sweep), so the case would be "
+                                   "labelled with one value and run with another; sweep it with `" + entry_key +
+                                   " = [...]` alone");
+        }
 }
 
 // `physics = ["equation_of_state", ...]`: each a row of physics_row_kinds().
@@ -241,6 +273,7 @@ SuiteScene read_scene(const toml::table& t, const std::string& file, int index, 
     s.output_interval = optional_positive(r, "output_interval");
     s.frames = optional_boolean(r, "frames");
     s.set = read_parameter_sweeps(t, file, "[[scene]] #" + std::to_string(index));
+    refuse_set_beside_run_setting(t, s, file, "[[scene]] #" + std::to_string(index));
     s.physics = read_physics_rows(r);
     s.backends = strings(r, "backends", "an array of backend names");
     // Where the run settings a case may break are set (checked against the scene later).

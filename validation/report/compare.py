@@ -6,12 +6,17 @@ It reports
   - how many cases are bit-identical: the same final state and metric series, bit for bit
     (cases/<id>.toml; wall times and provenance are not compared);
   - every check whose status changed (pass -> fail is a regression);
+  - lost coverage: a check that A judged (pass or fail) and B left out or does not have, and a
+    case file (its record cases/<id>.toml, its run runs/<id>.h5) that B's summary.json lists and
+    B's directory lacks; each is named, and each is a regression: a change that stops a check
+    from running must not read as "no significant regression";
   - every observable with an error bar that moved by more than --sigma combined standard
     errors: the work-precision points (the error against the reference at each dt) and the
     rows of "Reference against physics".
 Exit status: 0 no significant regression; 1 a regression (more than --allow checks newly
-failing, or an error against the reference that grew beyond --sigma); 2 the directories
-cannot be compared (named on stderr).
+failing, lost coverage, or an error against the reference that grew beyond --sigma); 2 the
+directories cannot be compared (named on stderr): not one summary.json, two suites, or no case
+in common.
 """
 
 import argparse
@@ -22,6 +27,7 @@ import tomllib
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import digest  # noqa: E402  (the standard library only)
+from printable import terminal  # noqa: E402
 
 
 class Unreadable(Exception):
@@ -49,6 +55,29 @@ def case_numbers(directory, case):
         return None
     # repr() keeps the bits (NaN equals NaN here, -0.0 differs from 0.0).
     return repr((record.get("status"), record.get("final"), record.get("series")))
+
+
+def missing_case_files(directory, cases):
+    """The files that summary.json lists for its cases and the directory lacks, as paths."""
+    missing = []
+    for case in cases.values():
+        for name in (case.get("result_file") or "cases/%s.toml" % case["id"], case.get("hdf5_file")):
+            if name and not os.path.isfile(os.path.join(directory, name)):
+                missing.append(os.path.join(directory, name))
+    return missing
+
+
+JUDGED = ("pass", "fail")
+
+
+def lost_checks(checks_a, checks_b):
+    """(key, status in A, status in B or None) of every check that A judged and B did not."""
+    lost = []
+    for key, ca in sorted(checks_a.items()):
+        cb = checks_b.get(key)
+        if ca["status"] in JUDGED and (cb is None or cb["status"] not in JUDGED):
+            lost.append((key, ca["status"], cb))
+    return lost
 
 
 def z_score(a, sa, b, sb):
@@ -87,6 +116,9 @@ def compare(dir_a, dir_b, sigma, allow):
     cases_a = {c["id"]: c for c in a.get("cases", [])}
     cases_b = {c["id"]: c for c in b.get("cases", [])}
     both = sorted(set(cases_a) & set(cases_b))
+    if not both:
+        raise Unreadable("%s (%d cases) and %s (%d cases) share no case: compare two runs of the same suite"
+                         % (dir_a, len(cases_a), dir_b, len(cases_b)))
     identical = 0
     for k in both:
         numbers_a = case_numbers(dir_a, cases_a[k])
@@ -112,6 +144,18 @@ def compare(dir_a, dir_b, sigma, allow):
         lines.append("%s %s: %s: %s -> %s (value %s, tolerance %s)" % (tag, subject, check, sa, sb,
                                                                      vb.get("value"), vb.get("tolerance")))
     if new_failures > allow:
+        regressions += 1
+
+    # Lost coverage: what A judged and B no longer does, and the files B lists but lacks.
+    lost = lost_checks(checks_a, checks_b)
+    missing_a, missing_b = missing_case_files(dir_a, cases_a), missing_case_files(dir_b, cases_b)
+    lines.append("coverage  %d checks judged in A are not judged in B; %d files listed in B's summary.json are "
+                 "missing (%d in A's)" % (len(lost), len(missing_b), len(missing_a)))
+    for (subject, check), sa, cb in lost:
+        now = "not in B" if cb is None else "%s in B (%s)" % (cb["status"], cb.get("detail") or "no reason given")
+        lines.append("LOST      %s: %s: %s in A, %s" % (subject, check, sa, now))
+    lines.extend("MISSING   %s" % path for path in missing_b + missing_a)
+    if lost or missing_b:
         regressions += 1
 
     moved, worse = [], 0
@@ -147,10 +191,11 @@ def main(argv):
     try:
         lines, status = compare(args.dir_a, args.dir_b, args.sigma, args.allow)
     except Unreadable as e:
-        print("collide compare: %s" % e, file=sys.stderr)
+        print("collide compare: %s" % terminal(e), file=sys.stderr)
         return 2
-    print("compare   suite: A = %s, B = %s" % (args.dir_a, args.dir_b))
-    print("\n".join(lines))
+    # Names, details and paths come from the two directories: shown through the sanitiser.
+    print(terminal("compare   suite: A = %s, B = %s" % (args.dir_a, args.dir_b)))
+    print("\n".join(terminal(line) for line in lines))
     return status
 
 

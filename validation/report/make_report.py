@@ -84,7 +84,7 @@ def write_markdown(summary, path, a=None, full_name="summary-full.md"):
         failures_ += stability.markdown(summary)[:40]
     else:
         failed = [c for c in summary["checks"] if c["status"] == "fail"]
-        failures_ = [f"- `{c['subject']}` {c['check']}: {md(c['detail'].splitlines()[0] if c['detail'] else '')}"
+        failures_ = [f"- {md(c['subject'])} {md(c['check'])}: {md(c['detail'].splitlines()[0] if c['detail'] else '')}"
                      for c in failed[:20]] or ["None."]
         if len(failed) > 20:
             failures_.append(f"- ... and {len(failed) - 20} more in [{full_name}]({full_name})")
@@ -107,13 +107,13 @@ def write_markdown_full(summary, path, a=None):
     lines = [f"# Validation report: suite '{summary['suite']}' (every check)", "", f"**{verdict_text(a)}.**", "",
              "## Failures", ""]
     failed = [c for c in summary["checks"] if c["status"] == "fail"]
-    lines += [f"- `{c['subject']}` {c['check']}: {md(c['detail'])}" for c in failed] or ["None."]
+    lines += [f"- {md(c['subject'])} {md(c['check'])}: {md(c['detail'])}" for c in failed] or ["None."]
     lines += stability.markdown(summary)
     lines += ["", "## Checks", "", "| case | check | status | value | tolerance | margin | note |",
               "|---|---|---|---|---|---|---|"]
     for r, c in zip(check_rows(summary), summary["checks"]):
         note = c["detail"].splitlines()[0] if c["detail"] else ""
-        lines.append(f"| `{r['subject']}` | {r['check']} | {r['status']} | {r['value']} | {r['tolerance']} | {r['margin']} "
+        lines.append(f"| {md(r['subject'])} | {md(r['check'])} | {r['status']} | {r['value']} | {r['tolerance']} | {r['margin']} "
                      f"| {md(note + ('; ' + r['predicted'] if r['predicted'] else ''))} |")
     lines += ["", "## Observed convergence order", "", "| scene | backend | order (asymptotic range) | floor |",
               "|---|---|---|---|"]

@@ -15,6 +15,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.patches import Patch  # noqa: E402
 
 import figures  # noqa: E402
+import printable  # noqa: E402
 
 # Most severe first (the classification's precedence); one fixed colour each.
 OUTCOMES = ["crash", "hang", "nan", "stalled", "tunnelling", "excessive_overlap", "energy_growth", "stable", "left_out"]
@@ -201,6 +202,6 @@ def markdown(summary):
     for (scene, backend), row in first_failures(summary).items():
         failed = row["failed"]
         first = min(failed, key=lambda c: (c["dt"], _smallest_value(c))) if failed else None
-        text = describe(first, summary) + ": " + first.get("outcome_reason", "").replace("|", "/") if first else "none"
+        text = printable.markdown(describe(first, summary) + ": " + first.get("outcome_reason", "")) if first else "none"
         lines.append(f"| {scene} | {backend} | {row['cases']} | {len(failed)} | {text} |")
     return lines

@@ -13,12 +13,16 @@ except ImportError:  # named, rather than a traceback: the report cannot be laid
     sys.exit("report: the Python package jinja2 is missing: the report's pages are jinja2 templates "
              "(Debian: apt-get install python3-jinja2; scripts/install-deps.sh installs it)")
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import printable  # noqa: E402
+
 TEMPLATE_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), "templates")
 
 
 def md(text):
-    """Text for a Markdown table cell: no '|' to end the cell, no line break to end the row."""
-    return str(text).replace("|", "/").replace("\n", " ")
+    """Text for a Markdown page (printable.markdown, the one sanitiser): no HTML, no '|' to end a
+    table cell, no line break to end a row, no escape byte."""
+    return printable.markdown(text)
 
 
 def png_data(png):

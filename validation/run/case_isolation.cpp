@@ -1,6 +1,7 @@
 #include "validation/run/case_isolation.h"
 
 #include "core/io/fd_io.h"
+#include "core/process/descendants.h"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -21,6 +22,7 @@
 #include <fstream>
 #include <map>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -83,7 +85,8 @@ volatile std::sig_atomic_t stop_signal = 0;
 extern "C" void record_stop_signal(int signal_number) { stop_signal = signal_number; }
 constexpr int stop_signals[] = {SIGINT, SIGTERM, SIGHUP};
 
-void stop_cases_and_die(std::map<pid_t, Child>& running, Workers& workers, const IsolationOptions& options) {
+void stop_cases_and_die(std::map<pid_t, Child>& running, Workers& workers, const IsolationOptions& options,
+                        const std::set<pid_t>& children_before) {
     std::vector<pid_t> pids;
     for (const auto& [pid, child] : running) pids.push_back(pid);
     for (const auto& [pid, worker] : workers) pids.push_back(pid);
@@ -92,6 +95,7 @@ void stop_cases_and_die(std::map<pid_t, Child>& running, Workers& workers, const
         ::waitpid(pid, nullptr, 0);
         remove_temporaries(options.runs_dir, options.result_dir, pid);
     }
+    end_children_except(children_before);  // what the killed cases' solvers left running
     const int signal_number = stop_signal;
     ::signal(signal_number, SIG_DFL);
     ::raise(signal_number);
@@ -311,6 +315,12 @@ void run_isolated_claiming(const IsolationOptions& options, const std::function<
                                                           [](const auto& w) { return bool(w.second.current); }));
     };
     bool claimed_all = false;
+    // A case killed at its time limit orphans what its solver left running (a daemon outside
+    // its process group): adopted here, it is ended below before the summary is written.
+    const SubreaperScope adopt_orphans;
+    // Children the caller had before (a Python interpreter's own subprocesses, an MPI helper)
+    // are not the suite's: only what appears from here on is ended as a stray.
+    const std::set<pid_t> children_before = child_processes();
     stop_signal = 0;
     for (int s : stop_signals) ::signal(s, record_stop_signal);
     // A worker that died leaves its request pipe without a reader: writing to it must fail
@@ -319,7 +329,7 @@ void run_isolated_claiming(const IsolationOptions& options, const std::function<
     const auto limit = std::chrono::duration<double>(options.time_limit_seconds);
     constexpr int exited_cleanly = 0;  // the wait status of a process that called exit(0)
     while (!claimed_all || busy() > 0) {
-        if (stop_signal) stop_cases_and_die(running, workers, options);
+        if (stop_signal) stop_cases_and_die(running, workers, options, children_before);
         while (!claimed_all && busy() < std::size_t(std::max(1, options.jobs))) {
             const std::optional<CaseSpec> spec = claim();
             if (!spec) {
@@ -380,6 +390,7 @@ void run_isolated_claiming(const IsolationOptions& options, const std::function<
     // No case left: each worker reads the end of its requests and exits.
     for (const auto& [pid, worker] : workers) close_worker(worker);
     for (const auto& [pid, worker] : workers) ::waitpid(pid, nullptr, 0);
+    end_children_except(children_before);  // every case is over: any new process still here is a stray
     ::signal(SIGPIPE, previous_sigpipe);
     for (int s : stop_signals) ::signal(s, SIG_DFL);
 }

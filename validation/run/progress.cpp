@@ -1,5 +1,7 @@
 #include "validation/run/progress.h"
 
+#include "core/text/printable.h"
+
 namespace collide::validation {
 
 Progress::Progress(std::size_t total, std::FILE* stream, bool terminal, double plain_interval)
@@ -13,7 +15,7 @@ void Progress::update(std::size_t done, std::size_t failed, const std::string& l
     const double per_minute = elapsed > 0 ? 60.0 * double(done) / elapsed : 0.0;
     char head[96];
     std::snprintf(head, sizeof head, "[%zu/%zu] %.1f cases/min, %zu failed  ", done, total_, per_minute, failed);
-    line_.update(total_ ? double(done) / double(total_) : 1.0, head + last_case, done == total_);
+    line_.update(total_ ? double(done) / double(total_) : 1.0, head + printable(last_case), done == total_);
 }
 
 }  // namespace collide::validation

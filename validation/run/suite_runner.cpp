@@ -284,8 +284,10 @@ SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& avail
     });
     outcome.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    write_summary_json(suite, outcome, options.output_dir + "/summary.json");
+    // summary.json last: its presence says the run is over, and no process of the suite is left
+    // to write after it (run_isolated ends every descendant of the cases first).
     write_junit_xml(suite, outcome, options.output_dir + "/junit.xml");
+    write_summary_json(suite, outcome, options.output_dir + "/summary.json");
     return outcome;
 }
 
