@@ -76,6 +76,8 @@ void add_solvers(Suite& suite, const std::vector<external::ExternalSolverSpec>& 
 std::vector<BackendInfo> backends_with_solvers(const Suite& suite, std::vector<BackendInfo> built_in,
                                                const PythonRunner& python) {
     std::vector<std::string> stepped;
+    if (!suite.solvers.empty())
+        if (const std::string problem = external::request_root_problem(); !problem.empty()) throw SuiteError(problem);
     for (external::ExternalSolverSpec spec : suite.solvers) {
         const auto clash = [&](const std::string& n) { return n == spec.name; };
         if (std::any_of(built_in.begin(), built_in.end(), [&](const BackendInfo& b) { return clash(b.name); }) ||
