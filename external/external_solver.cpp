@@ -1,20 +1,26 @@
 #include "external_solver.h"
 
 #include <stdlib.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include "core/io/output_file.h"
 #include "core/numerics/number_text.h"
 #include "core/numerics/target_time.h"
 #include "core/text/printable.h"
 #include "npy.h"
 #include "program_call.h"
-#include "sha256.h"
+#include "solver_files.h"
 
 namespace collide::external {
 namespace fs = std::filesystem;
@@ -25,13 +31,21 @@ constexpr std::size_t quoted_output_chars = 600;
 // result.txt is a few lines; more than this is not a result.
 constexpr std::uintmax_t max_result_bytes = 64u << 20;
 
-// A request directory of its own under the system's temporary directory, removed with it.
+// Where request directories go: $TMPDIR, else /tmp (POSIX).
+std::string request_root() {
+    const char* tmpdir = std::getenv("TMPDIR");
+    return tmpdir && *tmpdir ? tmpdir : "/tmp";
+}
+
+// A request directory of its own under request_root(), removed with it.
 class RequestDirectory {
 public:
     RequestDirectory() {
-        std::string pattern = (fs::temp_directory_path() / "collide-solver-XXXXXX").string();
-        if (!::mkdtemp(pattern.data())) throw std::runtime_error("cannot create a request directory in " +
-                                                                 fs::temp_directory_path().string());
+        if (const std::string problem = request_root_problem(); !problem.empty()) throw std::runtime_error(problem);
+        std::string pattern = (fs::path(request_root()) / "collide-solver-XXXXXX").string();
+        if (!::mkdtemp(pattern.data()))
+            throw std::runtime_error("cannot create a request directory in " + request_root() + " (" +
+                                     std::strerror(errno) + ")");
         path_ = pattern;
     }
     ~RequestDirectory() {
@@ -57,6 +71,20 @@ std::string read_text(const std::string& path, std::uintmax_t limit) {
     in.read(text.data(), std::streamsize(text.size()));
     text.resize(std::size_t(in.gcount()));
     return text;
+}
+
+// "" when the program left `name` as a regular file (or a link to one), else what it left:
+// "wrote no states.npy", "wrote states.npy as a FIFO, not a regular file" (reading a FIFO would
+// wait for a writer for good; a directory is no answer either).
+std::string answer_file_problem(const std::string& path, const std::string& name) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0) {
+        struct stat link {};
+        if (::lstat(path.c_str(), &link) == 0) return "wrote " + name + " as a symbolic link to nothing";
+        return "wrote no " + name;
+    }
+    if (!S_ISREG(st.st_mode)) return "wrote " + name + " as " + file_kind(st.st_mode) + ", not a regular file";
+    return "";
 }
 
 // A request file in the call's private directory, deleted after the call: no atomic rename or
@@ -189,7 +217,7 @@ Answer parse_answer(const std::string& text) {
 
 class ExternalSolver : public Solver {
 public:
-    explicit ExternalSolver(ExternalSolverSpec spec) : spec_(std::move(spec)), files_sha256_(file_hashes()) {}
+    explicit ExternalSolver(ExternalSolverSpec spec) : spec_(std::move(spec)), files_sha256_(solver_files_digest(spec_)) {}
 
     std::string name() const override { return spec_.name; }
 
@@ -271,8 +299,8 @@ private:
         forward_to_log(output);
         if (!outcome.succeeded())
             fault(outcome.describe(spec_.call_time_limit) + quoted(output));
-        if (!fs::is_regular_file(dir.file("result.txt")))
-            fault("it exited with status 0 but wrote no result.txt" + quoted(output));
+        if (const std::string problem = answer_file_problem(dir.file("result.txt"), "result.txt"); !problem.empty())
+            fault("it exited with status 0 but " + problem + quoted(output));
         Answer answer;
         try {
             answer = parse_answer(read_text(dir.file("result.txt"), max_result_bytes));
@@ -314,17 +342,17 @@ private:
     }
 
     void store(const std::string& path, const std::vector<double>& times) {
-        if (!fs::is_regular_file(path)) fault("it wrote no states.npy");
+        if (const std::string problem = answer_file_problem(path, "states.npy"); !problem.empty()) fault(problem);
         NpyArray states;
-        try {
-            states = read_npy(path);
-        } catch (const NpyError& e) {
-            fault(std::string("states.npy: ") + e.what());
-        }
+        // The request fixes the answer's shape, and so its size: (output times, disks, [x, y, vx, vy]).
         const std::vector<std::size_t> expected = {times.size(), state_.size(), 4};
-        if (states.shape != expected)
-            fault("states.npy has shape " + shape_text(states.shape) + ", expected " + shape_text(expected) +
-                  " (output times, disks, [x, y, vx, vy])");
+        try {
+            states = read_npy(path, expected);
+        } catch (const NpyError& e) {
+            std::string what = e.what();  // without the request directory's path: it is gone after the call
+            if (what.rfind(path + ": ", 0) == 0) what.erase(0, path.size() + 2);
+            fault("states.npy: " + what + (what.rfind("shape", 0) == 0 ? " (output times, disks, [x, y, vx, vy])" : ""));
+        }
         const std::size_t row = 4 * state_.size();
         for (std::size_t k = 0; k < times.size(); ++k) {
             const auto begin = states.data.begin() + std::ptrdiff_t(k * row);
@@ -339,41 +367,8 @@ private:
         }
     }
 
-    // SHA-256 of every word of the command that names a file ("numpy_stepper.py", "./a.out"),
-    // or of a Python class's file: which version of the program produced the result.
-    std::string file_hashes() const {
-        std::vector<std::string> words;
-        std::istringstream in(spec_.command);
-        // A class's command is the interpreter and collide's runner: its own file is what counts.
-        if (spec_.python_class.empty()) {
-            for (std::string w; in >> w;) words.push_back(w);
-        } else {
-            const std::string module = spec_.python_class.substr(0, spec_.python_class.rfind(':'));
-            std::string file = module;
-            if (file.size() < 3 || file.compare(file.size() - 3, 3, ".py") != 0) {
-                std::replace(file.begin(), file.end(), '.', '/');
-                file += ".py";
-            }
-            words.push_back(file);
-        }
-        std::string out;
-        for (std::string w : words) {
-            w.erase(std::remove(w.begin(), w.end(), '\''), w.end());
-            w.erase(std::remove(w.begin(), w.end(), '"'), w.end());
-            fs::path p(w);
-            if (p.is_relative() && !spec_.directory.empty()) p = fs::path(spec_.directory) / p;
-            std::error_code ec;
-            if (w.empty() || !fs::is_regular_file(p, ec)) continue;
-            try {
-                out += (out.empty() ? "" : "; ") + w + " " + sha256_file(p.string());
-            } catch (const std::exception&) {
-            }
-        }
-        return out;
-    }
-
     ExternalSolverSpec spec_;
-    std::string files_sha256_;  // file_hashes(), once: the files a run's provenance names
+    std::string files_sha256_;  // the files a run's provenance names (solver_files.h)
     Scene scene_;
     ParticleState<double> state_;
     double time_ = 0;
@@ -385,6 +380,26 @@ private:
 };
 
 }  // namespace
+
+std::string request_root_problem() {
+    const std::string root = request_root();
+    const std::string named = std::getenv("TMPDIR") && *std::getenv("TMPDIR") ? "TMPDIR=" + root : root;
+    const std::string advice = "; set TMPDIR to an absolute path of a writable directory, or unset it for /tmp";
+    if (fs::path(root).is_relative())
+        return named + ": outside solvers get their request directories there, and a relative path would name "
+                       "another place in the solver's own directory" + advice;
+    struct stat st {};
+    if (::stat(root.c_str(), &st) != 0)
+        return named + ": outside solvers get their request directories there, and it " +
+               (errno == ENOENT ? std::string("does not exist") : std::string(std::strerror(errno))) + advice;
+    if (!S_ISDIR(st.st_mode))
+        return named + ": outside solvers get their request directories there, and it is " + file_kind(st.st_mode) +
+               ", not a directory" + advice;
+    if (::access(root.c_str(), W_OK | X_OK) != 0)
+        return named + ": outside solvers get their request directories there, and it cannot be written (" +
+               std::strerror(errno) + ")" + advice;
+    return "";
+}
 
 std::string solver_name_problem(const std::string& name) {
     if (name.empty() || name.size() > 40 || name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_-") != std::string::npos ||

@@ -34,6 +34,12 @@ struct ExternalSolverSpec {
     std::string origin;       // where it was named, for messages ("--solver", "suite.toml:12")
 };
 
+// "" when request directories can be made where they go ($TMPDIR, else /tmp), else why not,
+// naming TMPDIR: it is relative (the solver runs in its own directory, where a relative path
+// names another place), missing, not a directory, or not writable. Checked once, before any
+// case, wherever outside solvers join a suite (validation/plan/external_solvers.h).
+std::string request_root_problem();
+
 // "" when `name` can be a solver's name, else what is wrong with it.
 std::string solver_name_problem(const std::string& name);
 

@@ -1,5 +1,6 @@
 #include "sha256.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstdio>
@@ -46,35 +47,71 @@ void compress(std::array<std::uint32_t, 8>& h, const unsigned char* block) {
     for (int k = 0; k < 8; ++k) h[k] += v[k];
 }
 
+// The hash state over a stream of bytes: whole 64-byte blocks are compressed as they come,
+// the rest waits for more (so a file is hashed in pieces, never held whole).
+class Sha256 {
+public:
+    void update(std::string_view bytes) {
+        length_ += bytes.size();
+        if (!pending_.empty()) {
+            const std::size_t take = std::min(bytes.size(), 64 - pending_.size());
+            pending_.append(bytes.substr(0, take));
+            bytes.remove_prefix(take);
+            if (pending_.size() < 64) return;
+            compress(h_, reinterpret_cast<const unsigned char*>(pending_.data()));
+            pending_.clear();
+        }
+        const std::size_t full = bytes.size() / 64 * 64;
+        for (std::size_t i = 0; i < full; i += 64) compress(h_, reinterpret_cast<const unsigned char*>(bytes.data() + i));
+        pending_.assign(bytes.substr(full));
+    }
+    std::string finish() {
+        // Padding: a 1 bit, zeros, and the message length in bits as a 64-bit big-endian number.
+        std::string tail = pending_;
+        tail += char(0x80);
+        while (tail.size() % 64 != 56) tail += '\0';
+        const std::uint64_t bits = length_ * 8;
+        for (int k = 7; k >= 0; --k) tail += char((bits >> (8 * k)) & 0xff);
+        for (std::size_t i = 0; i < tail.size(); i += 64) compress(h_, reinterpret_cast<const unsigned char*>(tail.data() + i));
+        std::string out;
+        char hex[9];
+        for (std::uint32_t word : h_) {
+            std::snprintf(hex, sizeof hex, "%08x", word);
+            out += hex;
+        }
+        return out;
+    }
+
+private:
+    // Initial hash value: the fractional parts of the square roots of the first 8 primes.
+    std::array<std::uint32_t, 8> h_ = {0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a,
+                                       0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19};
+    std::string pending_;
+    std::uint64_t length_ = 0;
+};
+
 }  // namespace
 
 std::string sha256_hex(std::string_view bytes) {
-    // Initial hash value: the fractional parts of the square roots of the first 8 primes.
-    std::array<std::uint32_t, 8> h = {0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a,
-                                      0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19};
-    const std::size_t full = bytes.size() / 64 * 64;
-    for (std::size_t i = 0; i < full; i += 64) compress(h, reinterpret_cast<const unsigned char*>(bytes.data() + i));
-    // Padding: a 1 bit, zeros, and the message length in bits as a 64-bit big-endian number.
-    std::string tail(bytes.substr(full));
-    tail += '\x80';
-    while (tail.size() % 64 != 56) tail += '\0';
-    const std::uint64_t bits = std::uint64_t(bytes.size()) * 8;
-    for (int k = 7; k >= 0; --k) tail += char((bits >> (8 * k)) & 0xff);
-    for (std::size_t i = 0; i < tail.size(); i += 64) compress(h, reinterpret_cast<const unsigned char*>(tail.data() + i));
-    std::string out;
-    char hex[9];
-    for (std::uint32_t word : h) {
-        std::snprintf(hex, sizeof hex, "%08x", word);
-        out += hex;
-    }
-    return out;
+    Sha256 hash;
+    hash.update(bytes);
+    return hash.finish();
 }
 
-std::string sha256_file(const std::string& path) {
+std::string sha256_file(const std::string& path, std::uintmax_t max_bytes) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw std::runtime_error(path + ": cannot read it to hash it");
-    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    return sha256_hex(bytes);
+    Sha256 hash;
+    std::string chunk(1 << 20, '\0');
+    for (std::uintmax_t left = max_bytes; left > 0 && in;) {
+        in.read(chunk.data(), std::streamsize(std::min<std::uintmax_t>(chunk.size(), left)));
+        const auto got = std::size_t(in.gcount());
+        hash.update(std::string_view(chunk.data(), got));
+        left -= got;
+        if (got == 0) break;
+    }
+    if (in.bad()) throw std::runtime_error(path + ": a read failed while it was hashed");
+    return hash.finish();
 }
 
 }  // namespace collide::external

@@ -2,6 +2,7 @@
 // program it ran, so a reader can check with `sha256sum FILE` which version produced a result.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -10,7 +11,8 @@ namespace collide::external {
 // Lower-case hex digest of `bytes`.
 std::string sha256_hex(std::string_view bytes);
 
-// The digest of the file's contents; throws std::runtime_error when it cannot be read.
-std::string sha256_file(const std::string& path);
+// The digest of the file's contents (of its first `max_bytes` bytes when it is longer), read
+// in 1 MiB pieces; throws std::runtime_error when it cannot be read.
+std::string sha256_file(const std::string& path, std::uintmax_t max_bytes = UINTMAX_MAX);
 
 }  // namespace collide::external

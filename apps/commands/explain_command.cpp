@@ -27,6 +27,7 @@ struct ExplainArgs {
     double from = 0, to = -1;
     bool json = false;
     std::vector<SceneOverride> overrides;
+    SolverArgs solvers;  // outside solvers the run had on its command line, not in its suite file
 };
 
 // The suite file the results came from, as summary.json records it (or --suite).
@@ -66,7 +67,8 @@ void print_text(const validation::ReplayedCase& c, const validation::EnergyJump&
 
 void execute(const ExplainArgs& args) {
     // The outside solvers a suite file names ([solver.NAME]) replay too, one program call per step.
-    const validation::Suite loaded = validation::load_suite(suite_of(args));
+    validation::Suite loaded = validation::load_suite(suite_of(args));
+    validation::add_solvers(loaded, solver_specs(args.solvers));
     const auto backends = validation::backends_with_solvers(loaded, all_backends(), python_runner());
     // A long case takes a while to reach --from and to search: a progress line with the time
     // left on a terminal, a plain line every 10 s in a log (core/io/progress_line.h).
@@ -95,6 +97,7 @@ void add_explain_command(CLI::App& app) {
     cmd->add_option("--suite", args->suite, "Suite file (default: the one summary.json records)");
     cmd->add_flag("--json", args->json, "Print JSON instead of text");
     add_set_option(*cmd, args->overrides);
+    add_solver_options(*cmd, args->solvers);
     cmd->callback([args] { execute(*args); });
 }
 

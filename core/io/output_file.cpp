@@ -145,6 +145,8 @@ std::string input_path_problem(const std::string& path, bool directory) {
     return "";
 }
 
+std::string file_kind(mode_t mode) { return kind_of(mode); }
+
 void check_output_path(const std::string& path) {
     if (path.empty()) throw OutputFileError("cannot write the output: the file name is empty");
     if (!fs::path(path).has_filename()) refuse(path, "the path names a directory, not a file");

@@ -19,6 +19,8 @@
 // created with mode 0666 less the umask, like any file a program creates.
 #pragma once
 
+#include <sys/types.h>
+
 #include <stdexcept>
 #include <string>
 
@@ -45,6 +47,10 @@ void check_output_directory(const std::string& path);
 // long, a part of it is not a directory, no permission, or it is a directory / not one.
 // (std::filesystem::exists() says "does not exist" for all of these.)
 std::string input_path_problem(const std::string& path, bool directory);
+
+// What a file of this stat() mode is, in the refusals' words: "a FIFO", "a directory",
+// "a character device", "a regular file", ...
+std::string file_kind(mode_t mode);
 
 class AtomicOutputFile {
 public:

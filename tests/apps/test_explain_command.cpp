@@ -102,5 +102,33 @@ TEST(ExplainCommand, RefusesACaseWhoseFilesChangedSinceTheRun) {
     EXPECT_TRUE(contains(edited.err, "edited since the run")) << edited.err;
 }
 
+// A case of an outside solver given on `validate`'s command line: the suite file cannot rebuild
+// it, and explain said the suite file was edited. It names the solver and how to give it again,
+// and with the solver given again it explains the case.
+TEST(ExplainNamesCommandLineSolvers, ACaseOfACommandLineSolverAsksForTheSolverAgain) {
+    ScratchDirectory dir;
+    const std::string scenes = std::string(COLLIDE_SOURCE_DIR) + "/data/scenes";
+    const std::string suite = dir.file("suite.toml");
+    test::write_text_file(suite, "name = \"cli_solver\"\nbackends = [\"step\"]\nreference = \"step\"\n"
+                                 "warmup_fraction = 0\n[[scene]]\npath = \"" + scenes + "/glancing.toml\"\n"
+                                 "compare = \"trajectory\"\n");
+    // A class, run by collide's own interpreter (the one with NumPy).
+    const std::string solver = "mine=" + std::string(COLLIDE_SOURCE_DIR) + "/docs/examples/solvers/numpy_stepper.py:NumPyStepper";
+    const auto run = run_program(COLLIDE_EXECUTABLE, {"validate", suite, "--out", dir.file("out"), "--python-solver", solver}, dir);
+    std::string id;
+    const auto summary = nlohmann::json::parse(test::read_text_file(dir.file("out/summary.json")));
+    for (const auto& c : summary.at("cases"))
+        if (c.at("backend").get<std::string>() == "mine" && c.at("status").get<std::string>() == "completed")
+            id = c.at("id").get<std::string>();
+    ASSERT_FALSE(id.empty()) << run.out << run.err;
+    const auto refused = run_program(COLLIDE_EXECUTABLE, {"explain", dir.file("out"), id}, dir);
+    EXPECT_NE(refused.exit_code, 0);
+    EXPECT_TRUE(contains(refused.err, "ran on the outside solver 'mine', which the suite file does not name")) << refused.err;
+    EXPECT_TRUE(contains(refused.err, "--python-solver '" + solver + "'")) << refused.err;
+    EXPECT_FALSE(contains(refused.err, "edited")) << refused.err;
+    const auto again = run_program(COLLIDE_EXECUTABLE, {"explain", dir.file("out"), id, "--to", "0.01", "--python-solver", solver}, dir);
+    EXPECT_EQ(again.exit_code, 0) << again.err;
+}
+
 }  // namespace
 }  // namespace collide

@@ -7,11 +7,15 @@
 #include <cmath>
 #include <filesystem>
 
+#include <sys/resource.h>
+#include <cstdlib>
+
 #include "core/run_driver.h"
 #include "external/external_solver.h"
 #include "external/npy.h"
 #include "external/program_call.h"
 #include "external/sha256.h"
+#include "external/solver_files.h"
 #include "tests/support/scratch_directory.h"
 #include "tests/support/test_scenes.h"
 
@@ -229,6 +233,109 @@ TEST(SolverOption, NamesAndCommandsAreChecked) {
     EXPECT_THROW(parse_solver_option("Mine=x"), std::invalid_argument);
     EXPECT_THROW(parse_solver_option("a/b=x"), std::invalid_argument);
     EXPECT_THROW(parse_solver_option("mine=  "), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace collide::external
+
+namespace collide::external {
+namespace {
+
+// A version 1.0 .npy file with the header text given (a newline is added) and the data.
+std::string npy_with_header(std::string header, const std::vector<double>& data) {
+    header += '\n';
+    std::string bytes = std::string("\x93NUMPY\x01\x00", 8) + char(header.size() & 0xff) + char(header.size() >> 8) + header;
+    for (double v : data) bytes.append(reinterpret_cast<const char*>(&v), sizeof v);
+    return bytes;
+}
+
+// A .npy header is untrusted text: a header of 65,000 spaces overflowed std::regex's stack and
+// killed the case worker (signal 11, no solver named, its request directory left behind). A
+// header longer than NumPy's own limit is refused with the solver and the file named, and the
+// request directory is removed.
+TEST(NpyHeaderBounds, AHeaderOfSpacesIsRefusedNamingTheSolverAndTheFile) {
+    Fixture f;
+    const std::string requests = f.dir.file("requests");
+    std::filesystem::create_directory(requests);
+    const char* old = std::getenv("TMPDIR");
+    const std::string saved = old ? old : "";
+    ::setenv("TMPDIR", requests.c_str(), 1);
+    // The spaces where the regex's \s* recursed once per space.
+    const std::string header = "{'descr':" + std::string(65000, ' ') + "'<f8', 'fortran_order': False, 'shape': (2, 2, 4), }";
+    const std::string m = f.fault(f.answering(npy_with_header(header, f.states()), good_times));
+    old ? ::setenv("TMPDIR", saved.c_str(), 1) : ::unsetenv("TMPDIR");
+    EXPECT_NE(m.find("states.npy"), std::string::npos) << m;
+    EXPECT_NE(m.find("states.npy: the .npy header is " + std::to_string(header.size() + 1) +
+                     " bytes long, more than the 10000 NumPy itself reads"), std::string::npos) << m;
+    EXPECT_TRUE(std::filesystem::is_empty(requests)) << "a request directory was left behind";
+    // Spaces NumPy accepts (a header padded to its limit, spaces between tokens) still read.
+    const std::string padded = "{ 'descr' :" + std::string(9000, ' ') + "'<f8' ,'fortran_order':False,\n'shape':( 2 , 2 , 4 , ) }  ";
+    EXPECT_EQ(parse_npy(npy_with_header(padded, f.states())).shape, (std::vector<std::size_t>{2, 2, 4}));
+}
+
+// The request fixes the answer's shape and size: an answer of another size is refused from its
+// header and its file size, before its data is read (a 2 GiB states.npy for a 128-byte answer
+// was read whole: its size in memory, std::bad_alloc under a memory limit).
+TEST(AnswerSizeCheckedBeforeReading, AnOversizedAnswerIsRefusedUnread) {
+    Fixture f;
+    const std::string big = f.dir.file("big.npy");
+    test::write_text_file(big, npy_bytes(f.states(), {2, 2, 4}));
+    std::filesystem::resize_file(big, std::uintmax_t(2) << 30);  // sparse: no disk space
+    struct rusage before {};
+    ::getrusage(RUSAGE_SELF, &before);
+    try {
+        read_npy(big, std::vector<std::size_t>{2, 2, 4});
+        ADD_FAILURE() << "a 2 GiB file for a 128-byte answer was accepted";
+    } catch (const NpyError& e) {
+        EXPECT_NE(std::string(e.what()).find("bytes of data"), std::string::npos) << e.what();
+    }
+    struct rusage after {};
+    ::getrusage(RUSAGE_SELF, &after);
+    EXPECT_LT(after.ru_maxrss - before.ru_maxrss, 100 * 1024) << "KiB more peak memory: the data was read";
+    // A header that claims another shape is refused before the size is even looked at.
+    const std::string m = f.fault(f.answering(npy_bytes(std::vector<double>(8000), {1000, 2, 4}), good_times));
+    EXPECT_NE(m.find("shape (1000, 2, 4), expected (2, 2, 4)"), std::string::npos) << m;
+}
+
+// Python's dict keeps the last of two equal keys, so NumPy reads {'descr': '<f8', 'descr': '>f8'}
+// as big-endian; a reader that kept the first would read another array. Both are refused.
+TEST(NpyDuplicateHeaderKeysRefused, TwoDescrKeysAreRefused) {
+    Fixture f;
+    const std::string twice = "{'descr': '<f8', 'fortran_order': False, 'shape': (2, 2, 4), 'descr': '>f8', }";
+    const std::string m = f.fault(f.answering(npy_with_header(twice, f.states()), good_times));
+    EXPECT_NE(m.find("the header names 'descr' twice"), std::string::npos) << m;
+    const std::string extra = "{'descr': '<f8', 'fortran_order': False, 'shape': (2, 2, 4), 'x': True}";
+    const std::string e = f.fault(f.answering(npy_with_header(extra, f.states()), good_times));
+    EXPECT_NE(e.find("the header has the key 'x'; NumPy accepts only descr, fortran_order and shape"), std::string::npos) << e;
+}
+
+// An answer file that is there but is no regular file is named for what it is (a FIFO would
+// block a reader for good; the message said "wrote no states.npy").
+TEST(AnswerFileKindNamed, AFifoOrDirectoryAnswerIsNamedForWhatItIs) {
+    Fixture f;
+    test::write_text_file(f.dir.file("result.txt"), good_times);
+    const std::string fifo = f.fault(f.shell("sh -c 'cp result.txt \"$1\"; mkfifo \"$1/states.npy\"' sh"));
+    EXPECT_NE(fifo.find("wrote states.npy as a FIFO, not a regular file"), std::string::npos) << fifo;
+    const std::string directory = f.fault(f.shell("sh -c 'cp result.txt \"$1\"; mkdir \"$1/states.npy\"' sh"));
+    EXPECT_NE(directory.find("wrote states.npy as a directory, not a regular file"), std::string::npos) << directory;
+    const std::string result = f.fault(f.shell("sh -c 'mkdir \"$1/result.txt\"' sh"));
+    EXPECT_NE(result.find("wrote result.txt as a directory"), std::string::npos) << result;
+}
+
+// A data file named in the solver's command is hashed for the provenance once per process,
+// and a file over 256 MiB only in its first 64 MiB beside its size and time, as the text says
+// (a 3 GiB file, hashed whole in every call, had every case run into its time limit).
+TEST(SolverFileHashingBounded, ALargeFileIsHashedByItsPrefixAndSaysSo) {
+    Fixture f;
+    const std::string data = f.dir.file("data.bin");
+    test::write_text_file(data, "x");
+    std::filesystem::resize_file(data, whole_hash_limit_bytes + 1);  // sparse
+    ExternalSolverSpec spec = f.shell("true data.bin");
+    const std::string files = make_external_solver(spec)->provenance().at("solver_files_sha256");
+    const std::string prefix = std::to_string(hashed_prefix_bytes >> 20) + " MiB ";
+    EXPECT_EQ(files, "data.bin sha256 of the first " + prefix + sha256_file(data, hashed_prefix_bytes) + ", size " +
+                         std::to_string(whole_hash_limit_bytes + 1) + " bytes, modified " + files.substr(files.size() - 20));
+    EXPECT_EQ(files.substr(files.size() - 1), "Z");
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 // backends (validation/plan/external_solvers.h): each mistake is refused with the file, line and key.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
 #include "validation/plan/external_solvers.h"
 #include "validation/models/statistics_bias_model.h"
 #include "validation/plan/suite.h"
@@ -74,6 +76,35 @@ TEST(SolverTables, ARuleMakesTheSolverAStepperForTheChecks) {
 
 TEST(SolverTables, ShellQuotingKeepsQuotes) {
     EXPECT_EQ(shell_quote("it's"), "'it'\\''s'");
+}
+
+// Why outside solvers cannot run here, or "" (what backends_with_solvers refuses, if anything).
+std::string tmpdir_refusal(const char* tmpdir) {
+    const char* old = std::getenv("TMPDIR");
+    const std::string saved = old ? old : "";
+    tmpdir ? ::setenv("TMPDIR", tmpdir, 1) : ::unsetenv("TMPDIR");
+    std::string why;
+    try {
+        backends_with_solvers(parse("[solver.mine]\ncommand = \"x\"\n"), {}, {});
+    } catch (const SuiteError& e) {
+        why = e.what();
+    }
+    old ? ::setenv("TMPDIR", saved.c_str(), 1) : ::unsetenv("TMPDIR");
+    return why;
+}
+
+// A relative TMPDIR named another place in each solver's own directory, and a missing one
+// failed every call with an error blamed on the solver; both are refused once, before any
+// case, naming TMPDIR. An unset TMPDIR means /tmp.
+TEST(RequestRootChecked, ARelativeOrMissingTmpdirIsRefusedUpFrontNamingIt) {
+    const std::string relative = tmpdir_refusal("relative/tmp");
+    EXPECT_NE(relative.find("TMPDIR=relative/tmp: "), std::string::npos) << relative;
+    EXPECT_NE(relative.find("relative path"), std::string::npos) << relative;
+    const std::string missing = tmpdir_refusal("/no/such/tmp");
+    EXPECT_NE(missing.find("TMPDIR=/no/such/tmp: "), std::string::npos) << missing;
+    EXPECT_NE(missing.find("does not exist"), std::string::npos) << missing;
+    EXPECT_EQ(tmpdir_refusal("/tmp"), "");
+    EXPECT_EQ(tmpdir_refusal(nullptr), "");
 }
 
 }  // namespace

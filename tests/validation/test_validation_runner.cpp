@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <fstream>
@@ -93,6 +94,49 @@ TEST(ValidationRunner, ResumeSkipsFinishedCasesAndRunsMissingOnes) {
     EXPECT_TRUE(second.passed());
     // A resumed run judges the old measurements the same way as the fresh ones.
     EXPECT_EQ(first.checks.size(), second.checks.size());
+}
+
+// What --resume printed, and its outcome.
+std::pair<validation::SuiteOutcome, std::string> resume(const validation::Suite& suite, const std::string& dir) {
+    std::FILE* progress = std::tmpfile();
+    validation::RunnerOptions options;
+    options.output_dir = dir;
+    options.jobs = 2;
+    options.resume = true;
+    options.progress = progress;
+    auto outcome = validation::run_suite(suite, {test_backend("good", Fault::none)}, options);
+    std::rewind(progress);
+    std::string text;
+    for (int c; (c = std::fgetc(progress)) != EOF;) text += char(c);
+    std::fclose(progress);
+    return {std::move(outcome), text};
+}
+
+// A resumed run kept the cases of an earlier run whatever had changed since (the scene, the
+// suite's duration): it said "passed" where a fresh run fails. A case is kept only when its
+// definition (validation/plan/case_definition.h) is unchanged, and the terminal says how many
+// ran again and why.
+TEST(ResumeRerunsChangedCases, AChangedSceneOrSuiteEntryRunsTheCaseAgainAndSaysWhy) {
+    auto suite = test_suite(two_disk_scene(), {"good"});
+    const std::string dir = fresh_output_dir("resume_changed");
+    ASSERT_EQ(run(suite, {test_backend("good", Fault::none)}, dir).cases_run, 2u);
+    const auto unchanged = resume(suite, dir);
+    EXPECT_EQ(unchanged.first.cases_resumed, 2u);
+    EXPECT_EQ(unchanged.second.find("rerun"), std::string::npos) << unchanged.second;
+
+    suite.scenes[0].scene->generators[0].disks[0].vx = 2;  // the scene changed
+    const auto scene = resume(suite, dir);
+    EXPECT_EQ(scene.first.cases_run, 2u);
+    EXPECT_EQ(scene.first.cases_resumed, 0u);
+    EXPECT_NE(scene.second.find("resume: 2 cases rerun: scene file changed (2)"), std::string::npos) << scene.second;
+    EXPECT_EQ(scene.first.cases[0].initial.vx[0], 2);
+
+    suite.scenes[0].duration = 0.1;  // the suite entry's duration changed
+    const auto duration = resume(suite, dir);
+    EXPECT_EQ(duration.first.cases_run, 2u);
+    EXPECT_NE(duration.second.find("resume: 2 cases rerun: duration changed (2)"), std::string::npos) << duration.second;
+    EXPECT_EQ(duration.first.cases[0].duration, 0.1);
+    EXPECT_EQ(resume(suite, dir).first.cases_resumed, 2u);  // and kept once it ran so
 }
 
 TEST(ValidationRunner, RefusedSceneAndInapplicableChecksAreListedWithReasons) {

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <stdexcept>
 
+#include "core/io/shell_quote.h"
 #include "core/metrics.h"
 
 namespace collide::validation {
@@ -49,11 +51,31 @@ void require_same_path(Solver& solver, const ReplayedCase& c, const CaseResult& 
                                  std::to_string(*recorded) + "); was the program or a file changed since the run?");
 }
 
+// A case run by an outside solver that the suite file does not name (`validate --solver`,
+// `--python-solver`, Python's solvers=) cannot be rebuilt from the suite file alone: say so, and
+// how to name the solver again, instead of suggesting the suite file was edited.
+void require_known_solver(const std::string& dir, const std::string& case_id, const std::vector<BackendInfo>& backends) {
+    const std::string path = dir + "/cases/" + case_id + ".toml";
+    if (!std::filesystem::is_regular_file(path)) return;  // replay_case says what is missing
+    const CaseResult record = read_case_result(path);
+    const std::string& name = record.spec.backend;
+    if (std::any_of(backends.begin(), backends.end(), [&](const BackendInfo& b) { return b.name == name; })) return;
+    const auto& p = record.provenance;
+    const auto python = p.find("solver_python_class"), command = p.find("solver_command");
+    if (command == p.end()) return;
+    const std::string option = python != p.end() ? "--python-solver " + shell_quote(name + "=" + python->second)
+                                                 : "--solver " + shell_quote(name + "=" + command->second);
+    throw std::runtime_error("case " + case_id + " ran on the outside solver '" + name +
+                             "', which the suite file does not name (it was given to `collide validate` on the "
+                             "command line); name it again: collide explain " + shell_quote(dir) + " " + case_id + " " + option);
+}
+
 }  // namespace
 
 ExplainedCase explain_case(const std::string& dir, const Suite& suite, const std::string& case_id,
                            const std::vector<BackendInfo>& backends, const std::vector<SceneOverride>& overrides,
                            double from, double to, const std::function<void(double, double)>& on_progress) {
+    require_known_solver(dir, case_id, backends);
     ReplayedCase c = replay_case(suite, case_id, backends, overrides);
     if (c.backend.event_driven)  // exact: from collision to collision
         throw std::runtime_error("case " + c.spec.id + " ran on '" + c.backend.name +

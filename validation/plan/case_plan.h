@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <utility>
 #include <string>
@@ -28,6 +29,9 @@ struct CaseSpec {
     std::vector<std::pair<std::string, double>> parameters;  // scene-key sweep point (path, value)
     std::uint64_t seed = 1;
     std::string left_out;           // non-empty: the backend refused the scene, with its reason
+    // What defines the case, part by part (case_definition.h): filled by the runner before any
+    // case runs, stored in the case record, compared by --resume.
+    std::map<std::string, std::string> definition;
 };
 
 // The backends a suite asks for, found in `available` (`"all"` = every one of them, in order,

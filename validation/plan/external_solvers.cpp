@@ -77,6 +77,8 @@ void add_solvers(Suite& suite, const std::vector<external::ExternalSolverSpec>& 
 std::vector<BackendInfo> backends_with_solvers(const Suite& suite, std::vector<BackendInfo> built_in,
                                                const PythonRunner& python) {
     std::vector<std::string> stepped;
+    if (!suite.solvers.empty())
+        if (const std::string problem = external::request_root_problem(); !problem.empty()) throw SuiteError(problem);
     for (external::ExternalSolverSpec spec : suite.solvers) {
         // A clash of the names that case ids and file names spell (backend_id_token): the
         // variant box2d[shipped] writes box2d-shipped's files.

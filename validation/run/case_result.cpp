@@ -20,6 +20,7 @@
 #include "core/io/output_file.h"
 #include "core/io/run_reader.h"
 #include "core/io/run_schema.h"
+#include "validation/plan/case_definition.h"
 
 namespace collide::validation {
 
@@ -82,6 +83,10 @@ toml::table spec_table(const CaseSpec& c) {
         toml::array parameters;  // an array keeps the sweep order (a table would sort the paths)
         for (const auto& [path, value] : c.parameters) parameters.push_back(toml::table{{"path", path}, {"value", value}});
         spec.insert("parameters", parameters);
+    }
+    if (!c.definition.empty()) {
+        spec.insert("definition_hash", definition_hash(c.definition));
+        spec.insert("definition", to_table(c.definition));
     }
     return spec;
 }
@@ -246,6 +251,12 @@ CaseSpec read_spec(const RecordReader& in, const toml::table& root) {
             spec.parameters.emplace_back(in.text(*p, "path", w + "parameters."), in.number(*p, "value", w + "parameters."));
         }
     if (t.contains("left_out")) spec.left_out = in.text(t, "left_out", w);
+    // A record written before definitions were stored has none: --resume then runs it again.
+    if (t.contains("definition")) {
+        spec.definition = in.text_map(t, "definition");
+        if (in.text(t, "definition_hash", w) != definition_hash(spec.definition))
+            in.damaged("'spec.definition_hash' does not match 'spec.definition'");
+    }
     return spec;
 }
 

@@ -18,6 +18,7 @@
 #include <sstream>
 
 #include "validation/plan/backend_variant.h"
+#include "validation/plan/case_definition.h"
 #include "validation/run/case_execution.h"
 #include "validation/run/case_isolation.h"
 #include "core/io/hdf5_handle.h"
@@ -98,15 +99,31 @@ const CaseResult* reference_for(const CaseResult& r, const std::vector<CaseResul
 }
 
 // Cases that already have a readable result file from an earlier run (for --resume), whose
-// HDF5 file is complete too (a truncated one, e.g. after a full disk, makes the case run again).
+// HDF5 file is complete too (a truncated one, e.g. after a full disk, makes the case run again),
+// and whose definition (case_definition.h) is the case's now: a case whose scene file, suite
+// entry, backend settings, solver or collide build changed runs again, and one line says how
+// many and why ("3 cases rerun: scene file changed (2), duration changed (1)").
 std::map<std::string, CaseResult> finished_results(const std::vector<CaseSpec>& specs, const std::string& output_dir,
                                                    std::FILE* progress) {
     std::map<std::string, CaseResult> done;
+    std::map<std::string, std::size_t> reasons;  // "duration changed" -> cases
+    std::size_t changed = 0;
     for (const CaseSpec& spec : specs) {
         const std::string path = result_path(output_dir + "/cases", spec.id);
         if (!std::filesystem::exists(path)) continue;
         try {
             CaseResult result = read_case_result(path);
+            std::vector<std::string> why = {"no definition in the record (an older collide)"};
+            if (!result.spec.definition.empty()) {
+                why.clear();
+                for (const std::string& part : changed_parts(result.spec.definition, spec.definition))
+                    why.push_back(part + " changed");
+            }
+            if (!why.empty()) {
+                ++changed;
+                for (const std::string& reason : why) ++reasons[reason];
+                continue;
+            }
             const std::string problem = case_files_problem(result, output_dir);
             if (!problem.empty()) throw std::runtime_error(problem);
             done.emplace(spec.id, std::move(result));
@@ -114,6 +131,11 @@ std::map<std::string, CaseResult> finished_results(const std::vector<CaseSpec>& 
             // An unreadable result counts as not finished: the case runs again.
             if (progress) std::fprintf(progress, "resume: running %s again: %s\n", spec.id.c_str(), e.what());
         }
+    }
+    if (progress && changed) {
+        std::string why;
+        for (const auto& [reason, cases] : reasons) why += (why.empty() ? "" : ", ") + reason + " (" + std::to_string(cases) + ")";
+        std::fprintf(progress, "resume: %zu case%s rerun: %s\n", changed, changed == 1 ? "" : "s", why.c_str());
     }
     return done;
 }
@@ -199,8 +221,9 @@ SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& avail
     std::vector<SceneFeatures> features;
     // Per scene for the comparisons (which only ask about the disks' radii): its first sweep point.
     for (std::size_t s = 0; s < scenes.size(); ++s) features.push_back(case_scenes.features.lower_bound({s, ""})->second);
-    const std::vector<CaseSpec> specs = plan_cases(suite, scenes, backends);
+    std::vector<CaseSpec> specs = plan_cases(suite, scenes, backends);
     check_case_run_settings(suite, scenes, specs);
+    for (CaseSpec& spec : specs) spec.definition = case_definition(suite, scenes[spec.scene_index], spec, options.progress);
 
     check_output_places(options.output_dir, specs, suite.output.hdf5);
     std::filesystem::create_directories(options.output_dir);
