@@ -1,5 +1,6 @@
 #include "core/scene/scene_overrides.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <sstream>
 
@@ -66,7 +67,16 @@ void put(toml::node& parent, const std::string& last, const std::string& walked,
 
 }  // namespace
 
+void check_path_depth(const std::string& path, const TomlPathFail& fail) {
+    const auto parts = std::count(path.begin(), path.end(), '.') + 1;
+    if (parts > max_key_parts)
+        fail("a path with more than " + std::to_string(max_key_parts) + " dotted parts (it has " +
+             std::to_string(parts) + "): expected at most " + std::to_string(max_key_parts) +
+             ", as for a key in a scene file");
+}
+
 toml::node* find_toml_path(toml::table& root, const std::string& path, const TomlPathFail& fail, bool add_tables) {
+    check_path_depth(path, fail);
     toml::node* node = &root;
     std::string walked;
     for (const std::string& part : split_path(path)) {
@@ -111,6 +121,7 @@ Scene scene_with_overrides(const Scene& scene, const std::vector<SceneOverride>&
         const TomlPathFail fail = [&](const std::string& why) {
             throw SceneError(file + ": --set " + shortened(o.text()) + ": " + why);
         };
+        check_path_depth(o.path, fail);  // before a table is added for each part
         const auto dot = o.path.rfind('.');
         const std::string last = dot == std::string::npos ? o.path : o.path.substr(dot + 1);
         if (last.empty()) fail("an empty component");
