@@ -7,7 +7,6 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
-#include <regex>
 #include <sstream>
 
 namespace collide::external {
@@ -18,12 +17,34 @@ constexpr std::size_t magic_size = 6;
 // Files bigger than this are refused before reading (a solver writing without end).
 constexpr std::uintmax_t max_npy_bytes = std::uintmax_t(8) << 30;
 
+bool is_quote(char c) { return c == '\'' || c == '"'; }
+
+std::size_t skip_spaces(const std::string& text, std::size_t at) {
+    const std::size_t end = text.find_first_not_of(" \t\n\r\f\v", at);
+    return end == std::string::npos ? text.size() : end;
+}
+
+// The value of `key` in the header, a Python dict literal:
+//   {'descr': '<f8', 'fortran_order': False, 'shape': (2, 3), }
+// a (tuple), a 'string' or "string", True or False, as the text of the first quoted `key`
+// followed by ':'. Read by hand, not with std::regex: libstdc++'s matcher recurses once per
+// character it repeats over, and a header of 65,000 spaces overflowed the stack.
 std::string header_value(const std::string& header, const std::string& key) {
-    // The header is a Python dict literal: {'descr': '<f8', 'fortran_order': False, 'shape': (2, 3), }
-    const std::regex pattern("['\"]" + key + "['\"]\\s*:\\s*(\\([^)]*\\)|'[^']*'|\"[^\"]*\"|True|False)");
-    std::smatch m;
-    if (!std::regex_search(header, m, pattern)) throw NpyError("the header has no '" + key + "' entry");
-    return m[1].str();
+    for (std::size_t at = header.find(key); at != std::string::npos; at = header.find(key, at + 1)) {
+        const std::size_t after = at + key.size();
+        if (at == 0 || after >= header.size() || !is_quote(header[at - 1]) || !is_quote(header[after])) continue;
+        std::size_t i = skip_spaces(header, after + 1);
+        if (i >= header.size() || header[i] != ':') continue;
+        i = skip_spaces(header, i + 1);
+        if (i >= header.size()) break;
+        const char open = header[i];
+        const std::size_t close = open == '(' ? header.find(')', i) : is_quote(open) ? header.find(open, i + 1)
+                                                                                      : std::string::npos;
+        if (close != std::string::npos) return header.substr(i, close - i + 1);
+        for (const char* word : {"True", "False"})
+            if (header.compare(i, std::strlen(word), word) == 0) return word;
+    }
+    throw NpyError("the header has no '" + key + "' entry");
 }
 
 std::vector<std::size_t> parse_shape(const std::string& text) {
