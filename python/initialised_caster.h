@@ -3,7 +3,8 @@
 // constructed; pybind11 would hand raw memory to the bound method (a crash: docs/refusals.md,
 // "From Python"). The check sits in the one place every call goes through, the conversion of
 // the Python object to the C++ one (for `self` and for arguments alike): pybind11 uses the
-// type_caster specialised here for each class named at the end of this file.
+// type_caster specialised here for each class named at the end of this file. None is refused
+// there too: `Simulation.time.fget(None)` handed the method a null pointer.
 #pragma once
 
 #include <string>
@@ -26,7 +27,8 @@ template <typename T>
 class initialised_caster : public type_caster_base<T> {
 public:
     bool load(handle src, bool convert) {
-        if (src && !src.is_none() && isinstance<T>(src)) {
+        if (!src || src.is_none()) return false;  // a method's self as None: a null pointer too
+        if (isinstance<T>(src)) {
             const value_and_holder v_h = reinterpret_cast<instance*>(src.ptr())->get_value_and_holder(
                 get_type_info(typeid(T)), false);
             if (!v_h || !v_h.holder_constructed())

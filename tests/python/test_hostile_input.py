@@ -123,6 +123,22 @@ def test_uninitialised_objects_raise():
             assert what.startswith("TypeError: ") and "is not initialised" in what, (name, what)
 
 
+def test_uninitialised_objects_raise_when_self_is_none():
+    out = in_child("""
+        import json, collide
+        out = []
+        for call in (lambda: collide.Simulation.time.fget(None), lambda: collide.Simulation.__len__(None),
+                     lambda: collide.Scene.periodic.fget(None), lambda: collide.Simulation.stats(None)):
+            try:
+                call()
+                out.append("returned")
+            except TypeError as e:
+                out.append("TypeError")
+        print(json.dumps(out))
+    """)
+    assert out == ["TypeError"] * 4
+
+
 def test_uninitialised_objects_raise_as_arguments(small_gas):
     with pytest.raises(TypeError, match="is not initialised"):
         collide.Simulation(collide.Scene.__new__(collide.Scene))
