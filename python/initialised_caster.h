@@ -32,7 +32,7 @@ public:
             const value_and_holder v_h = reinterpret_cast<instance*>(src.ptr())->get_value_and_holder(
                 get_type_info(typeid(T)), false);
             if (!v_h || !v_h.holder_constructed())
-                throw type_error(std::string(Py_TYPE(src.ptr())->tp_name) +
+                throw type_error(str(type::handle_of(src).attr("__name__")).cast<std::string>() +
                                  " object is not initialised (made by __new__ without __init__): create it as "
                                  "docs/python.md shows");
         }
