@@ -217,8 +217,8 @@ def test_solver_answers_of_the_right_form_pass(tmp_path):
 
 # ---- A NUL in a path argument is refused, never cut ------------------------------------------
 
-def test_nul_in_paths_is_refused(tmp_path, small_gas):
-    os.chdir(tmp_path)
+def test_nul_in_paths_is_refused(tmp_path, small_gas, monkeypatch):
+    monkeypatch.chdir(tmp_path)
     result = collide.run(small_gas, "step", out="run.h5", frames=True, progress=False)
     calls = {
         "run": lambda: collide.run(small_gas, "step", out="a\0b", progress=False),
