@@ -5,7 +5,7 @@
 
 #include <cstdio>
 #include <memory>
-#include <regex>
+#include <optional>
 #include <stdexcept>
 #include <tuple>
 
@@ -20,7 +20,9 @@
 #include "core/run_driver.h"
 #include "core/scene/scene_loader.h"
 #include "core/scene/scene_overrides.h"
+#include "core/scene/toml_fields.h"
 #include "core/numerics/state_hash.h"
+#include "path_argument.h"
 #include "scene_from_dict.h"
 #include "simulation.h"
 #include "validation/run/case_result.h"
@@ -36,7 +38,7 @@ namespace {
 // RunWriter is destroyed uncommitted, so no half-written file is left) back to Python.
 struct Interrupted {};
 
-py::dict run(const Scene& given, const std::string& backend_name, const std::string& out, bool frames,
+py::dict run(const Scene& given, const std::string& backend_name, const PathArgument& out, bool frames,
              bool progress, const py::kwargs& options) {
     Scene scene = given;  // with the keyword options in its [backend.NAME] table
     const BackendOptions backend_settings = backend_options(options, backend_name, scene);
@@ -44,7 +46,7 @@ py::dict run(const Scene& given, const std::string& backend_name, const std::str
     const ParticleState<double> initial = generate_initial_state(scene);
     auto solver = backend.create(backend_settings);
     std::unique_ptr<RunWriter> writer;
-    if (!out.empty()) writer = std::make_unique<RunWriter>(out, frames);
+    if (!out.text.empty()) writer = std::make_unique<RunWriter>(out, frames);
 
     std::unique_ptr<ProgressLine> line;
     if (progress) line = std::make_unique<ProgressLine>(stderr);
@@ -84,7 +86,7 @@ py::dict run(const Scene& given, const std::string& backend_name, const std::str
 
 // Runs the suite as `collide validate` does (progress on stderr); the caller reads summary.json.
 // `solvers`: outside solvers (name, command, "module:Class", rule), run by `runner` for a class.
-py::dict validate(const std::string& suite_path, const std::string& out, int jobs, bool resume,
+py::dict validate(const PathArgument& suite_path, const PathArgument& out, int jobs, bool resume,
                   const std::vector<std::tuple<std::string, std::string, std::string, std::string>>& solvers,
                   const validation::PythonRunner& runner) {
     if (jobs <= 0) jobs = validation::default_jobs();
@@ -127,23 +129,36 @@ py::dict validate(const std::string& suite_path, const std::string& out, int job
     return d;
 }
 
-// Raises `type` with the message and its parts as attributes: "FILE:LINE: DETAIL" or
-// "FILE: DETAIL" gives source, line (None without one) and detail (the key and what was expected).
-void raise_located(const py::object& type, const std::string& message) {
-    static const std::regex with_line(R"(^(.*?):([0-9]+): (.*)$)"), without_line(R"(^(.*?): (.*)$)");
-    py::object error = type(message);
-    std::smatch part;
-    error.attr("source") = py::none();
-    error.attr("line") = py::none();
-    error.attr("detail") = message;
-    if (std::regex_match(message, part, with_line)) {
-        error.attr("source") = part[1].str();
-        error.attr("line") = std::stoi(part[2].str());
-        error.attr("detail") = part[3].str();
-    } else if (std::regex_match(message, part, without_line)) {
-        error.attr("source") = part[1].str();
-        error.attr("detail") = part[2].str();
+// "FILE:LINE: DETAIL" (split at the first ":DIGITS: ") or else "FILE: DETAIL" (at the first
+// ": "): core/scene/toml_fields.h's location(). Read by hand, not by std::regex: libstdc++'s
+// matcher recurses once per character, and a message quoting a 60,000-character path
+// overflowed the stack.
+struct LocatedMessage {
+    std::optional<std::string> source;
+    std::optional<int> line;
+    std::string detail;
+};
+
+LocatedMessage split_located(const std::string& message) {
+    for (std::size_t colon = message.find(':'); colon != std::string::npos; colon = message.find(':', colon + 1)) {
+        const std::size_t end = message.find_first_not_of("0123456789", colon + 1);
+        const std::size_t digits = end == std::string::npos ? 0 : end - colon - 1;
+        if (digits > 0 && digits <= 9 && message.compare(end, 2, ": ") == 0)
+            return {message.substr(0, colon), std::stoi(message.substr(colon + 1, digits)), message.substr(end + 2)};
     }
+    const std::size_t separator = message.find(": ");
+    if (separator == std::string::npos) return {std::nullopt, std::nullopt, message};
+    return {message.substr(0, separator), std::nullopt, message.substr(separator + 2)};
+}
+
+// Raises `type` with the message and its parts as attributes: source, line (None without one)
+// and detail (the key and what was expected).
+void raise_located(const py::object& type, const std::string& message) {
+    const LocatedMessage part = split_located(message);
+    py::object error = type(message);
+    error.attr("source") = part.source ? py::cast(*part.source) : py::none();
+    error.attr("line") = part.line ? py::cast(*part.line) : py::none();
+    error.attr("detail") = part.detail;
     PyErr_SetObject(type.ptr(), error.ptr());
 }
 
@@ -172,14 +187,22 @@ std::string toml_value(const py::handle& v) {
                          " is no TOML value (expected bool, int, float, str, list or dict)");
 }
 
+// Each value is first read under Scene.from_dict's rules (scene_from_dict.h), which bound its
+// depth and refuse a container that holds itself, naming the key: toml_value recurses, and a
+// dict 10^5 deep overflowed the stack.
 Scene with_overrides(const Scene& scene, const py::dict& changes) {
     std::vector<SceneOverride> overrides;
-    for (const auto& [path, value] : changes) overrides.push_back({py::str(path).cast<std::string>(), toml_value(value)});
+    for (const auto& [key, value] : changes) {
+        const std::string path = py::str(key).cast<std::string>();
+        if (value.is_none()) throw py::type_error("with_overrides: " + shortened(path) + " = None: expected a TOML value");
+        toml_value_from_python(value, shortened(path));
+        overrides.push_back({path, toml_value(value)});
+    }
     return scene_with_overrides(scene, overrides);
 }
 
 // XDMF and XYZ, written as `collide export` writes them; GSD is written in Python.
-void export_run(const std::string& run, const std::string& out, const std::string& format) {
+void export_run(const PathArgument& run, const PathArgument& out, const std::string& format) {
     const ExportFormat f = export_format(format, out);
     if (f == ExportFormat::gsd) throw std::invalid_argument("_export: gsd is written by collide.gsd_export");
     write_file_atomically(out, f == ExportFormat::xdmf ? xdmf_text(run, out) : xyz_text(run));
@@ -188,7 +211,7 @@ void export_run(const std::string& run, const std::string& out, const std::strin
 // What `collide export` checks before it writes: the output path (core/io/output_file.h) and the
 // run file, every frame read through the checked reader (core/io/run_reader.h). Python's GSD
 // writer calls it first, as the program does.
-void check_export(const std::string& run, const std::string& out) {
+void check_export(const PathArgument& run, const PathArgument& out) {
     check_output_path(out);
     require_frames(run);
 }
@@ -197,7 +220,7 @@ void check_export(const std::string& run, const std::string& out) {
 // render` and `collide report` make, then the columns of the run schema as NumPy arrays and the
 // solver's statistics (/stats, as Simulation.stats() gives them). With
 // `frames`, every frame as (T, N, 2) arrays (each checked as it is read).
-py::dict read_run(const std::string& path, bool frames) {
+py::dict read_run(const PathArgument& path, bool frames) {
     const RunFile run(path);
     py::dict attributes;
     for (const auto& [name, value] : run.root_attributes()) attributes[py::str(name)] = value;
@@ -215,7 +238,7 @@ py::dict read_run(const std::string& path, bool frames) {
     d["stats"] = stats_dict(run.stats());
     d["has_frames"] = run.has_frames();
     if (frames && !run.has_frames())
-        throw std::invalid_argument(path + ": written without frames: rerun with frames=True (`collide run --frames`)");
+        throw std::invalid_argument(path.text + ": written without frames: rerun with frames=True (`collide run --frames`)");
     if (frames) {
         const auto t = py::ssize_t(run.output_count()), n = py::ssize_t(run.disk_count());
         py::array_t<double> position({t, n, py::ssize_t(2)}), velocity({t, n, py::ssize_t(2)});
@@ -284,7 +307,8 @@ PYBIND11_MODULE(_collide, m) {
     }
 
     py::class_<Scene>(m, "Scene", "A scene (docs/scenes.md): read from a file, TOML text or a dict")
-        .def_static("from_file", &load_scene, py::arg("path"), "Reads a scene file, as `collide run` does")
+        .def_static("from_file", [](const PathArgument& path) { return load_scene(path); }, py::arg("path"),
+                    "Reads a scene file, as `collide run` does")
         .def_static("from_toml", &parse_scene, py::arg("text"), py::arg("name") = "scene",
                     "Reads scene TOML text; `name` stands for the file name in messages")
         .def_static(
@@ -344,9 +368,9 @@ PYBIND11_MODULE(_collide, m) {
     m.def("_run", &run, py::arg("scene"), py::arg("backend"), py::arg("out"), py::arg("frames"), py::arg("progress"));
     m.def("_read_run", &read_run, py::arg("path"), py::arg("frames"));
     m.def("_export", &export_run, py::arg("run"), py::arg("out"), py::arg("format"));
-    m.def("_validate", [](const std::string& suite, const std::string& out, int jobs, bool resume,
+    m.def("_validate", [](const PathArgument& suite, const PathArgument& out, int jobs, bool resume,
                           const std::vector<std::tuple<std::string, std::string, std::string, std::string>>& solvers,
-                          const std::string& python, const std::string& runner) {
+                          const PathArgument& python, const PathArgument& runner) {
         return validate(suite, out, jobs, resume, solvers, validation::PythonRunner{python, runner});
     }, py::arg("suite"), py::arg("out"), py::arg("jobs"), py::arg("resume"), py::arg("solvers"), py::arg("python"),
           py::arg("runner"));

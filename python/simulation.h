@@ -13,6 +13,7 @@
 #include "core/metrics.h"
 #include "core/particle_state.h"
 #include "core/scene/scene.h"
+#include "initialised_caster.h"
 
 namespace collide::python {
 

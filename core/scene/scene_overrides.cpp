@@ -1,5 +1,6 @@
 #include "core/scene/scene_overrides.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <sstream>
 
@@ -67,7 +68,16 @@ void put(toml::node& parent, const std::string& last, const std::string& walked,
 
 }  // namespace
 
+void check_path_depth(const std::string& path, const TomlPathFail& fail) {
+    const auto parts = std::count(path.begin(), path.end(), '.') + 1;
+    if (parts > max_key_parts)
+        fail("a path with more than " + std::to_string(max_key_parts) + " dotted parts (it has " +
+             std::to_string(parts) + "): expected at most " + std::to_string(max_key_parts) +
+             ", as for a key in a scene file");
+}
+
 toml::node* find_toml_path(toml::table& root, const std::string& path, const TomlPathFail& fail, bool add_tables) {
+    check_path_depth(path, fail);
     toml::node* node = &root;
     std::string walked;
     for (const std::string& part : split_path(path)) {
@@ -117,6 +127,7 @@ Scene scene_with_overrides(const Scene& scene, const std::vector<SceneOverride>&
         if (has_control_character(o.path) || has_control_character(o.value))
             fail(std::string("the ") + (has_control_character(o.path) ? "path" : "value") +
                  " holds a control character (shown as \\xNN); a --set is one line of printable text");
+        check_path_depth(o.path, fail);  // before a table is added for each part
         const auto dot = o.path.rfind('.');
         const std::string last = dot == std::string::npos ? o.path : o.path.substr(dot + 1);
         if (last.empty()) fail("an empty component");

@@ -89,8 +89,13 @@ Scene read_scene_table(const toml::table& root, const std::string& file);
 
 // Follows a dotted path ("particles.0.disks.1.mass": tables by key, arrays by index) from
 // `root` to the node it names; `fail(why)` (which must throw) is called where the path leads
-// nowhere. With `add_tables`, a missing key on the way becomes an empty table.
+// nowhere, and for a path of more than max_key_parts parts (check_path_depth). With
+// `add_tables`, a missing key on the way becomes an empty table.
 using TomlPathFail = std::function<void(const std::string&)>;
+// The bound a scene file's keys have (max_key_parts), for the dotted paths of `--set`,
+// Scene.with_overrides and a suite's `set`: a path of 150,000 parts would add as many nested
+// tables, which toml++ destroys recursively (a stack overflow). Calls `fail` beyond it.
+void check_path_depth(const std::string& path, const TomlPathFail& fail);
 toml::node* find_toml_path(toml::table& root, const std::string& path, const TomlPathFail& fail,
                            bool add_tables = false);
 

@@ -95,11 +95,25 @@ def read_run(path, frames=False):
     return _collide._read_run(os.fspath(path), bool(frames))
 
 
+def _class_file(name, solver):
+    """The .py file that defines the class `solver`, or None (a built-in class, one made in an
+    extension or at the prompt). inspect alone calls a class whose module is not in sys.modules
+    (never imported, or removed since) "a built-in class": that case is named for what it is."""
+    import inspect
+    if solver.__module__ not in sys.modules:
+        raise ValueError("solvers[%r]: %r comes from the module %r, which is not in sys.modules (not imported, or "
+                         "removed since), so its file cannot be found; import the module, or give the solver as "
+                         "\"path/file.py:%s\"" % (name, solver, solver.__module__, solver.__qualname__))
+    try:
+        return inspect.getsourcefile(solver)
+    except TypeError:  # a built-in class, or one whose module has no file
+        return None
+
+
 def _solver_entry(name, solver):
     """(name, command, "file.py:Class", rule) for one entry of validate(solvers=...)."""
     if isinstance(solver, type):
-        import inspect
-        path = inspect.getsourcefile(solver)
+        path = _class_file(name, solver)
         if path is None or "." in solver.__qualname__:
             raise ValueError("solvers[%r]: %r must be a class defined at the top level of a .py file, so that "
                              "collide's runner can load it in a process of its own" % (name, solver))

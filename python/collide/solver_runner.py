@@ -11,7 +11,8 @@ The class is created without arguments and used as
                                   the scene file's text); initial: NumPy arrays "positions" and
                                   "velocities" (N, 2), "radius", "mass" (N,), "stone" (N,) bool
     solver.advance_to(t)          t: absolute time, increasing
-    solver.positions, solver.velocities     (N, 2) float64, attributes or properties
+    solver.positions, solver.velocities     NumPy arrays, (N, 2) float64, attributes or
+                                  properties: exactly that (nothing is broadcast or cast)
     solver.stats()                optional: {"steps": int, "contacts": int}
     solver.version                optional: a version string for the provenance
     solver.refuses(scene)         optional: a reason (str) not to run the scene, or None
@@ -102,6 +103,25 @@ def load_class(spec):
         raise SystemExit("solver_runner: module %s has no class %s" % (module_name, class_name))
 
 
+def checked_pairs(solver, name, disks, t):
+    """solver.<name> after advance_to(t), refused unless it is exactly what the module docstring
+    asks for: a NumPy array of shape (N, 2) and dtype float64 (either byte order). Nothing is
+    broadcast or cast (a (1, 2) row, an int, str or complex array, a list, None), as collide
+    refuses a program's states.npy of another shape or dtype (external/external_solver.cpp)."""
+    where = "solver_runner: %s.%s at t = %r" % (type(solver).__name__, name, t)
+    expected = "expected a NumPy array of shape (%d, 2) (disks, [x, y]) and dtype float64" % disks
+    if not hasattr(solver, name):
+        raise SystemExit("%s: there is no such attribute; %s" % (where, expected))
+    value = getattr(solver, name)
+    if not isinstance(value, np.ndarray):
+        raise SystemExit("%s is %s, %s" % (where, "None" if value is None else "a " + type(value).__name__, expected))
+    if value.shape != (disks, 2):
+        raise SystemExit("%s has shape %s, %s" % (where, value.shape, expected))
+    if value.dtype.kind != "f" or value.dtype.itemsize != 8:
+        raise SystemExit("%s has dtype %s, %s" % (where, value.dtype, expected))
+    return value
+
+
 def run(spec, directory):
     scene, initial = read_request(directory)
     solver = load_class(spec)()
@@ -113,11 +133,12 @@ def run(spec, directory):
         return
     solver.load(scene, initial)
     times = scene["output_times"]
-    states = np.empty((len(times), len(initial["radius"]), 4))
+    disks = len(initial["radius"])
+    states = np.empty((len(times), disks, 4))
     for k, t in enumerate(times):
         solver.advance_to(t)
-        states[k, :, 0:2] = solver.positions
-        states[k, :, 2:4] = solver.velocities
+        states[k, :, 0:2] = checked_pairs(solver, "positions", disks, t)
+        states[k, :, 2:4] = checked_pairs(solver, "velocities", disks, t)
     stats = solver.stats() if hasattr(solver, "stats") else {}
     write_result(directory, times, states, steps=stats.get("steps"), contacts=stats.get("contacts"), version=version)
 

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/scene/scene_loader.h"
+#include "core/scene/scene_overrides.h"
 #include "core/scene/toml_fields.h"
 #include "tests/support/scratch_directory.h"
 #include "tests/support/test_scenes.h"
@@ -71,6 +72,28 @@ TEST(TomlNesting, ParseSceneRunsTheGuardBeforeTheParser) {
         EXPECT_EQ(std::string(e.what()).rfind("deep.toml:1: a table header or key with more than 8 dotted parts", 0), 0u)
             << e.what();
     }
+}
+
+// The same bound for the dotted paths of `--set` and Scene.with_overrides: 150,000 parts
+// added 150,000 nested tables, and toml++ destroyed them recursively (a stack overflow).
+TEST(TomlNesting, KeyDepthIsBoundedForOverridePaths) {
+    const Scene scene = load_scene(test::scene_file("head_on_equal.toml"));
+    for (const int parts : {9, 150000}) {
+        std::string path = "a";
+        for (int k = 1; k < parts; ++k) path += ".a";
+        try {
+            scene_with_overrides(scene, {{path, "1"}});
+            ADD_FAILURE() << "no SceneError for " << parts << " parts";
+        } catch (const SceneError& e) {
+            const std::string message = e.what();
+            EXPECT_NE(message.find(": --set a.a.a."), std::string::npos) << message;
+            EXPECT_NE(message.find("a path with more than 8 dotted parts (it has " + std::to_string(parts) + ")"),
+                      std::string::npos) << message;
+            EXPECT_LT(message.size(), 400u);
+        }
+    }
+    // 8 parts reach the loader, which names the unknown key.
+    EXPECT_THROW(scene_with_overrides(scene, {{"a.a.a.a.a.a.a.a", "1"}}), SceneError);
 }
 
 // toml++ 3.3.0 reached a branch it marks unreachable (undefined behaviour) when it asked

@@ -3,6 +3,7 @@ effect, is recorded in the run file's provenance, and a key or value the scene f
 hold is refused with the message the file would get."""
 
 import re
+import subprocess
 
 import h5py
 import pytest
@@ -128,3 +129,13 @@ def test_python_scene_with_overrides(tmp_path):
         scene.with_overrides({"run.dt": -1.0})
     with pytest.raises(TypeError):
         scene.with_overrides({"run.dt": object()})
+
+
+def test_key_depth_is_bounded_on_the_command_line(collide_exe):
+    # 60,000 parts built as many nested tables, destroyed recursively by toml++: with a 2 MiB
+    # stack the program died by a signal. The bound is the scene file's (8 dotted parts).
+    path = ".".join(["a"] * 60000)
+    r = subprocess.run(["bash", "-c", 'ulimit -s 2048 && exec "$@"', "bash", collide_exe, "run", str(HEAD_ON),
+                        "--set", path + "=1"], capture_output=True, text=True, stdin=subprocess.DEVNULL)
+    assert r.returncode == 1, (r.returncode, r.stderr[-500:])
+    assert "a path with more than 8 dotted parts (it has 60000)" in r.stderr and len(r.stderr) < 600, r.stderr

@@ -1,8 +1,12 @@
 # Shared set-up of the pytest suite for the Python module (python/, docs/python.md). ctest runs
 # it with PYTHONPATH pointing at <build>/python and COLLIDE_EXE at the `collide` program; run
 # by hand: PYTHONPATH=build/release/python /usr/bin/python3 -m pytest tests/python
+import json
 import os
 import pathlib
+import subprocess
+import sys
+import textwrap
 
 import pytest
 
@@ -53,3 +57,15 @@ def small_gas():
 
 def backend_names():
     return [b["name"] for b in collide.backends()]
+
+
+def in_child(code, timeout=60):
+    """Runs `code` (which prints one JSON line) in a fresh interpreter; returns what it printed,
+    or fails with how the child ended (a signal: a crash)."""
+    try:
+        done = subprocess.run([sys.executable, "-c", textwrap.dedent(code)], capture_output=True, text=True,
+                              timeout=timeout)
+    except subprocess.TimeoutExpired:
+        pytest.fail("the call did not return within %d s" % timeout)
+    assert done.returncode == 0, "child ended with %d: %s" % (done.returncode, done.stderr[-2000:])
+    return json.loads(done.stdout.strip().splitlines()[-1])

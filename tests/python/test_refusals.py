@@ -6,28 +6,14 @@ import json
 import pathlib
 import re
 import subprocess
-import sys
-import textwrap
 
 import numpy as np
 import pytest
 
 import collide
-from conftest import SMALL_GAS, backend_names
+from conftest import SMALL_GAS, backend_names, in_child
 
 HERE = pathlib.Path(__file__).resolve().parent
-
-
-def in_child(code, timeout=60):
-    """Runs `code` (which prints one JSON line) in a fresh interpreter; returns what it printed,
-    or fails with how the child ended (a signal: a crash)."""
-    try:
-        done = subprocess.run([sys.executable, "-c", textwrap.dedent(code)], capture_output=True, text=True,
-                              timeout=timeout)
-    except subprocess.TimeoutExpired:
-        pytest.fail("the call did not return within %d s" % timeout)
-    assert done.returncode == 0, "child ended with %d: %s" % (done.returncode, done.stderr[-2000:])
-    return json.loads(done.stdout.strip().splitlines()[-1])
 
 
 def cli_error(collide_exe, scene_file, backend):
