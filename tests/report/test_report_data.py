@@ -104,12 +104,12 @@ class DigestMatchesSummary(unittest.TestCase):
 
 class JumpExplained(unittest.TestCase):
     """An energy jump is found and named down to its step, disks and kind of contact by `collide
-    report` in C++ (energy_jumps.json, the words of `collide explain`); a rerun that failed is
-    reported in the note, never silently dropped."""
+    validate` in C++ (summary.json's energy_jumps, the words of `collide explain`); a rerun that
+    failed is reported in the note, never silently dropped."""
 
     def jumps(self):
-        with open(os.path.join(RESULTS, "report", "energy_jumps.json"), encoding="utf-8") as f:
-            return json.load(f)["jumps"]
+        with open(os.path.join(RESULTS, "summary.json"), encoding="utf-8") as f:
+            return json.load(f)["energy_jumps"]
 
     def test_found_and_named_by_the_program(self):
         with open(os.path.join(RESULTS, "summary.json"), encoding="utf-8") as f:
@@ -146,7 +146,7 @@ class JumpExplained(unittest.TestCase):
 
 class DrawnCases(unittest.TestCase):
     """Which cases the report draws is summary.json's `drawn` (validation/summary/drawn_cases.h,
-    the one rule, which `collide report` reads for the jumps it explains); the renderer draws
+    the one rule, by which `collide validate` chooses the cases whose jumps it explains); the renderer draws
     those and no others."""
 
     def test_one_drawn_case_per_scene_and_backend(self):
@@ -169,8 +169,7 @@ class DrawnCases(unittest.TestCase):
     def test_jumps_explained_in_drawn_cases_of_stepped_backends(self):
         with open(os.path.join(RESULTS, "summary.json"), encoding="utf-8") as f:
             summary = json.load(f)
-        with open(os.path.join(RESULTS, "report", "energy_jumps.json"), encoding="utf-8") as f:
-            jumps = json.load(f)["jumps"]
+        jumps = summary["energy_jumps"]
         cases = {c["id"]: c for c in summary["cases"]}
         for j in jumps:
             self.assertTrue(cases[j["case"]]["drawn"], j["case"])

@@ -25,6 +25,7 @@
 #include "validation/run/progress.h"
 #include "validation/plan/scene_parameters.h"
 #include "validation/summary/summary_writer.h"
+#include "validation/explain/report_jumps.h"
 
 namespace collide::validation {
 
@@ -184,6 +185,18 @@ void check_output_places(const std::string& dir, const std::vector<CaseSpec>& sp
     }
 }
 
+// The energy jumps of the drawn cases, explained here, where the solvers run anyway
+// (report_jumps.h): each explanation reruns its case up to the jump. `collide report` only reads
+// them from summary.json; a report of results someone sent runs no program of theirs.
+nlohmann::json explain_energy_jumps(const Suite& suite, const std::vector<BackendInfo>& backends,
+                                    const SuiteOutcome& outcome, const RunnerOptions& options) {
+    const std::vector<DrawnCase> drawn = cases_to_explain(outcome.cases, outcome.checks, outcome.event_driven);
+    if (options.progress && !drawn.empty())
+        std::fprintf(options.progress, "looking for energy jumps in %zu drawn case(s), explaining each one found\n",
+                     drawn.size());
+    return report_energy_jumps(options.output_dir, drawn, &suite, "", backends, outcome.jobs)["jumps"];
+}
+
 }  // namespace
 
 int default_jobs() { return std::max(1u, std::thread::hardware_concurrency()); }
@@ -278,6 +291,7 @@ SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& avail
     outcome.physics = compare_with_physics(suite, outcome.cases, [&](const CaseSpec& c) -> const Scene& {
         return case_scenes.scene(c);
     });
+    outcome.energy_jumps = explain_energy_jumps(suite, backends, outcome, options);
     outcome.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     write_summary_json(suite, outcome, options.output_dir + "/summary.json");
