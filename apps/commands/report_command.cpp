@@ -1,6 +1,10 @@
 // `collide report DIR`: renders DIR/report/index.html (self-contained, figures embedded) and
 // DIR/report/summary.md from the results of `collide validate`, with the Python renderer in
 // validation/report/ run by the interpreter CMake found (Debian's matplotlib, numpy, jinja2).
+// It reads and draws: every verdict, and the energy jumps' explanations, were decided by
+// `collide validate` and are read from summary.json. No solver runs here, and nothing that
+// summary.json names (its suite file, a solver beside it) is executed (docs/refusals.md,
+// "What collide never does").
 
 #include <algorithm>
 #include <atomic>
@@ -25,8 +29,6 @@
 #include "core/io/output_file.h"
 #include "validation/run/case_result.h"
 #include "validation/run/suite_runner.h"
-#include "validation/explain/report_jumps.h"
-#include "validation/plan/external_solvers.h"
 
 namespace collide::cli {
 namespace {
@@ -147,27 +149,8 @@ void check_case_files(const std::string& dir, const nlohmann::json& summary) {
 void check_report_outputs(const std::string& report_dir) {
     check_output_directory(report_dir);
     if (!std::filesystem::is_directory(report_dir)) return;  // created empty by the renderer
-    for (const char* name : {"index.html", "checks.html", "checks.csv", "summary.md", "summary-full.md", "energy_jumps.json"})
+    for (const char* name : {"index.html", "checks.html", "checks.csv", "summary.md", "summary-full.md"})
         check_output_path(report_dir + "/" + name);
-}
-
-// The energy jumps the report shows, explained (validation/explain/report_jumps.h), into
-// DIR/report/energy_jumps.json for the renderer to lay out. The suite file summary.json names
-// rebuilds the cases; where it cannot be read, each jump says why.
-void write_energy_jumps(const std::string& dir, const nlohmann::json& summary) {
-    std::optional<validation::Suite> suite;
-    std::vector<BackendInfo> backends;
-    std::string suite_problem;
-    try {
-        suite = validation::load_suite(summary.at("suite_file").get<std::string>());
-        backends = validation::backends_with_solvers(*suite, all_backends(), python_runner());
-    } catch (const std::exception& e) {
-        suite_problem = std::string("the suite file could not be read to rerun the case: ") + e.what();
-    }
-    const nlohmann::json jumps = validation::report_energy_jumps(dir, summary, suite ? &*suite : nullptr,
-                                                                 suite_problem, backends, validation::default_jobs());
-    std::filesystem::create_directories(dir + "/report");
-    write_file_atomically(dir + "/report/energy_jumps.json", jumps.dump(1) + "\n");
 }
 
 void execute(const std::string& dir) {
@@ -175,8 +158,7 @@ void execute(const std::string& dir) {
         throw std::runtime_error(dir + "/summary.json: not found; expected the output directory of `collide validate`");
     check_report_outputs(dir + "/report");  // first: refused at once, before reading every run file
     const nlohmann::json summary = read_summary(dir);
-    check_case_files(dir, summary);
-    write_energy_jumps(dir, summary);
+    check_case_files(dir, summary);  // every record's checksum, once: the renderer does not check them again
     const std::string script = resource_path("validation/report") + "/make_report.py";
     // The renderer calls this program back (`collide render` for motion strips):
     // run_python_script tells it which one.

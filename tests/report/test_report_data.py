@@ -105,12 +105,12 @@ class DigestMatchesSummary(unittest.TestCase):
 
 class JumpExplained(unittest.TestCase):
     """An energy jump is found and named down to its step, disks and kind of contact by `collide
-    report` in C++ (energy_jumps.json, the words of `collide explain`); a rerun that failed is
-    reported in the note, never silently dropped."""
+    validate` in C++ (summary.json's energy_jumps, the words of `collide explain`); a rerun that
+    failed is reported in the note, never silently dropped."""
 
     def jumps(self):
-        with open(os.path.join(RESULTS, "report", "energy_jumps.json"), encoding="utf-8") as f:
-            return json.load(f)["jumps"]
+        with open(os.path.join(RESULTS, "summary.json"), encoding="utf-8") as f:
+            return json.load(f)["energy_jumps"]
 
     def test_found_and_named_by_the_program(self):
         with open(os.path.join(RESULTS, "summary.json"), encoding="utf-8") as f:
@@ -147,7 +147,7 @@ class JumpExplained(unittest.TestCase):
 
 class DrawnCases(unittest.TestCase):
     """Which cases the report draws is summary.json's `drawn` (validation/summary/drawn_cases.h,
-    the one rule, which `collide report` reads for the jumps it explains); the renderer draws
+    the one rule, by which `collide validate` chooses the cases whose jumps it explains); the renderer draws
     those and no others."""
 
     def test_one_drawn_case_per_scene_and_backend(self):
@@ -170,8 +170,7 @@ class DrawnCases(unittest.TestCase):
     def test_jumps_explained_in_drawn_cases_of_stepped_backends(self):
         with open(os.path.join(RESULTS, "summary.json"), encoding="utf-8") as f:
             summary = json.load(f)
-        with open(os.path.join(RESULTS, "report", "energy_jumps.json"), encoding="utf-8") as f:
-            jumps = json.load(f)["jumps"]
+        jumps = summary["energy_jumps"]
         cases = {c["id"]: c for c in summary["cases"]}
         for j in jumps:
             self.assertTrue(cases[j["case"]]["drawn"], j["case"])
@@ -500,7 +499,9 @@ class WhatAReaderWasToldWrongly(unittest.TestCase):
         self.assertIn("load average", self.html)
 
     def test_loose_tolerances_and_left_out_pressure_are_said(self):
-        """box2d[shipped] was green by construction: tolerances set to what it does, pressure left out."""
+        """box2d[shipped] was green by construction: tolerances set to what it does, pressure left out.
+        Which of these the verdict names is decided by `collide validate` (summary.json's `verdicts`,
+        tests/validation/test_verdict_facts.cpp); the report words what it is given."""
         checks = [check("gas", "event", "energy_drift", tolerance=1e-9, value=1e-12),
                   check("gas", "step", "energy_drift", tolerance=0.05, value=0.01),
                   check("gas", "box2d[shipped]", "energy_drift", tolerance=0.95, value=0.909),
@@ -514,12 +515,20 @@ class WhatAReaderWasToldWrongly(unittest.TestCase):
                               "status": "completed"} for b in ("event", "step", "box2d[shipped]")],
                    "work_precision": [{"scene": "gas", "backend": "box2d[shipped]", "error_kind": "|Z - Z_ref| / Z_ref",
                                        "points": [point]}],
-                   "backends": {"box2d[shipped]": {"float": True, "stepping_rule": False}}}
+                   "backends": {"box2d[shipped]": {"float": True, "stepping_rule": False}},
+                   "verdicts": {"box2d[shipped]": {
+                       "loosest_tolerance": {"ratio": 19.0, "check": "energy_drift", "tolerance": 0.95, "named": True},
+                       "largest_energy_drift": {"value": 0.909, "scene": "gas", "named": True},
+                       "pressure_offset": {"sigmas": 33.0, "left_out": True, "named": True}}}}
         row = next(r for r in digest.digest(summary) if r["backend"] == "box2d[shipped]")
         v = verdicts.verdict(summary, row, {})
         self.assertIn("energy drift up to 90.9 %", v["verdict"])
         self.assertIn("gas pressure off by up to 33 SE (that check is left out)", v["verdict"])
         self.assertIn("energy drift ≤ 0.95, 19× the other backends'", v["verdict"])
+        for fact in summary["verdicts"]["box2d[shipped]"].values():
+            fact["named"] = False  # not named: not said, whatever its number
+        v = verdicts.verdict(summary, row, {})
+        self.assertEqual(v["verdict"], "passes 0 checks" if not row["pass"] else f"passes {row['pass']} checks")
 
     def test_quantised_checks_are_not_the_worst_margin(self):
         checks = [check("pair", "step", "overlapping_pairs", value=0.5, tolerance=0.5, quantised=True),

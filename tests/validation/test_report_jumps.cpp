@@ -1,5 +1,5 @@
 // The cases the report draws (validation/summary/drawn_cases.h) and the energy jumps `collide
-// report` explains in them (validation/explain/report_jumps.h): only drawn cases, only backends
+// validate` explains in them (validation/explain/report_jumps.h): only drawn cases, only backends
 // with time steps, and a case whose numbers equal another's, bit for bit, explained once.
 #include <gtest/gtest.h>
 
@@ -50,16 +50,17 @@ TEST(ReportJumps, DrawnSteppedCasesOnlyAndTwinsExplainedOnce) {
         record("gas", "event-plain", 1e-3, 1),                             // event-driven
         record("gas", "cpu", 2e-3, 1),                                     // not drawn
         record("calm", "step", 1e-3, 1)};                                  // energy drift not judged
-    nlohmann::json summary = {{"checks", nlohmann::json::array()}, {"cases", nlohmann::json::array()},
-                              {"backends", {{"event-plain", {{"event_driven", true}}}, {"cpu", {{"event_driven", false}}}}}};
+    std::vector<CheckResult> checks;
     for (const CaseResult& r : records) {
         write_case_result(r, dir.file("cases/" + r.spec.id + ".toml"));
-        summary["cases"].push_back({{"id", r.spec.id}, {"scene", r.spec.scene}, {"backend", r.spec.backend},
-                                    {"drawn", r.dt == 1e-3}});
-        summary["checks"].push_back({{"check", "energy_drift"}, {"scene", r.spec.scene},
-                                     {"status", r.spec.scene == "gas" ? "pass" : "left_out"}});
+        CheckResult energy;
+        energy.check = "energy_drift";
+        energy.scene = r.spec.scene;
+        energy.status = r.spec.scene == "gas" ? CheckStatus::pass : CheckStatus::left_out;
+        checks.push_back(energy);
     }
-    const nlohmann::json jumps = report_energy_jumps(dir.path().string(), summary, nullptr, "no suite", {}, 2)["jumps"];
+    const std::vector<DrawnCase> drawn = cases_to_explain(records, checks, {{"event-plain", true}, {"cpu", false}});
+    const nlohmann::json jumps = report_energy_jumps(dir.path().string(), drawn, nullptr, "no suite", {}, 2)["jumps"];
     ASSERT_EQ(jumps.size(), 3u) << jumps.dump(1);
     EXPECT_EQ(jumps[0]["case"], records[0].spec.id);
     EXPECT_EQ(jumps[0]["problem"], "no suite");

@@ -11,39 +11,10 @@
 #include "core/io/run_schema.h"
 #include "validation/explain/explain_case.h"
 #include "validation/run/case_result.h"
+#include "validation/summary/drawn_cases.h"
 
 namespace collide::validation {
 namespace {
-
-struct DrawnCase {
-    std::string id, scene, backend;
-};
-
-// Scenes whose energy_drift check was judged somewhere (a pass or a fail, not left out).
-std::set<std::string> scenes_judging_energy(const nlohmann::json& summary) {
-    std::set<std::string> scenes;
-    for (const auto& c : summary.at("checks"))
-        if (c.at("check") == "energy_drift" && (c.at("status") == "pass" || c.at("status") == "fail"))
-            scenes.insert(c.at("scene").get<std::string>());
-    return scenes;
-}
-
-bool event_driven(const nlohmann::json& summary, const std::string& backend) {
-    const auto backends = summary.find("backends");
-    if (backends == summary.end() || !backends->contains(backend)) return false;
-    return backends->at(backend).value("event_driven", false);
-}
-
-// The cases the report draws (summary.json's `drawn`) whose jumps are explained, in its order.
-std::vector<DrawnCase> cases_to_explain(const nlohmann::json& summary) {
-    const std::set<std::string> scenes = scenes_judging_energy(summary);
-    std::vector<DrawnCase> out;
-    for (const auto& c : summary.at("cases")) {
-        DrawnCase d{c.at("id"), c.at("scene"), c.at("backend")};
-        if (c.value("drawn", false) && scenes.count(d.scene) && !event_driven(summary, d.backend)) out.push_back(d);
-    }
-    return out;
-}
 
 // FNV-1a over the bits of a record's numbers: every metric of its series (the run schema's
 // columns) and its final state. Equal records hash equally; equal hashes are confirmed by
@@ -111,10 +82,26 @@ void for_each_index(std::size_t n, int jobs, Work work) {
 
 }  // namespace
 
-nlohmann::json report_energy_jumps(const std::string& dir, const nlohmann::json& summary, const Suite* suite,
+std::vector<DrawnCase> cases_to_explain(const std::vector<CaseResult>& cases, const std::vector<CheckResult>& checks,
+                                        const std::map<std::string, bool>& event_driven) {
+    std::set<std::string> judging_energy;  // scenes whose energy_drift was judged (not left out)
+    for (const CheckResult& c : checks)
+        if (c.check == "energy_drift" && (c.status == CheckStatus::pass || c.status == CheckStatus::fail))
+            judging_energy.insert(c.scene);
+    const std::vector<bool> drawn = drawn_cases(cases);
+    std::vector<DrawnCase> out;
+    for (std::size_t k = 0; k < cases.size(); ++k) {
+        const CaseSpec& spec = cases[k].spec;
+        const auto exact = event_driven.find(spec.backend);
+        if (drawn[k] && judging_energy.count(spec.scene) && !(exact != event_driven.end() && exact->second))
+            out.push_back({spec.id, spec.scene, spec.backend});
+    }
+    return out;
+}
+
+nlohmann::json report_energy_jumps(const std::string& dir, const std::vector<DrawnCase>& cases, const Suite* suite,
                                    const std::string& suite_problem, const std::vector<BackendInfo>& backends,
                                    int jobs) {
-    const std::vector<DrawnCase> cases = cases_to_explain(summary);
     std::vector<Found> found(cases.size());
     for_each_index(cases.size(), jobs, [&](std::size_t k) {
         try {

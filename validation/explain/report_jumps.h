@@ -1,11 +1,12 @@
-// The energy jumps the report shows, found and explained in C++ before the renderer starts, so
-// that the renderer (validation/report/) only lays them out: `collide report` writes them to
-// DIR/report/energy_jumps.json.
+// The energy jumps the report shows, found and explained by `collide validate` once every case
+// has run and been judged, and written into summary.json (`energy_jumps`), so that `collide
+// report` only reads and lays them out: explaining a jump reruns the case's solver, and a report
+// of a results directory someone sent runs no program (docs/refusals.md, "What collide never
+// does").
 //
-// Which cases: the cases the report draws (summary.json's `drawn`, validation/summary/drawn_cases.h)
-// of every scene whose energy_drift check was judged (passed or failed, not left out), on every
-// backend with time steps (summary.json's `event_driven` false: an exact solver has no step to
-// look inside, BackendInfo::event_driven). A case whose recorded series has a jump
+// Which cases: the cases the report draws (validation/summary/drawn_cases.h) of every scene
+// whose energy_drift check was judged (passed or failed, not left out), on every backend with
+// time steps (an exact solver has no step to look inside, BackendInfo::event_driven). A case whose recorded series has a jump
 // (largest_interval_jump) is rerun over that output interval and its step named (explain_case);
 // a rerun that fails is kept with its reason, never dropped.
 //
@@ -16,24 +17,37 @@
 // only name the same step again.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "core/backend_registry.h"
+#include "validation/judge/checks.h"
 #include "validation/plan/suite.h"
+#include "validation/run/case_result.h"
 
 namespace collide::validation {
 
-// `summary` is DIR/summary.json as read; `suite` the suite file it names, loaded, with
-// `backends` including its outside solvers; or no suite and `suite_problem`, why it could not
-// be loaded (each jump then carries that reason). Runs up to `jobs` reruns at once (the opencl
+// A case whose jump is looked for: drawn, on a scene that judged energy, on a stepped backend.
+struct DrawnCase {
+    std::string id, scene, backend;
+};
+
+// The cases among `cases` (a suite's, in plan order) whose jumps are explained; `checks` are
+// their judged checks, `event_driven` says per backend whether it has time steps.
+std::vector<DrawnCase> cases_to_explain(const std::vector<CaseResult>& cases, const std::vector<CheckResult>& checks,
+                                        const std::map<std::string, bool>& event_driven);
+
+// `dir` holds the suite's records (cases/<id>.toml); `suite` is the suite that ran them, with
+// `backends` including its outside solvers; or no suite and `suite_problem`, why the cases cannot
+// be rerun (each jump then carries that reason). Runs up to `jobs` reruns at once (the opencl
 // backend's one at a time). Returns
 // {"jumps": [{"case", "scene", "backend", "t0", "t1", "change", "median", "scale",
 //             "explained": <explanation_json> or null, "problem": "" or why not,
 //             "same_as": the case explained in its place (only where it has a twin)}, ...]}.
-nlohmann::json report_energy_jumps(const std::string& dir, const nlohmann::json& summary, const Suite* suite,
+nlohmann::json report_energy_jumps(const std::string& dir, const std::vector<DrawnCase>& cases, const Suite* suite,
                                    const std::string& suite_problem, const std::vector<BackendInfo>& backends,
                                    int jobs);
 

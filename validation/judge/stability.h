@@ -30,6 +30,12 @@ namespace collide::validation {
 enum class Outcome { stable, crash, hang, nan, stalled, tunnelling, excessive_overlap, energy_growth, left_out };
 const char* to_string(Outcome o);
 
+// The outcomes, the most severe first: the order above, which classify() applies (left_out last).
+// summary.json's `outcome_order`: the report shows the most severe of a cell's cases by it.
+inline constexpr Outcome outcome_precedence[] = {Outcome::crash, Outcome::hang, Outcome::nan, Outcome::stalled,
+                                                 Outcome::tunnelling, Outcome::excessive_overlap,
+                                                 Outcome::energy_growth, Outcome::stable, Outcome::left_out};
+
 struct Classification {
     Outcome outcome = Outcome::stable;
     std::string reason;  // the measured value against its limit, or the runner's diagnostic

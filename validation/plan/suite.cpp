@@ -283,11 +283,25 @@ SuiteScene read_scene(const toml::table& t, const std::string& file, int index, 
     return s;
 }
 
+// [verdicts]: each threshold a positive number, the default where the key is absent.
+VerdictThresholds read_verdict_thresholds(const toml::table& root, const std::string& file) {
+    VerdictThresholds t;
+    const toml::node* node = root.get("verdicts");
+    if (!node) return t;
+    if (!node->is_table()) TomlFields(root, "", file).fail("verdicts", "a table");
+    const TomlFields v(*node->as_table(), "verdicts", file);
+    v.allow_only({"loose_tolerance_ratio", "energy_drift", "pressure_sigmas"});
+    t.loose_tolerance_ratio = optional_positive(v, "loose_tolerance_ratio").value_or(t.loose_tolerance_ratio);
+    t.energy_drift = optional_positive(v, "energy_drift").value_or(t.energy_drift);
+    t.pressure_sigmas = optional_positive(v, "pressure_sigmas").value_or(t.pressure_sigmas);
+    return t;
+}
+
 // The suite's tables, read with TomlFields (their SceneError becomes SuiteError in parse_suite).
 Suite read_suite(const toml::table& root, const std::string& file, const std::string& dir) {
     const TomlFields r(root, "", file);
     r.allow_only({"name", "description", "scene_dir", "backends", "reference", "seeds", "time_limit",
-            "warmup_fraction", "stability", "output", "tolerances", "scene", "variant", "reference_dir", "solver"});
+            "warmup_fraction", "stability", "output", "tolerances", "scene", "variant", "reference_dir", "solver", "verdicts"});
     Suite suite;
     suite.source_path = file;
     suite.name = optional_string(r, "name").value_or(std::filesystem::path(file).stem().string());
@@ -325,6 +339,7 @@ Suite read_suite(const toml::table& root, const std::string& file, const std::st
         if (auto v = optional_positive(out, "max_overlap_samples")) suite.output.max_overlap_samples = std::size_t(*v);
         if (auto v = optional_positive(out, "max_trajectory_disks")) suite.output.max_trajectory_disks = std::size_t(*v);
     }
+    suite.verdicts = read_verdict_thresholds(root, file);
     read_tolerances(root, file, suite.tolerances);
     suite.variants = read_variants(root, file);
     add_solvers(suite, read_solver_tables(root, file, dir));

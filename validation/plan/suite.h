@@ -77,6 +77,15 @@ struct OutputOptions {
     std::size_t max_trajectory_disks = 64;    // record trajectories only up to this many disks
 };
 
+// When the report's per-backend verdict names a fact beside the passes and fails (suite table
+// [verdicts]; docs/reading-a-report.md, "Where each verdict is decided"). They never change
+// whether a check passes; validation/summary/verdict_facts.h decides with them.
+struct VerdictThresholds {
+    double loose_tolerance_ratio = 5;  // a tolerance this many times the other backends' median
+    double energy_drift = 0.01;        // a largest energy drift of at least this (1 %)
+    double pressure_sigmas = 3;        // a resolved pressure difference of at least this many SE
+};
+
 struct Suite {
     std::string name;
     std::string description;
@@ -91,6 +100,7 @@ struct Suite {
     double warmup_fraction = 0.1;     // of the duration, run once before the timed run
     bool stability = false;           // classify every case by failure mode (stability.h)
     OutputOptions output;
+    VerdictThresholds verdicts;
     ToleranceTable tolerances;
     std::vector<SuiteScene> scenes;
     // Outside solvers ([solver.NAME], --solver): backends of this run (external_solvers.h).

@@ -69,7 +69,7 @@ def margin_parts(row):
     if worst is None:
         return None
     m, subject, check = worst
-    text = "∞" if m == math.inf else f"{m:.2f}" if 0.01 <= m < 1e4 else fmt(m)
+    text = "∞" if m == math.inf else f"{m:.2f}" if 0.01 <= m < 1e4 else fmt(m)  # layout: fixed point where it reads
     ties = f", one of {row['ties']} checks at this value" if row["ties"] > 1 else ""
     return {"text": text, "subject": subject, "where": f"{check.replace('_', ' ')}{ties}"}
 

@@ -1,6 +1,6 @@
 """The collide program, for the part of the report it draws itself (`collide render` for motion
 strips): never a second implementation here. (The energy jumps come explained from `collide
-report` itself, in energy_jumps.json.) And its Python module, for the scripts that read run
+validate`, in summary.json: the report runs no solver.) And its Python module, for the scripts that read run
 files (docs/figures/make_figures.py, box2d/measure_presets.py): collide.read_run, the same
 checked reader as every command (core/io/run_reader.h)."""
 import os

@@ -29,6 +29,14 @@ CASE_KEYS = {"id": str, "scene": str, "backend": str, "status": str, "seed": int
 CHECK_KEYS = {"subject": str, "scene": str, "backend": str, "check": str, "status": str, "detail": str}
 LINE_KEYS = {"scene": str, "backend": str, "points": list, "error_kind": str}
 POINT_KEYS = {"dt": NUMBER, "error": NUMBER, "seconds_per_time_unit": NUMBER}
+# What `collide validate` decides and the report only lays out (docs/reading-a-report.md, "Where
+# each verdict is decided"); a summary.json without them predates that and is rewritten by --resume.
+DECIDED_KEYS = {"energy_jumps": list, "verdicts": dict, "verdict_thresholds": dict, "unexpected_outcomes": list,
+                "outcome_order": list}
+DECIDED_WHAT = {"energy_jumps": "the energy jumps explained", "verdicts": "what each backend's verdict names",
+                "verdict_thresholds": "the thresholds of the verdicts",
+                "unexpected_outcomes": "the stability outcomes a suite does not expect",
+                "outcome_order": "the stability outcomes, most severe first"}
 
 
 def _require(record, keys, path, where):
@@ -62,6 +70,13 @@ def load_summary(directory):
     if summary["cases"] and isinstance(summary["cases"][0], dict) and "drawn" not in summary["cases"][0]:
         raise ReportInputError(f"{path}: the cases do not say which the report draws ('drawn'): written by an "
                                "older collide; `collide validate SUITE --out DIR --resume` rewrites it")
+    for key, kind in DECIDED_KEYS.items():
+        if key not in summary:
+            raise ReportInputError(f"{path}: no '{key}' ({DECIDED_WHAT[key]}): written by an older collide, which left "
+                                   "it to the report; `collide validate SUITE --out DIR --resume` rewrites it")
+        if not isinstance(summary[key], kind):
+            raise ReportInputError(f"{path}: top level: key '{key}' should be {kind.__name__}, "
+                                   f"found {type(summary[key]).__name__}")
     for i, case in enumerate(summary["cases"]):
         _require(case, CASE_KEYS, path, f"cases[{i}]")
     for i, check in enumerate(summary["checks"]):
@@ -94,6 +109,17 @@ def verified_record_text(path, data):
     return body.decode("utf-8")
 
 
+def record_text(path, data):
+    """The text of a case record after its checksum line. `collide report` has checked every
+    listed record's checksum (apps/commands/report_command.cpp) before the renderer starts; it is
+    not checked again here."""
+    line = CHECKSUM_LINE.match(data)
+    if not line:
+        raise ReportInputError(f"{path}: damaged case record: no checksum line; "
+                               "run `collide validate ... --resume` to run it again")
+    return data[line.end():].decode("utf-8")
+
+
 def load_case(directory, case):
     """A case's result table (cases/<id>.toml), or a ReportInputError naming the file."""
     if not case.get("result_file"):
@@ -101,7 +127,7 @@ def load_case(directory, case):
     path = os.path.join(directory, case["result_file"])
     try:
         with open(path, "rb") as f:
-            result = tomllib.loads(verified_record_text(path, f.read()))
+            result = tomllib.loads(record_text(path, f.read()))
     except OSError as e:
         raise ReportInputError(f"{path}: cannot read: {e.strerror or e}") from None
     except (tomllib.TOMLDecodeError, UnicodeDecodeError) as e:

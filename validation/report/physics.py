@@ -28,7 +28,7 @@ def rows(summary):
 def _num(value, digits=4):
     if value is None:
         return "n/a"
-    if value == int(value) and abs(value) < 1e7:
+    if value == int(value) and abs(value) < 1e7:  # layout: an integer is printed as one
         return f"{int(value)}"
     return f"{value:.{digits}g}"
 

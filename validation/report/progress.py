@@ -11,7 +11,7 @@ import time
 def format_duration(seconds):
     """0:05, 1:05, 1:02:03 (as ProgressLine::format_duration)."""
     s = int(math.floor(max(0.0, seconds) + 0.5))
-    return f"{s // 3600}:{s // 60 % 60:02d}:{s % 60:02d}" if s >= 3600 else f"{s // 60}:{s % 60:02d}"
+    return f"{s // 3600}:{s // 60 % 60:02d}:{s % 60:02d}" if s >= 3600 else f"{s // 60}:{s % 60:02d}"  # layout: h:mm:ss
 
 
 def compose(fraction, what, elapsed):

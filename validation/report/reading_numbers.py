@@ -45,7 +45,7 @@ def numbers(directory):
         n[f"{b}.pass"] = str(r["pass"])
         n[f"{b}.left_out"] = str(r["left_out"])
         if r["worst"]:
-            n[f"{b}.worst"] = f"{r['worst'][0]:.2f}" if r["worst"][0] >= 0.01 else g(r["worst"][0])
+            n[f"{b}.worst"] = f"{r['worst'][0]:.2f}" if r["worst"][0] >= 0.01 else g(r["worst"][0])  # layout: as printed
             n[f"{b}.worst_where"] = f"{r['worst'][1]}: {r['worst'][2].replace('_', ' ')}"
         n[f"{b}.order_trajectory"] = digest.order_summary(r["orders"].get("trajectory", []))
     for f in fits:

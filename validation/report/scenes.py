@@ -1,8 +1,7 @@
 """The data of index.html's scene sections: each scene's figures, drawn by forked processes (one
-scene each, as many at a time as there are cores), and the energy jumps `collide report`
-found and explained in C++ (energy_jumps.json). templates/scene.html.j2 lays them out.
+scene each, as many at a time as there are cores), and the energy jumps `collide validate`
+found and explained (summary.json's `energy_jumps`). templates/scene.html.j2 lays them out.
 """
-import json
 import math
 import multiprocessing
 import os
@@ -27,21 +26,17 @@ def scene_box(path):
 def drawn_cases(summary, directory, scene):
     """[(backend, case, its record)] for the cases of a scene the report draws, one per backend,
     as summary.json marks them (`drawn`: the rule is validation/summary/drawn_cases.h, one
-    definition, which `collide report` reads too for the jumps it explains). Only these records
+    definition, by which `collide validate` chooses the cases whose jumps it explains). Only these records
     are read (`collide report` has checked every listed record before the renderer starts)."""
     return [(case["backend"], case, digest.load_case(directory, case)) for case in summary["cases"]
             if case["scene"] == scene and case["drawn"]]
 
 
-def load_energy_jumps(directory):
-    """The energy jumps `collide report` found in the cases drawn and explained before the
-    renderer started (validation/explain/report_jumps.h): DIR/report/energy_jumps.json's list,
-    or none where the renderer runs without it (a test that calls it directly)."""
-    path = os.path.join(directory, "report", "energy_jumps.json")
-    if not os.path.exists(path):
-        return []
-    with open(path, encoding="utf-8") as f:
-        return json.load(f)["jumps"]
+def energy_jumps(summary):
+    """The energy jumps `collide validate` found in the drawn cases and explained, rerunning each
+    case up to its jump (validation/explain/report_jumps.h): summary.json's `energy_jumps`. The
+    report reads them and runs no solver (docs/refusals.md, "What collide never does")."""
+    return summary["energy_jumps"]
 
 
 def jumps_by_scene(a, jumps):
@@ -56,7 +51,7 @@ def jumps_by_scene(a, jumps):
 
 def explanation_text(jump):
     """The step, the disks and the kind of contact behind a jump, as `collide explain` words
-    them (C++ wrote them into energy_jumps.json); or why they could not be named."""
+    them (`collide validate` wrote them into summary.json); or why they could not be named."""
     if jump.get("problem") or not jump.get("explained"):
         return f" The step could not be named: {jump.get('problem') or 'no explanation recorded'}."
     found = jump["explained"]
@@ -136,7 +131,7 @@ def _with_progress(pool, scenes):
 def sections(summary, directory, a):
     """The headline figure's PNG (None where it has nothing to show) and every scene's section,
     in scene order: all drawn by forked processes, as many at a time as there are cores."""
-    requests = jumps_by_scene(a, load_energy_jumps(directory))
+    requests = jumps_by_scene(a, energy_jumps(summary))
     cores = max(1, os.cpu_count() or 1)
     _SHARED.update(summary=summary, directory=directory, a=a, requests=requests)
     try:

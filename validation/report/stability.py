@@ -17,8 +17,8 @@ from matplotlib.patches import Patch  # noqa: E402
 import figures  # noqa: E402
 import printable  # noqa: E402
 
-# Most severe first (the classification's precedence); one fixed colour each.
-OUTCOMES = ["crash", "hang", "nan", "stalled", "tunnelling", "excessive_overlap", "energy_growth", "stable", "left_out"]
+# One fixed colour per outcome; their order, the most severe first, is summary.json's
+# `outcome_order` (the classification's precedence, validation/judge/stability.h).
 OUTCOME_COLOURS = {"crash": "#000000", "hang": "#8c564b", "nan": "#d62728", "stalled": "#1f77b4",
                    "tunnelling": "#9467bd",
                    "excessive_overlap": "#ff7f0e", "energy_growth": "#e6c200", "stable": "#2ca02c",
@@ -58,26 +58,18 @@ def dt_text(summary, case):
 
 
 def unexpected(summary):
-    """The cases a stability suite does not expect (validation/judge/stability.h, unexpected_outcomes):
-    unclassified, the exact solver not stable, or a crash."""
-    out = []
-    for c in summary["cases"]:
-        outcome = c.get("outcome")
-        if outcome is None:
-            out.append(f"{c['id']}: not classified")
-        elif c.get("reference") and outcome not in ("stable", "left_out"):
-            out.append(f"{c['id']}: the reference backend is not stable: {outcome}: {c.get('outcome_reason', '')}")
-        elif outcome == "crash":
-            out.append(f"{c['id']}: crash: {c.get('outcome_reason', '')}")
-    return out
+    """The cases a stability suite does not expect, as `collide validate` found them
+    (validation/judge/stability.h, unexpected_outcomes): summary.json's `unexpected_outcomes`."""
+    return summary["unexpected_outcomes"]
 
 
 def has_outcomes(summary):
     return any("outcome" in c for c in summary["cases"])
 
 
-def worse(a, b):
-    return a if b is None or OUTCOMES.index(a) < OUTCOMES.index(b) else b
+def worse(order, a, b):
+    """The more severe of two outcomes in `order` (summary.json's `outcome_order`)."""
+    return a if b is None or order.index(a) < order.index(b) else b
 
 
 def parameter_label(path):
@@ -95,12 +87,12 @@ def swept_scenes(summary):
         entry = maps.setdefault(c["scene"], (path, OrderedDict()))
         cells = entry[1].setdefault(c["backend"], {})
         key = (c["dt"], value)
-        cells[key] = worse(c["outcome"], cells.get(key))
+        cells[key] = worse(summary["outcome_order"], c["outcome"], cells.get(key))
     return OrderedDict((s, m) for s, m in maps.items()
                        if len({k[0] for cells in m[1].values() for k in cells}) > 1)
 
 
-def stability_map(scene, path, backends):
+def stability_map(scene, path, backends, order):
     dts = sorted({k[0] for cells in backends.values() for k in cells})
     values = sorted({k[1] for cells in backends.values() for k in cells})
     fig, axes = plt.subplots(1, len(backends), figsize=(3.2 * len(backends) + 1.5, 3.2), squeeze=False)
@@ -118,7 +110,7 @@ def stability_map(scene, path, backends):
         ax.set_xlabel("time step dt (time)")
         ax.set_title(figures.tex(backend), color=figures.colour(backend))
     axes[0][0].set_ylabel(figures.tex(parameter_label(path)))
-    present = [o for o in OUTCOMES if any(o in cells.values() for cells in backends.values())]
+    present = [o for o in order if any(o in cells.values() for cells in backends.values())]
     fig.legend(handles=[Patch(facecolor=OUTCOME_COLOURS[o], label=o) for o in present],
                loc="center left", bbox_to_anchor=(1.0, 0.5), frameon=False)
     fig.suptitle(figures.tex(f"Stability map: {scene}"), y=1.04)
@@ -189,7 +181,7 @@ def first_failure_matrix(summary):
 def section(summary):
     """The report's stability section for templates/stability.html.j2: a map per swept scene
     (PNG) and the first failures."""
-    maps = [{"scene": scene, "path": path, "png": stability_map(scene, path, backends)}
+    maps = [{"scene": scene, "path": path, "png": stability_map(scene, path, backends, summary["outcome_order"])}
             for scene, (path, backends) in swept_scenes(summary).items()]
     return {"maps": maps, "first_failures": first_failure_table(summary)}
 

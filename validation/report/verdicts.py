@@ -1,6 +1,8 @@
 """The first screen's answer to "which backend can I trust, for what, at what cost": one verdict
-per backend, laid out from summary.json's numbers (its checks, its costs per scene, its
-statistical differences, its tolerances beside the exact solver's). Nothing is measured here.
+per backend, laid out from summary.json's numbers (its checks, its costs per scene) and what
+`collide validate` decided each verdict names (summary.json's `verdicts`: a loose tolerance, a
+large energy drift, a resolved pressure offset, against the suite's `[verdicts]` thresholds;
+validation/summary/verdict_facts.h). Nothing is measured or judged here.
 """
 from collections import OrderedDict
 
@@ -8,7 +10,7 @@ import digest
 
 
 def _times(x):
-    return f"{x:.2g}×" if x < 10 else f"{x:.0f}×"
+    return f"{x:.2g}×" if x < 10 else f"{x:.0f}×"  # layout: two digits below 10×
 
 
 def cost_text(summary, backend, cheapest=None):
@@ -59,43 +61,6 @@ def scene_status(summary, backend, by_combination=None):
     return out
 
 
-def loosest_tolerance(summary, backend):
-    """(ratio, check, tolerance) of the check whose tolerance is the largest multiple of the
-    median tolerance the other non-reference backends have for it, or None."""
-    others = {}
-    for c in summary["checks"]:
-        if c["backend"] not in (backend, summary["reference"]) and c["status"] != "left_out" and c.get("tolerance"):
-            others.setdefault(c["check"], {})[c["backend"]] = c["tolerance"]
-    worst = None
-    for c in summary["checks"]:
-        if c["backend"] != backend or c["status"] == "left_out" or c.get("comparison") != "<=":
-            continue
-        values = sorted(others.get(c["check"], {}).values())
-        if not values or not c.get("tolerance"):
-            continue
-        median = values[len(values) // 2]
-        if median > 0 and (worst is None or c["tolerance"] / median > worst[0]):
-            worst = (c["tolerance"] / median, c["check"], c["tolerance"])
-    return worst
-
-
-def largest_value(summary, backend, check):
-    values = [(c["value"], c["scene"]) for c in summary["checks"]
-              if c["backend"] == backend and c["check"] == check and c["status"] != "left_out"
-              and isinstance(c.get("value"), (int, float))]
-    return max(values, default=None)
-
-
-def pressure_offsets(summary, backend):
-    """The largest resolved pressure difference in standard errors, and whether every pressure
-    check of the backend was left out (then the difference is shown, never judged)."""
-    sigmas = [p["sigmas"] for scene in digest.scenes_in_order(summary)
-              for p in digest.statistical_points(summary, scene, "pressure").get(backend, []) if p["resolved"]]
-    checks = [c for c in summary["checks"] if c["backend"] == backend and c["check"] == "pressure"]
-    left_out = bool(checks) and all(c["status"] == "left_out" for c in checks)
-    return (max(sigmas) if sigmas else None), left_out
-
-
 def verdict(summary, row, aliases, by_combination=None, cheapest=None):
     """{'backend', 'verdict', 'trusted', 'not_for', 'cost', 'failed', 'anchor'} for one digest row;
     `by_combination` (digest.combinations) and `cheapest` (cheapest_by_scene), the same for every
@@ -114,16 +79,18 @@ def verdict(summary, row, aliases, by_combination=None, cheapest=None):
         parts.append(f"passes {row['pass']} checks")
     if b in aliases:
         parts.append(f"the same numbers as {aliases[b]}, bit for bit")
-    loose = loosest_tolerance(summary, b) if b != summary["reference"] else None
-    if loose and loose[0] >= 5:
-        parts.append(f"against its own loose tolerance: {loose[1].replace('_', ' ')} ≤ {loose[2]:.3g}, "
-                     f"{loose[0]:.0f}× the other backends'")
-    drift = largest_value(summary, b, "energy_drift")
-    if drift and drift[0] >= 0.01:
-        parts.append(f"energy drift up to {100 * drift[0]:.3g} % ({drift[1]})")
-    sigmas, left_out = pressure_offsets(summary, b)
-    if sigmas is not None and (left_out or not digest.facts(summary, b).get("stepping_rule")) and sigmas >= 3:
-        parts.append(f"gas pressure off by up to {sigmas:.0f} SE" + (" (that check is left out)" if left_out else ""))
+    named = summary["verdicts"].get(b, {})  # what `collide validate` decided to name (verdict_facts.h)
+    loose = named.get("loosest_tolerance")
+    if loose and loose["named"]:
+        parts.append(f"against its own loose tolerance: {loose['check'].replace('_', ' ')} ≤ {loose['tolerance']:.3g}, "
+                     f"{loose['ratio']:.0f}× the other backends'")
+    drift = named.get("largest_energy_drift")
+    if drift and drift["named"]:
+        parts.append(f"energy drift up to {100 * drift['value']:.3g} % ({drift['scene']})")
+    pressure = named.get("pressure_offset")
+    if pressure and pressure["named"]:
+        parts.append(f"gas pressure off by up to {pressure['sigmas']:.0f} SE" +
+                     (" (that check is left out)" if pressure["left_out"] else ""))
     not_for = []
     if failed:
         not_for.append("fails on " + ", ".join(failed))

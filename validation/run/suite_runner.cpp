@@ -27,6 +27,7 @@
 #include "validation/run/progress.h"
 #include "validation/plan/scene_parameters.h"
 #include "validation/summary/summary_writer.h"
+#include "validation/explain/report_jumps.h"
 
 namespace collide::validation {
 
@@ -207,6 +208,20 @@ void check_output_places(const std::string& dir, const std::vector<CaseSpec>& sp
     }
 }
 
+// The energy jumps of the drawn cases, explained here, where the solvers run anyway
+// (report_jumps.h): each explanation reruns its case up to the jump. `collide report` only reads
+// them from summary.json; a report of results someone sent runs no program of theirs.
+// `available` are the backends run_suite was given (explain_case plans the suite again, variants
+// included: the selected backends would plan each variant twice).
+nlohmann::json explain_energy_jumps(const Suite& suite, const std::vector<BackendInfo>& available,
+                                    const SuiteOutcome& outcome, const RunnerOptions& options) {
+    const std::vector<DrawnCase> drawn = cases_to_explain(outcome.cases, outcome.checks, outcome.event_driven);
+    if (options.progress && !drawn.empty())
+        std::fprintf(options.progress, "looking for energy jumps in %zu drawn case(s), explaining each one found\n",
+                     drawn.size());
+    return report_energy_jumps(options.output_dir, drawn, &suite, "", available, outcome.jobs)["jumps"];
+}
+
 }  // namespace
 
 int default_jobs() { return std::max(1u, std::thread::hardware_concurrency()); }
@@ -305,6 +320,7 @@ SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& avail
     outcome.physics = compare_with_physics(suite, outcome.cases, [&](const CaseSpec& c) -> const Scene& {
         return case_scenes.scene(c);
     });
+    outcome.energy_jumps = explain_energy_jumps(suite, available, outcome, options);
     outcome.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     // summary.json last: its presence says the run is over, and no process of the suite is left

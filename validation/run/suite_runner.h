@@ -2,7 +2,8 @@
 // an isolated child process, judges the results and writes the summary (summary.json), the
 // JUnit file (junit.xml) and one HDF5 file per case into the output directory:
 //
-//   <out>/summary.json     everything the report needs: cases, checks, work-precision, provenance
+//   <out>/summary.json     everything the report needs: cases, checks, work-precision, provenance,
+//                          the energy jumps explained (the report runs no solver itself)
 //   <out>/junit.xml        one testcase per (case, check), for CI systems
 //   <out>/cases/<id>.toml  each case's measurements (read back by --resume and the report)
 //   <out>/cases/<id>.log   what the case's process printed
@@ -13,6 +14,8 @@
 #include <map>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "validation/run/case_dispatch.h"
 #include "validation/run/case_result.h"
@@ -47,6 +50,7 @@ struct SuiteOutcome {
     std::map<std::string, std::string> execution;  // ranks, hosts, jobs per rank (summary provenance)
     std::map<std::string, std::string> precision;  // backend -> "double", "float", ... (BackendInfo)
     std::map<std::string, bool> event_driven;      // backend -> BackendInfo::event_driven
+    nlohmann::json energy_jumps = nlohmann::json::array();  // report_jumps.h, explained after judging
     std::size_t count(CheckStatus s) const;
     std::size_t physics_failures() const;
     bool passed() const { return count(CheckStatus::fail) == 0 && physics_failures() == 0; }

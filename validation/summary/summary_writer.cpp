@@ -19,6 +19,7 @@
 #include "validation/models/bias_fit.h"
 #include "validation/models/statistics_bias_model.h"
 #include "validation/summary/drawn_cases.h"
+#include "validation/summary/verdict_facts.h"
 
 namespace collide::validation {
 namespace {
@@ -382,6 +383,61 @@ Json cases_json(const Suite& suite, const SuiteOutcome& outcome) {
     return out;
 }
 
+Json thresholds_json(const VerdictThresholds& t) {
+    Object o;
+    o.number("loose_tolerance_ratio", t.loose_tolerance_ratio).number("energy_drift", t.energy_drift)
+        .number("pressure_sigmas", t.pressure_sigmas);
+    return o.json();
+}
+
+// What each backend's verdict names (verdict_facts.h): the report words it, deciding nothing.
+Json verdicts_json(const Suite& suite, const SuiteOutcome& outcome) {
+    std::map<std::string, bool> stepping_rule;
+    for (const auto& r : outcome.cases) stepping_rule[r.spec.backend] = follows_stepping_rules(r.spec.backend);
+    Object out;
+    for (const auto& [backend, f] : verdict_facts(suite.reference, outcome.checks, outcome.work_precision,
+                                                   suite.verdicts, stepping_rule)) {
+        Object o;
+        if (f.loosest_tolerance) {
+            Object l;
+            l.number("ratio", f.loosest_tolerance->ratio).text("check", f.loosest_tolerance->check)
+                .number("tolerance", f.loosest_tolerance->tolerance).boolean("named", f.loosest_tolerance->named);
+            o.field("loosest_tolerance", l.json());
+        } else {
+            o.field("loosest_tolerance", nullptr);
+        }
+        if (f.largest_energy_drift) {
+            Object d;
+            d.number("value", f.largest_energy_drift->value).text("scene", f.largest_energy_drift->scene)
+                .boolean("named", f.largest_energy_drift->named);
+            o.field("largest_energy_drift", d.json());
+        } else {
+            o.field("largest_energy_drift", nullptr);
+        }
+        const PressureOffset& p = f.pressure_offset;
+        Object q;
+        q.field("sigmas", p.sigmas ? Json(*p.sigmas) : Json(nullptr)).boolean("left_out", p.left_out)
+            .boolean("named", p.named);
+        o.field("pressure_offset", q.json());
+        out.field(backend, o.json());
+    }
+    return out.json();
+}
+
+// A stability suite's unexpected cases (stability.h), none for another suite (it classifies none).
+Json unexpected_json(const Suite& suite, const SuiteOutcome& outcome) {
+    Json out = Json::array();
+    if (suite.stability)
+        for (const std::string& line : unexpected_outcomes(outcome.cases, outcome.classifications)) out.push_back(line);
+    return out;
+}
+
+Json outcome_order_json() {
+    Json out = Json::array();
+    for (Outcome o : outcome_precedence) out.push_back(to_string(o));
+    return out;
+}
+
 }  // namespace
 
 void write_summary_json(const Suite& suite, const SuiteOutcome& outcome, const std::string& path) {
@@ -421,7 +477,10 @@ void write_summary_json(const Suite& suite, const SuiteOutcome& outcome, const s
         .field("work_precision", array(outcome.work_precision, line_json))
         .field("bias_fits", array(fit_bias_constants(outcome.work_precision), bias_fit_json))
         .field("costs", costs_json(suite, outcome))
-        .field("physics", physics_json(outcome.physics));
+        .field("physics", physics_json(outcome.physics))
+        .field("verdict_thresholds", thresholds_json(suite.verdicts)).field("verdicts", verdicts_json(suite, outcome))
+        .field("unexpected_outcomes", unexpected_json(suite, outcome)).field("outcome_order", outcome_order_json())
+        .field("energy_jumps", Json::parse(outcome.energy_jumps.dump()));  // report_jumps.h
     // Bytes that are not UTF-8 (in a path or a diagnostic) are replaced, not fatal: the summary
     // of a suite that ran for hours must still be written.
     write_file_atomically(path, root.json().dump(1, ' ', false, Json::error_handler_t::replace) + "\n");
