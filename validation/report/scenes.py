@@ -13,11 +13,12 @@ import animations
 import digest
 import figures
 import progress
+from safe_files import safe_output  # the input guard: no FIFO waited on
 
 
 def scene_box(path):
     try:
-        with open(path, "rb") as f:
+        with safe_output.open_input(path, "rb") as f:
             return tomllib.load(f).get("world", {}).get("box")
     except (OSError, tomllib.TOMLDecodeError):
         return None
@@ -39,7 +40,7 @@ def load_energy_jumps(directory):
     path = os.path.join(directory, "report", "energy_jumps.json")
     if not os.path.exists(path):
         return []
-    with open(path, encoding="utf-8") as f:
+    with safe_output.open_input(path, "r", encoding="utf-8") as f:
         return json.load(f)["jumps"]
 
 

@@ -15,6 +15,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.patches import Patch  # noqa: E402
 
 import figures  # noqa: E402
+from safe_files import safe_output  # noqa: E402  (the input guard: no FIFO waited on)
 
 # Most severe first (the classification's precedence); one fixed colour each.
 OUTCOMES = ["crash", "hang", "nan", "stalled", "tunnelling", "excessive_overlap", "energy_growth", "stable", "left_out"]
@@ -38,7 +39,7 @@ def scene_dt(summary, scene):
     path = summary.get("scene_files", {}).get(scene)
     if path not in _SCENE_DT:
         try:
-            with open(path, "rb") as f:
+            with safe_output.open_input(path, "rb") as f:
                 _SCENE_DT[path] = tomllib.load(f).get("run", {}).get("dt")
         except (OSError, TypeError, tomllib.TOMLDecodeError):
             _SCENE_DT[path] = None
