@@ -1,11 +1,13 @@
 // Command-line checks of the files and directories a command reads, naming the system's own
-// cause (core/io/output_file.h, input_path_problem): CLI11's ExistingFile says "File does not
-// exist" for a loop of symbolic links, a path too long or a directory without permission.
+// cause (core/io/input_file.h, input_path_problem): CLI11's ExistingFile says "File does not
+// exist" for a loop of symbolic links, a path too long or a directory without permission, and
+// lets a FIFO through (the command then waits on it for good). Each input is remembered, so
+// that the output guard refuses to write over it (`collide export run.h5 --out run.h5`).
 #pragma once
 
 #include <CLI/CLI.hpp>
 
-#include "core/io/output_file.h"
+#include "core/io/input_file.h"
 
 namespace collide {
 
@@ -13,7 +15,9 @@ inline CLI::Validator readable_input(bool directory) {
     return CLI::Validator(
         [directory](std::string& path) {
             const std::string why = input_path_problem(path, directory);
-            return why.empty() ? std::string() : path + ": " + why;
+            if (!why.empty()) return path + ": " + why;
+            remember_input(path);
+            return std::string();
         },
         directory ? "DIR" : "FILE", directory ? "readable directory" : "readable file");
 }
