@@ -1,6 +1,7 @@
 #include "external_solver.h"
 
 #include <stdlib.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -9,6 +10,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/io/fd_io.h"
+#include "core/io/output_file.h"
+#include "core/io/shell_quote.h"
 #include "core/numerics/number_text.h"
 #include "core/numerics/target_time.h"
 #include "npy.h"
@@ -61,10 +65,9 @@ std::string read_text(const std::string& path, std::uintmax_t limit) {
 // A request file in the call's private directory, deleted after the call: no atomic rename or
 // fsync is needed (nothing else can see it), only a complete write.
 void write_request_file(const std::string& path, const std::string& bytes) {
-    std::ofstream out(path, std::ios::binary);
-    out.write(bytes.data(), std::streamsize(bytes.size()));
-    out.close();
-    if (!out) throw std::runtime_error(path + ": could not write the request (disk full?)");
+    const int fd = open_output_stream(path);  // the output guard (core/io/output_file.h)
+    const bool written = write_fully(fd, bytes.data(), bytes.size());
+    if (::close(fd) != 0 || !written) throw std::runtime_error(path + ": could not write the request (disk full?)");
 }
 
 std::string times_text(const std::vector<double>& times) {
@@ -342,10 +345,10 @@ private:
     // or of a Python class's file: which version of the program produced the result.
     std::string file_hashes() const {
         std::vector<std::string> words;
-        std::istringstream in(spec_.command);
         // A class's command is the interpreter and collide's runner: its own file is what counts.
+        // The words as the shell splits them: a quoted path with a space or a quote is one file.
         if (spec_.python_class.empty()) {
-            for (std::string w; in >> w;) words.push_back(w);
+            words = shell_words(spec_.command);
         } else {
             const std::string module = spec_.python_class.substr(0, spec_.python_class.rfind(':'));
             std::string file = module;
@@ -356,9 +359,7 @@ private:
             words.push_back(file);
         }
         std::string out;
-        for (std::string w : words) {
-            w.erase(std::remove(w.begin(), w.end(), '\''), w.end());
-            w.erase(std::remove(w.begin(), w.end(), '"'), w.end());
+        for (const std::string& w : words) {
             fs::path p(w);
             if (p.is_relative() && !spec_.directory.empty()) p = fs::path(spec_.directory) / p;
             std::error_code ec;
