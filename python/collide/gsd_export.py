@@ -22,7 +22,6 @@ What the schema fixes, and how a run maps onto it:
   log/collide/time     the simulation time, float64, exactly as in the run file
 """
 
-import os
 import sys
 
 import h5py
