@@ -13,12 +13,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <sstream>
 #include <fstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "bench_suite.h"
+#include "core/io/output_file.h"
 #include "core/numerics/median.h"
 
 namespace collide::bench {
@@ -39,15 +41,21 @@ void run_this_program(const std::vector<std::string>& args, const std::string& l
     argv.push_back(self);
     for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
+    // The log through the output guard (core/io/output_file.h), appended to by every run.
+    const int out = open_output_stream(log, StreamStart::as_it_is);
+    ::fcntl(out, F_SETFL, O_APPEND);
     std::fflush(nullptr);
     const pid_t pid = ::fork();
-    if (pid < 0) throw std::runtime_error("workflow: cannot start a process");
+    if (pid < 0) {
+        ::close(out);
+        throw std::runtime_error("workflow: cannot start a process");
+    }
     if (pid == 0) {
-        const int out = ::open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
-        if (out >= 0) ::dup2(out, STDOUT_FILENO), ::dup2(out, STDERR_FILENO);
+        ::dup2(out, STDOUT_FILENO), ::dup2(out, STDERR_FILENO);
         ::execv("/proc/self/exe", argv.data());
         ::_exit(127);
     }
+    ::close(out);
     int status = 0;
     while (::waitpid(pid, &status, 0) < 0) {
     }
@@ -58,10 +66,12 @@ void run_this_program(const std::vector<std::string>& args, const std::string& l
 // A two-scene suite for --quick (the smoke test): step and event on two disks.
 std::string write_quick_suite(const std::string& dir, const std::string& scene_dir) {
     const std::string path = dir + "/quick.toml";
-    std::ofstream(path) << "name = \"workflow-quick\"\nbackends = [\"step\"]\nreference = \"event\"\nseeds = [1]\n"
-                           "warmup_fraction = 0\n\n[[scene]]\nname = \"head_on_equal\"\npath = \""
-                        << scene_dir << "/head_on_equal.toml\"\n\n[[scene]]\nname = \"glancing\"\npath = \""
-                        << scene_dir << "/glancing.toml\"\n";
+    std::ostringstream text;
+    text << "name = \"workflow-quick\"\nbackends = [\"step\"]\nreference = \"event\"\nseeds = [1]\n"
+            "warmup_fraction = 0\n\n[[scene]]\nname = \"head_on_equal\"\npath = \""
+         << scene_dir << "/head_on_equal.toml\"\n\n[[scene]]\nname = \"glancing\"\npath = \""
+         << scene_dir << "/glancing.toml\"\n";
+    write_file_atomically(path, text.str());
     return path;
 }
 

@@ -14,7 +14,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/io/fd_io.h"
 #include "core/io/output_file.h"
+#include "core/io/path_causes.h"
 #include "core/numerics/number_text.h"
 #include "core/numerics/target_time.h"
 #include "core/text/printable.h"
@@ -83,17 +85,16 @@ std::string answer_file_problem(const std::string& path, const std::string& name
         if (::lstat(path.c_str(), &link) == 0) return "wrote " + name + " as a symbolic link to nothing";
         return "wrote no " + name;
     }
-    if (!S_ISREG(st.st_mode)) return "wrote " + name + " as " + file_kind(st.st_mode) + ", not a regular file";
+    if (!S_ISREG(st.st_mode)) return "wrote " + name + " as " + path_causes::kind_of(st.st_mode) + ", not a regular file";
     return "";
 }
 
 // A request file in the call's private directory, deleted after the call: no atomic rename or
 // fsync is needed (nothing else can see it), only a complete write.
 void write_request_file(const std::string& path, const std::string& bytes) {
-    std::ofstream out(path, std::ios::binary);
-    out.write(bytes.data(), std::streamsize(bytes.size()));
-    out.close();
-    if (!out) throw std::runtime_error(path + ": could not write the request (disk full?)");
+    const int fd = open_output_stream(path);  // the output guard (core/io/output_file.h)
+    const bool written = write_fully(fd, bytes.data(), bytes.size());
+    if (::close(fd) != 0 || !written) throw std::runtime_error(path + ": could not write the request (disk full?)");
 }
 
 std::string times_text(const std::vector<double>& times) {
@@ -393,7 +394,7 @@ std::string request_root_problem() {
         return named + ": outside solvers get their request directories there, and it " +
                (errno == ENOENT ? std::string("does not exist") : std::string(std::strerror(errno))) + advice;
     if (!S_ISDIR(st.st_mode))
-        return named + ": outside solvers get their request directories there, and it is " + file_kind(st.st_mode) +
+        return named + ": outside solvers get their request directories there, and it is " + path_causes::kind_of(st.st_mode) +
                ", not a directory" + advice;
     if (::access(root.c_str(), W_OK | X_OK) != 0)
         return named + ": outside solvers get their request directories there, and it cannot be written (" +

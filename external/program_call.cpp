@@ -1,6 +1,7 @@
 #include "program_call.h"
 
 #include "core/process/descendants.h"
+#include "core/io/output_file.h"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -21,13 +22,11 @@ namespace {
 
 // In the child between fork and exec: only async-signal-safe calls (no allocation), so every
 // string is made before the fork.
-[[noreturn]] void exec_child(const char* script, const char* argument, const char* directory, const char* output_path,
-                             pid_t parent) {
+[[noreturn]] void exec_child(const char* script, const char* argument, const char* directory, int out, pid_t parent) {
     ::setpgid(0, 0);                      // its own group: the limit kills its children too
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);   // and it dies with the case process
     if (::getppid() != parent) ::_exit(125);  // the parent died before prctl took effect
     const int null_in = ::open("/dev/null", O_RDONLY);
-    const int out = ::open(output_path, O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (null_in < 0 || out < 0 || ::chdir(directory) != 0) ::_exit(126);
     ::dup2(null_in, 0);
     ::dup2(out, 1);
@@ -75,10 +74,17 @@ ProgramOutcome call_program(const std::string& command, const std::string& argum
     const pid_t parent = ::getpid();
     const SubreaperScope adopt_orphans;  // the program's orphans are adopted here, not by init
     const std::set<pid_t> children_before = child_processes();
+    // Opened here through the output guard (core/io/output_file.h), not in the child, which
+    // may not allocate: a link or a FIFO at the output's place is refused, not written into.
+    const int out = open_output_stream(output_path);
     const auto start = Clock::now();
     const pid_t pid = ::fork();
-    if (pid < 0) throw std::runtime_error(std::string("fork failed: ") + std::strerror(errno));
-    if (pid == 0) exec_child(script.c_str(), argument.c_str(), directory.c_str(), output_path.c_str(), parent);
+    if (pid < 0) {
+        ::close(out);
+        throw std::runtime_error(std::string("fork failed: ") + std::strerror(errno));
+    }
+    if (pid == 0) exec_child(script.c_str(), argument.c_str(), directory.c_str(), out, parent);
+    ::close(out);
     ::setpgid(pid, pid);  // also here, so the group exists before any kill below
     ProgramOutcome outcome;
     int status = 0;

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <vector>
 
+#include "core/io/shell_quote.h"
 #include "external/sha256.h"
 
 namespace collide::external {
@@ -19,12 +20,8 @@ namespace {
 // The words of the command that may name files; for a Python class, its module's file (the
 // command is then the interpreter and collide's runner: the class's own file is what counts).
 std::vector<std::string> candidate_words(const ExternalSolverSpec& spec) {
-    std::vector<std::string> words;
-    if (spec.python_class.empty()) {
-        std::istringstream in(spec.command);
-        for (std::string w; in >> w;) words.push_back(w);
-        return words;
-    }
+    // The words as the shell splits them: a quoted path with a space or a quote is one file.
+    if (spec.python_class.empty()) return shell_words(spec.command);
     std::string file = spec.python_class.substr(0, spec.python_class.rfind(':'));
     if (file.size() < 3 || file.compare(file.size() - 3, 3, ".py") != 0) {
         std::replace(file.begin(), file.end(), '.', '/');

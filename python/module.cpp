@@ -205,7 +205,13 @@ Scene with_overrides(const Scene& scene, const py::dict& changes) {
 void export_run(const PathArgument& run, const PathArgument& out, const std::string& format) {
     const ExportFormat f = export_format(format, out);
     if (f == ExportFormat::gsd) throw std::invalid_argument("_export: gsd is written by collide.gsd_export");
-    write_file_atomically(out, f == ExportFormat::xdmf ? xdmf_text(run, out) : xyz_text(run));
+    check_output_is_not_input(out, run);  // the program's command line does this by remembering its inputs
+    if (f == ExportFormat::xdmf) {
+        check_output_is_not_input(xdmf_frames_path(out), run);
+        write_xdmf(run, out);
+    } else {
+        write_file_atomically(out, xyz_text(run));
+    }
 }
 
 // What `collide export` checks before it writes: the output path (core/io/output_file.h) and the
@@ -213,6 +219,7 @@ void export_run(const PathArgument& run, const PathArgument& out, const std::str
 // writer calls it first, as the program does.
 void check_export(const PathArgument& run, const PathArgument& out) {
     check_output_path(out);
+    check_output_is_not_input(out, run);
     require_frames(run);
 }
 

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "core/io/input_file.h"
 #include "core/text/printable.h"
 #include "core/io/progress_line.h"
 #include "apps/input_paths.h"
@@ -34,10 +35,14 @@ struct ExplainArgs {
 std::string suite_of(const ExplainArgs& args) {
     if (!args.suite.empty()) return args.suite;
     const std::string path = args.dir + "/summary.json";
-    std::ifstream in(path);
-    if (!in) throw std::runtime_error(path + ": not found; expected the output directory of `collide validate`");
+    std::string text;
+    try {  // the input guard (core/io/input_file.h): a FIFO or a device is refused, not waited on
+        text = read_input_file(path, max_text_input_bytes);
+    } catch (const InputFileError& e) {
+        throw std::runtime_error(path + ": " + e.cause() + "; expected the output directory of `collide validate`");
+    }
     try {
-        return nlohmann::json::parse(in).at("suite_file").get<std::string>();
+        return nlohmann::json::parse(text).at("suite_file").get<std::string>();
     } catch (const nlohmann::json::exception& e) {
         throw std::runtime_error(path + ": no suite_file to rebuild the case from (" + std::string(e.what()) +
                                  "); name the suite with --suite");

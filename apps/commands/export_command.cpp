@@ -32,13 +32,15 @@ void write_gsd(const std::string& run, const std::string& out) {
 
 void execute(const ExportArgs& args) {
     const ExportFormat format = export_format(args.format, args.out);
-    check_output_path(args.out);  // a device, a FIFO, a link to nothing: refused before any work
+    // A device, a FIFO, a link to nothing, the run file itself: refused before any work.
+    check_output_path(args.out);
+    if (format == ExportFormat::xdmf) check_output_path(xdmf_frames_path(args.out));
     require_frames(args.run);     // every frame read and checked (core/io/run_reader.h) before writing
     if (format == ExportFormat::gsd) write_gsd(args.run, args.out);
-    else
-        write_file_atomically(
-            args.out, format == ExportFormat::xdmf ? xdmf_text(args.run, args.out) : xyz_text(args.run));
+    else if (format == ExportFormat::xdmf) write_xdmf(args.run, args.out);
+    else write_file_atomically(args.out, xyz_text(args.run));
     std::printf("output    %s (%s)\n", args.out.c_str(), to_string(format));
+    if (format == ExportFormat::xdmf) std::printf("data      %s (keep it beside the XDMF file)\n", xdmf_frames_path(args.out).c_str());
 }
 
 }  // namespace
@@ -49,7 +51,7 @@ void add_export_command(CLI::App& app) {
         "export", "Write a run's frames for ParaView/VisIt (XDMF), OVITO/freud/HOOMD (GSD) or ASE/OVITO (extended XYZ)");
     cmd->add_option("run", args->run, "Run file (HDF5, written with `collide run ... --frames`)")
         ->required()->check(readable_file());
-    cmd->add_option("-o,--out", args->out, "Output file: .xdmf (beside the run file it points into), .gsd or .xyz")
+    cmd->add_option("-o,--out", args->out, "Output file: .xdmf (its data written beside it as NAME.frames.h5), .gsd or .xyz")
         ->required();
     cmd->add_option("-f,--format", args->format, "xdmf, gsd or xyz (default: from the extension of --out)")
         ->check(CLI::IsMember({"xdmf", "gsd", "xyz"}));

@@ -22,6 +22,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/io/input_file.h"
 #include "apps/python_script.h"
 #include "apps/resource_path.h"
 #include "apps/input_paths.h"
@@ -37,10 +38,9 @@ namespace {
 // (digest.load_summary).
 nlohmann::json read_summary(const std::string& dir) {
     const std::string path = dir + "/summary.json";
-    std::ifstream in(path);
     nlohmann::json summary;
-    try {
-        summary = nlohmann::json::parse(in);
+    try {  // through the input guard (core/io/input_file.h): a FIFO or a device is refused
+        summary = nlohmann::json::parse(read_input_file(path, max_text_input_bytes));
     } catch (const nlohmann::json::exception& e) {
         throw std::runtime_error(path + ": not valid JSON (" + e.what() + ")");
     }
@@ -145,7 +145,7 @@ void check_case_files(const std::string& dir, const nlohmann::json& summary) {
 }
 
 // The files the renderer writes, checked before it starts (core/io/output_file.h; the renderer
-// checks them again with validation/report/safe_output.py, its Python twin).
+// checks them again with python/collide/safe_output.py, its Python twin).
 void check_report_outputs(const std::string& report_dir) {
     check_output_directory(report_dir);
     if (!std::filesystem::is_directory(report_dir)) return;  // created empty by the renderer
@@ -157,6 +157,9 @@ void execute(const std::string& dir) {
     if (!std::filesystem::exists(dir + "/summary.json"))
         throw std::runtime_error(dir + "/summary.json: not found; expected the output directory of `collide validate`");
     check_report_outputs(dir + "/report");  // first: refused at once, before reading every run file
+    // A kill during the summary's rename leaves its temporary beside it: removed, and said.
+    for (const std::string& name : remove_stale_temporaries(dir))
+        std::fprintf(stderr, "report: removed %s/%s, a temporary file an interrupted run left\n", dir.c_str(), name.c_str());
     const nlohmann::json summary = read_summary(dir);
     check_case_files(dir, summary);  // every record's checksum, once: the renderer does not check them again
     const std::string script = resource_path("validation/report") + "/make_report.py";

@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 
+#include "core/io/input_file.h"
 #include "core/text/printable.h"
 #include "core/io/progress_line.h"
 #include "commands.h"
@@ -108,6 +109,7 @@ void print_summary(const Scene& scene, const std::string& backend, const RunResu
 // needed), the scene, whether the backend supports it, and whether the output can be written.
 // A failure at any point leaves no output file and an existing one untouched (RunWriter).
 void execute(const RunArgs& args) {
+    remember_input(args.scene_path);  // `--out` naming the scene file is refused (core/io/input_file.h)
     const BackendInfo& backend = find_backend(args.backend);
     const Scene scene = load_scene_with_overrides(args.scene_path, args.overrides);
     require_support(backend, scene);

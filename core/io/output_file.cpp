@@ -5,8 +5,11 @@
 #include "core/io/output_file.h"
 
 #include "core/io/fd_io.h"
+#include "core/io/input_file.h"
+#include "core/io/path_causes.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <limits.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -16,6 +19,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <vector>
 
 namespace collide {
 namespace {
@@ -26,24 +30,9 @@ namespace fs = std::filesystem;
     throw OutputFileError("cannot write '" + path + "': " + why);
 }
 
-std::string kind_of(mode_t mode) {
-    if (S_ISCHR(mode)) return "a character device";
-    if (S_ISBLK(mode)) return "a block device";
-    if (S_ISFIFO(mode)) return "a FIFO";
-    if (S_ISSOCK(mode)) return "a socket";
-    if (S_ISDIR(mode)) return "a directory";
-    if (S_ISREG(mode)) return "a regular file";
-    return "not a regular file";
-}
-
-std::string too_long() {
-    return "the path is too long (" + std::string(std::strerror(ENAMETOOLONG)) + ": at most " +
-           std::to_string(NAME_MAX) + " bytes a name and " + std::to_string(PATH_MAX - 1) + " bytes a path)";
-}
-
-std::string link_loop(const std::string& what) {
-    return what + " is a loop of symbolic links (" + std::strerror(ELOOP) + "): it never reaches a file";
-}
+using path_causes::kind_of;
+using path_causes::link_loop;
+using path_causes::too_long;
 
 // Why `directory` (the folder a file goes into, or an output directory itself) cannot be
 // reached, from the errno of a failed stat(); "" where the caller decides (ENOENT).
@@ -75,6 +64,12 @@ void check_directory_of(const std::string& path, const std::string& directory) {
         refuse(path, "cannot create a file in directory '" + directory + "' (" + std::strerror(errno) + ")");
 }
 
+// Writing over an input would destroy it before (or while) it is read.
+[[noreturn]] void refuse_input(const std::string& path, const std::string& input) {
+    refuse(path, "it is the input '" + input +
+                     "' (the same file); writing it would destroy the input: choose another output");
+}
+
 // What a symbolic link at `path` leads to; refuses a link to nothing and a loop of links.
 struct stat follow_link(const std::string& path) {
     struct stat st {};
@@ -102,6 +97,7 @@ void check_existing(const std::string& path) {
     if (!S_ISREG(st.st_mode))
         refuse(path, "it exists and is not a regular file (" + kind_of(st.st_mode) +
                          "); collide writes only to a new or a regular file");
+    if (const std::string input = remembered_input_at(path); !input.empty()) refuse_input(path, input);
 }
 
 // A symbolic link is followed, so that the rename replaces the file it points to and the
@@ -122,31 +118,6 @@ std::string temporary_path_for(const std::string& target) {
 
 }  // namespace
 
-std::string input_path_problem(const std::string& path, bool directory) {
-    struct stat st {};
-    if (::stat(path.c_str(), &st) != 0) {
-        const int error = errno;
-        struct stat link {};
-        if (error == ENOENT && ::lstat(path.c_str(), &link) == 0 && S_ISLNK(link.st_mode)) {
-            std::error_code ignored;
-            return "a symbolic link to nothing ('" + fs::read_symlink(path, ignored).string() + "' does not exist)";
-        }
-        switch (error) {
-            case ENOENT: return "does not exist";
-            case ENAMETOOLONG: return too_long();
-            case ELOOP: return link_loop("it");
-            case ENOTDIR: return "a part of the path is not a directory";
-            default: return std::strerror(error);
-        }
-    }
-    if (directory && !S_ISDIR(st.st_mode)) return "not a directory (it is " + kind_of(st.st_mode) + ")";
-    if (!directory && S_ISDIR(st.st_mode)) return "a directory, not a file";
-    if (::access(path.c_str(), R_OK) != 0) return "cannot be read (" + std::string(std::strerror(errno)) + ")";
-    return "";
-}
-
-std::string file_kind(mode_t mode) { return kind_of(mode); }
-
 void check_output_path(const std::string& path) {
     if (path.empty()) throw OutputFileError("cannot write the output: the file name is empty");
     if (!fs::path(path).has_filename()) refuse(path, "the path names a directory, not a file");
@@ -154,6 +125,43 @@ void check_output_path(const std::string& path) {
     check_existing(path);
     const std::string target = followed(path);
     if (target != path) check_directory_of(path, directory_of(target));
+}
+
+void check_output_is_not_input(const std::string& output, const std::string& input) {
+    if (same_file(output, input)) refuse_input(output, input);
+}
+
+void check_output_stream_path(const std::string& path) {
+    check_output_path(path);
+    struct stat st {};
+    if (::lstat(path.c_str(), &st) == 0 && S_ISLNK(st.st_mode))
+        refuse(path, "it is a symbolic link; collide writes its own logs and locks only as regular files, "
+                     "never through a link");
+}
+
+int open_output_stream(const std::string& path, StreamStart start) {
+    check_output_stream_path(path);
+    struct stat st {};
+    // O_NOFOLLOW and O_NONBLOCK: what was put at the path after the check (a link, a FIFO
+    // without a reader) is refused below, not followed or waited on.
+    const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_NONBLOCK | O_NOCTTY | O_CLOEXEC, 0666);
+    if (fd < 0) {
+        const int error = errno;
+        refuse(path, error == ELOOP ? std::string("it is a symbolic link; collide never writes through one")
+                                    : std::string(std::strerror(error)));
+    }
+    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        ::close(fd);
+        refuse(path, "it exists and is not a regular file (" + kind_of(st.st_mode) +
+                         "); collide writes only to a new or a regular file");
+    }
+    ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+    if (start == StreamStart::empty && ::ftruncate(fd, 0) != 0) {
+        const int error = errno;
+        ::close(fd);
+        refuse(path, std::strerror(error));
+    }
+    return fd;
 }
 
 void check_output_directory(const std::string& path) {
@@ -171,6 +179,35 @@ void check_output_directory(const std::string& path) {
         refuse(path, "it exists and is not a directory (it is " + kind_of(st.st_mode) + "); expected an output directory");
     if (::access(path.c_str(), W_OK | X_OK) != 0)
         refuse(path, "cannot create files in directory '" + path + "' (" + std::strerror(errno) + ")");
+}
+
+namespace {
+
+// The writer's process id in a temporary's name ".NAME.tmp-PID-K"; 0 when it is none.
+pid_t writer_of_temporary(const std::string& name) {
+    const std::size_t mark = name.rfind(".tmp-");
+    if (name.empty() || name[0] != '.' || mark == std::string::npos) return 0;
+    const std::size_t dash = name.find('-', mark + 5);
+    if (dash == std::string::npos || dash == mark + 5 || dash + 1 == name.size()) return 0;
+    const std::string digits = name.substr(mark + 5, dash - mark - 5);
+    if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) return 0;
+    return pid_t(std::stol(digits));
+}
+
+}  // namespace
+
+std::vector<std::string> remove_stale_temporaries(const std::string& dir) {
+    std::vector<std::string> removed;
+    std::error_code error;
+    for (const auto& entry : fs::directory_iterator(dir, error)) {
+        const std::string name = entry.path().filename().string();
+        const pid_t writer = writer_of_temporary(name);
+        // A writer that still runs may still rename its temporary into place.
+        if (writer == 0 || writer == ::getpid() || ::kill(writer, 0) == 0 || errno != ESRCH) continue;
+        if (!entry.is_regular_file(error) || entry.is_symlink(error)) continue;
+        if (fs::remove(entry.path(), error)) removed.push_back(name);
+    }
+    return removed;
 }
 
 AtomicOutputFile::AtomicOutputFile(const std::string& path) : path_(path) {

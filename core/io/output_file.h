@@ -1,6 +1,8 @@
 // Every file collide writes (HDF5 runs, case records, summaries, reports, screenshots, GIF,
 // MP4 and PNG strips, benchmark CSV and JSON) goes through this one guard and this one
-// atomic write. docs/refusals.md ("Output paths") lists each refusal and its message.
+// atomic write; the files written as they go (case logs, the lock, an outside solver's files)
+// through the same guard and open_output_stream(). The readers' side: core/io/input_file.h
+// (an output that is one of the command's inputs is refused here too). docs/refusals.md ("Output paths") lists each refusal and its message.
 //
 // The guard, check_output_path(), runs before any work starts. It accepts a path that does
 // not exist yet (in an existing, writable directory), an existing regular file, and a
@@ -23,6 +25,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace collide {
 
@@ -40,17 +43,27 @@ void check_output_path(const std::string& path);
 // symbolic link to one. Throws OutputFileError naming the cause otherwise.
 void check_output_directory(const std::string& path);
 
-// The readers' side of the same guard: why `path` cannot be read as an input file
-// (`directory` false: a scene, a suite, a run file) or an input directory (`directory` true:
-// the results of `collide validate`), from the system's own errno, or "" when it can. The
-// causes: it does not exist, a symbolic link to nothing, a loop of links, the path is too
-// long, a part of it is not a directory, no permission, or it is a directory / not one.
-// (std::filesystem::exists() says "does not exist" for all of these.)
-std::string input_path_problem(const std::string& path, bool directory);
+// Refuses `output` when it names the same file as `input` (device and inode, through links):
+// for writers that are not given their input by the command line (the Python module).
+void check_output_is_not_input(const std::string& output, const std::string& input);
 
-// What a file of this stat() mode is, in the refusals' words: "a FIFO", "a directory",
-// "a character device", "a regular file", ...
-std::string file_kind(mode_t mode);
+// A file written as it goes rather than renamed into place: a case's log (a child's stdout
+// and stderr), the output directory's lock, an outside solver's output and request files. The
+// same refusals as check_output_path, and a symbolic link is refused too (these are collide's
+// own files in its own directories: a `.lock` linked out of the directory would truncate its
+// target). The open itself does not follow a link nor wait on a FIFO put there after the
+// check, and what it opened is checked to be a regular file. Returns a descriptor open for
+// reading and writing (O_CLOEXEC), emptied unless `start` is as_it_is (a lock, which is
+// emptied only once held); throws OutputFileError naming the path and the cause.
+// check_output_stream_path: the checks alone, for a runner that checks its files before it starts.
+enum class StreamStart { empty, as_it_is };
+void check_output_stream_path(const std::string& path);
+int open_output_stream(const std::string& path, StreamStart start = StreamStart::empty);
+
+// Removes from `dir` the temporaries ".NAME.tmp-PID-K" of writers that no longer run (a kill
+// during a write or just before its rename leaves one) and returns their names, for the
+// command to say so (`validate --resume`, `report`). A temporary of a running process stays.
+std::vector<std::string> remove_stale_temporaries(const std::string& dir);
 
 class AtomicOutputFile {
 public:

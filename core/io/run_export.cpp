@@ -1,11 +1,14 @@
 #include "core/io/run_export.h"
 
+#include <cstdint>
 #include <filesystem>
 #include <stdexcept>
 #include <vector>
 
-#include "core/numerics/number_text.h"
+#include "core/io/hdf5_handle.h"
+#include "core/io/output_file.h"
 #include "core/io/run_reader.h"
+#include "core/numerics/number_text.h"
 #include "core/scene/scene_loader.h"
 
 namespace collide {
@@ -58,46 +61,99 @@ std::string xml_escaped(const std::string& text) {
     return out;
 }
 
-// Frame k of a T x N x 2 dataset, or one of its two columns (component 0 or 1), as an XDMF
-// HyperSlab: rows of the start, stride and count of the selection, then the whole dataset.
-std::string hyperslab(const std::string& h5, const char* dataset, std::size_t k, std::size_t t, std::size_t n,
-                      int component, const std::string& indent) {
-    const std::string width = component < 0 ? "2" : "1", first = component < 0 ? "0" : std::to_string(component);
-    const std::string N = std::to_string(n);
-    return indent + "<DataItem ItemType=\"HyperSlab\" Dimensions=\"1 " + N + " " + width + "\" Type=\"HyperSlab\">\n" +
-           indent + "  <DataItem Dimensions=\"3 3\" NumberType=\"Int\" Format=\"XML\">" + std::to_string(k) + " 0 " +
-           first + "  1 1 1  1 " + N + " " + width + "</DataItem>\n" + indent + "  <DataItem Dimensions=\"" +
-           std::to_string(t) + " " + N + " 2\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" + h5 + ":/frames/" +
-           dataset + "</DataItem>\n" + indent + "</DataItem>\n";
+// ---- XDMF: plain per-frame datasets in an HDF5 file beside the XDMF ----------------------
+//
+// Every DataItem names a whole dataset (no HyperSlab, no Function): ParaView 5.11's Xdmf3
+// readers crashed on the HyperSlab items that pointed into the run file, and meshio's
+// TimeSeriesReader refused them; a plain HDF DataItem is read alike by every XDMF reader.
+
+// An N x `columns` array of doubles (row-major) as dataset `name` under `parent`.
+template <typename T>
+void write_dataset(hid_t parent, const std::string& name, const std::vector<T>& values, hsize_t rows, hsize_t columns,
+                   hid_t file_type, hid_t memory_type, const std::string& where) {
+    const hsize_t dims[2] = {rows, columns};
+    Hdf5Handle space = dataspace_handle(checked(H5Screate_simple(columns ? 2 : 1, dims, nullptr), where, "make a dataspace"));
+    Hdf5Handle dataset = dataset_handle(checked(
+        H5Dcreate2(parent, name.c_str(), file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), where,
+        "create dataset " + name));
+    checked(H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), where,
+            "write dataset " + name);
 }
 
-std::string constant_attribute(const std::string& h5, const char* name, std::size_t n) {
-    return "        <Attribute Name=\"" + std::string(name) + "\" AttributeType=\"Scalar\" Center=\"Node\">\n"
-           "          <DataItem Dimensions=\"" + std::to_string(n) + "\" NumberType=\"Float\" Precision=\"8\" "
-           "Format=\"HDF\">" + h5 + ":/particles/" + name + "</DataItem>\n        </Attribute>\n";
+Hdf5Handle make_group(hid_t parent, const std::string& name, const std::string& where) {
+    return group_handle(
+        checked(H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), where, "create group " + name));
 }
 
-// A velocity component of frame k as a scalar attribute. Not one Vector attribute: ParaView's
-// XDMF readers take a Vector as three components, and joining a zero z needs an XDMF Function,
-// whose JOIN interlaces in XDMF 2 but concatenates in XDMF 3; two scalars read the same in every
-// reader (docs/exporting.md shows the Calculator that makes the vector in ParaView).
-std::string velocity_attribute(const std::string& h5, const RunForExport& run, std::size_t k, int component) {
-    return "        <Attribute Name=\"velocity_" + std::string(component == 0 ? "x" : "y") +
-           "\" AttributeType=\"Scalar\" Center=\"Node\">\n" +
-           hyperslab(h5, "velocity", k, run.times.size(), run.radius.size(), component, "          ") +
-           "        </Attribute>\n";
+// (x, y) pairs as (x, y, 0) rows: the XYZ geometry and 3-vectors every reader takes.
+std::vector<double> with_zero_z(const std::vector<double>& xy) {
+    std::vector<double> xyz(xy.size() / 2 * 3, 0.0);
+    for (std::size_t i = 0; i < xy.size() / 2; ++i) xyz[3 * i] = xy[2 * i], xyz[3 * i + 1] = xy[2 * i + 1];
+    return xyz;
 }
 
-// One Uniform grid per output time.
+// The frames file: /particles/{radius, mass, vertex}, /frames/K/{position, velocity}.
+void write_frames_file(const RunForExport& run, const std::string& path) {
+    AtomicOutputFile output(path);  // the guard and the atomic rename of every output
+    {
+        silence_hdf5_error_printing();
+        Hdf5Handle file = file_handle(checked(
+            H5Fcreate(output.temporary_path().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), path, "create the file"));
+        const hsize_t n = run.radius.size();
+        Hdf5Handle particles = make_group(file.get(), "particles", path);
+        write_dataset(particles.get(), "radius", run.radius, n, 0, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, path);
+        write_dataset(particles.get(), "mass", run.mass, n, 0, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, path);
+        std::vector<std::int64_t> vertex(n);
+        for (std::size_t i = 0; i < n; ++i) vertex[i] = std::int64_t(i);
+        write_dataset(particles.get(), "vertex", vertex, n, 1, H5T_STD_I64LE, H5T_NATIVE_INT64, path);
+        Hdf5Handle frames = make_group(file.get(), "frames", path);
+        for (std::size_t k = 0; k < run.times.size(); ++k) {
+            Hdf5Handle frame = make_group(frames.get(), std::to_string(k), path);
+            write_dataset(frame.get(), "position", with_zero_z(run.frame("position", k)), n, 3, H5T_IEEE_F64LE,
+                          H5T_NATIVE_DOUBLE, path);
+            write_dataset(frame.get(), "velocity", with_zero_z(run.frame("velocity", k)), n, 3, H5T_IEEE_F64LE,
+                          H5T_NATIVE_DOUBLE, path);
+        }
+        checked(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), path, "write the file");
+    }
+    output.commit();
+}
+
+std::string data_item(const std::string& dims, const char* type, const std::string& source) {
+    return "<DataItem Dimensions=\"" + dims + "\" NumberType=\"" + type + "\" Precision=\"8\" Format=\"HDF\">" +
+           source + "</DataItem>";
+}
+
+std::string attribute(const char* name, const char* kind, const std::string& item) {
+    return "        <Attribute Name=\"" + std::string(name) + "\" AttributeType=\"" + kind + "\" Center=\"Node\">" +
+           item + "</Attribute>\n";
+}
+
+// One Uniform grid per output time: its own points, and the same points as a "position"
+// attribute for readers that keep the first grid's points (meshio's TimeSeriesReader).
 std::string xdmf_frame(const std::string& h5, const RunForExport& run, std::size_t k) {
-    const std::size_t t = run.times.size(), n = run.radius.size();
-    const std::string N = std::to_string(n);
+    const std::string N = std::to_string(run.radius.size()), frame = h5 + ":/frames/" + std::to_string(k);
+    const std::string points = data_item(N + " 3", "Float", frame + "/position");
     return "      <Grid Name=\"frame " + std::to_string(k) + "\" GridType=\"Uniform\">\n"
            "        <Time Value=\"" + exact(run.times[k]) + "\"/>\n"
-           "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" + N + "\" NodesPerElement=\"1\"/>\n"
-           "        <Geometry GeometryType=\"XY\">\n" + hyperslab(h5, "position", k, t, n, -1, "          ") +
-           "        </Geometry>\n" + constant_attribute(h5, "radius", n) + constant_attribute(h5, "mass", n) +
-           velocity_attribute(h5, run, k, 0) + velocity_attribute(h5, run, k, 1) + "      </Grid>\n";
+           "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" + N + "\" NodesPerElement=\"1\">" +
+           data_item(N + " 1", "Int", h5 + ":/particles/vertex") + "</Topology>\n"
+           "        <Geometry GeometryType=\"XYZ\">" + points + "</Geometry>\n" +
+           attribute("radius", "Scalar", data_item(N, "Float", h5 + ":/particles/radius")) +
+           attribute("mass", "Scalar", data_item(N, "Float", h5 + ":/particles/mass")) +
+           attribute("velocity", "Vector", data_item(N + " 3", "Float", frame + "/velocity")) +
+           attribute("position", "Vector", points) + "      </Grid>\n";
+}
+
+std::string xdmf_text(const RunForExport& run, const std::string& frames_path) {
+    const std::string h5 = xml_escaped(std::filesystem::path(frames_path).filename().string());
+    std::string text = "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+                       "<!-- Written by `collide export`: the data is in " + h5 + ", which must stay beside it -->\n"
+                       "<Xdmf Version=\"3.0\" xmlns:xi=\"http://www.w3.org/2001/XInclude\">\n  <Domain>\n"
+                       "    <Grid Name=\"" + xml_escaped(run.scene.name) + "\" GridType=\"Collection\" "
+                       "CollectionType=\"Temporal\">\n";
+    for (std::size_t k = 0; k < run.times.size(); ++k) text += xdmf_frame(h5, run, k);
+    return text + "    </Grid>\n  </Domain>\n</Xdmf>\n";
 }
 
 }  // namespace
@@ -123,21 +179,27 @@ const char* to_string(ExportFormat f) {
 
 void require_frames(const std::string& run_path) { RunForExport run(run_path); }
 
-std::string xdmf_text(const std::string& run_path, const std::string& xdmf_path) {
-    const RunForExport run(run_path);
+std::string xdmf_frames_path(const std::string& xdmf_path) {
     namespace fs = std::filesystem;
-    const fs::path folder = fs::absolute(xdmf_path).parent_path();
-    const std::string h5 = xml_escaped(fs::relative(fs::absolute(run_path), folder).string());
+    fs::path p(xdmf_path);
+    // Beside the file a link points to (the XDMF written there names its data by name alone).
+    std::error_code error;
+    if (fs::is_symlink(p, error))
+        if (fs::path target = fs::canonical(p, error); !error) p = target;
+    return (p.parent_path() / (p.stem().string() + ".frames.h5")).string();
+}
+
+void write_xdmf(const std::string& run_path, const std::string& xdmf_path) {
+    const std::string frames = xdmf_frames_path(xdmf_path);
     // "FILE:/dataset" is how XDMF names HDF5 data, so a ':' in the file name cannot be told apart.
-    if (h5.find(':') != std::string::npos)
-        throw std::runtime_error(run_path + ": an XDMF file cannot name a run file whose path holds ':'");
-    std::string text = "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
-                       "<!-- Written by `collide export`: points into " + h5 + ", which must stay beside it -->\n"
-                       "<Xdmf Version=\"3.0\" xmlns:xi=\"http://www.w3.org/2001/XInclude\">\n  <Domain>\n"
-                       "    <Grid Name=\"" + xml_escaped(run.scene.name) + "\" GridType=\"Collection\" "
-                       "CollectionType=\"Temporal\">\n";
-    for (std::size_t k = 0; k < run.times.size(); ++k) text += xdmf_frame(h5, run, k);
-    return text + "    </Grid>\n  </Domain>\n</Xdmf>\n";
+    if (std::filesystem::path(frames).filename().string().find(':') != std::string::npos)
+        throw std::runtime_error(xdmf_path + ": an XDMF file's name cannot hold ':' (its data file " + frames +
+                                 " would be misread)");
+    check_output_path(frames);  // both places, before either file is written
+    check_output_path(xdmf_path);
+    const RunForExport run(run_path);
+    write_frames_file(run, frames);  // first: the XDMF never names a file that is not there
+    write_file_atomically(xdmf_path, xdmf_text(run, frames));
 }
 
 std::string xyz_text(const std::string& run_path) {

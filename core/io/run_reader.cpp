@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <type_traits>
 
-#include "core/io/output_file.h"
+#include "core/io/input_file.h"
 #include "core/io/run_schema.h"
 #include "core/io/run_writer.h"
 

@@ -10,7 +10,7 @@
 
 #include "core/scene/backend_table.h"
 #include "core/scene/disk_placement.h"
-#include "core/io/output_file.h"
+#include "core/io/input_file.h"
 #include "core/scene/toml_fields.h"
 
 namespace collide {
@@ -364,19 +364,15 @@ Scene load_scene(const std::string& path) {
     std::error_code error;
     if (std::filesystem::is_directory(path, error))
         throw SceneError(path + ": is a directory: expected a scene file (TOML)");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {  // the system's cause: missing, a link to nothing, a loop of links, too long, ...
-        const std::string why = input_path_problem(path, false);
-        throw SceneError(path + ": cannot open scene file" + (why.empty() ? "" : ": " + why));
-    }
     std::string text;
-    std::vector<char> chunk(1 << 16);
-    while (in.read(chunk.data(), std::streamsize(chunk.size())) || in.gcount() > 0) {
-        text.append(chunk.data(), std::size_t(in.gcount()));
-        if (text.size() <= max_scene_file_bytes) continue;
+    try {  // the input guard: the system's cause, and no FIFO or device waited on (core/io/input_file.h)
+        text = read_input_file(path, max_scene_file_bytes);
+    } catch (const InputFileError& e) {
+        throw SceneError(path + ": cannot open scene file: " + e.cause());
+    }
+    if (text.size() > max_scene_file_bytes)
         throw SceneError(path + ": more than 64 MiB: expected a scene file of at most 64 MiB (gas and lattice "
                                 "generators describe large scenes in a few lines)");
-    }
     Scene scene = parse_scene(text, path);
     scene.source_path = path;
     return scene;

@@ -32,6 +32,7 @@ ROOT = pathlib.Path(__file__).resolve().parents[2]
 SCENES = ROOT / "data" / "scenes"
 # The guard and atomic write every output of collide goes through (docs/refusals.md).
 sys.path.insert(0, str(ROOT / "validation" / "report"))
+sys.path.insert(1, str(ROOT / "python" / "collide"))
 import safe_output  # noqa: E402
 from collide_program import collide_module  # noqa: E402  (collide.read_run reads the run files)
 

@@ -6,22 +6,20 @@
 #   xvfb-run -a pvbatch docs/figures/paraview_screenshot.py run.xdmf paraview_bidisperse_gas.png
 #
 # ParaView (Debian's paraview and python3-paraview) is not a dependency of collide, so the
-# tests do not run this; the figure in docs/figures was made with ParaView 5.11.
+# tests do not run this (they read the export with meshio's TimeSeriesReader).
 #
-# The reader is ParaView's "XDMF Reader": ParaView 5.11's Xdmf3 readers stop with a
-# segmentation fault on any geometry given as a HyperSlab of a larger dataset, which is how
-# the export points at one frame of /frames/position without copying it.
+# The reader is ParaView's Xdmf3 reader: the export's data items name whole datasets of
+# NAME.frames.h5 (no HyperSlab, on which ParaView 5.11's Xdmf3 readers crashed), and the
+# velocity is a 3-vector with z = 0.
 import sys
 
-from paraview.simple import (Calculator, ColorBy, GetActiveViewOrCreate, GetColorTransferFunction, GetScalarBar, Glyph,
-                             ResetCamera, SaveScreenshot, Show, XDMFReader)
+from paraview.simple import (ColorBy, GetActiveViewOrCreate, GetColorTransferFunction, GetScalarBar, Glyph,
+                             ResetCamera, SaveScreenshot, Show, Xdmf3ReaderS)
 
 xdmf_path, png_path = sys.argv[1], sys.argv[2]
-run = XDMFReader(FileNames=[xdmf_path])
-# The run file stores velocity as (x, y); ParaView's vectors have three components.
-velocity = Calculator(Input=run, ResultArrayName="velocity", Function="velocity_x*iHat + velocity_y*jHat")
+run = Xdmf3ReaderS(FileName=[xdmf_path])
 # A sphere per disk, scaled to its diameter (the glyph's unit sphere has diameter 1).
-disks = Glyph(Input=velocity, GlyphType="Sphere", ScaleArray=["POINTS", "radius"], ScaleFactor=2.0,
+disks = Glyph(Input=run, GlyphType="Sphere", ScaleArray=["POINTS", "radius"], ScaleFactor=2.0,
               GlyphMode="All Points")
 view = GetActiveViewOrCreate("RenderView")
 display = Show(disks, view)

@@ -30,7 +30,7 @@ from ._collide import (  # noqa: F401  (re-exported)
     build_provenance,
     toml_from_dict,
 )
-from . import _collide
+from . import _collide, safe_output
 
 __version__ = build_provenance().get("collide_version", "")
 
@@ -144,7 +144,7 @@ def validate(suite, out="results", jobs=None, resume=False, solvers=None):
         counts["suite"], counts["cases"], counts["cases_run"], counts["cases_resumed"], counts["wall_seconds"],
         counts["jobs"]))
     print("checks    %d passed, %d failed, %d left out" % (counts["passed"], counts["failed"], counts["left_out"]))
-    with open(os.path.join(os.fspath(out), "summary.json"), encoding="utf-8") as f:
+    with safe_output.open_input(os.path.join(os.fspath(out), "summary.json"), "r", encoding="utf-8") as f:
         summary = json.load(f)
     for c in summary.get("checks", []):
         if c.get("status") == "fail":
@@ -156,8 +156,8 @@ def validate(suite, out="results", jobs=None, resume=False, solvers=None):
 
 def export(run, out, format=None):
     """Writes the frames of a run file (written with frames=True, or `collide run --frames`) as
-    `collide export RUN --out OUT [--format F]` does: "xdmf" (ParaView, VisIt; points into the
-    run file), "gsd" (OVITO, freud, HOOMD; needs the gsd package) or "xyz" (extended XYZ: ASE,
+    `collide export RUN --out OUT [--format F]` does: "xdmf" (ParaView, VisIt, meshio; its data in
+    NAME.frames.h5 beside it), "gsd" (OVITO, freud, HOOMD; needs the gsd package) or "xyz" (extended XYZ: ASE,
     OVITO). Without `format`, the extension of `out` says which. docs/exporting.md."""
     run, out = os.fspath(run), os.fspath(out)
     if format is None:

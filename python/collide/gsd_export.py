@@ -22,12 +22,15 @@ What the schema fixes, and how a run maps onto it:
   log/collide/time     the simulation time, float64, exactly as in the run file
 """
 
-import os
 import sys
-import tempfile
 
 import h5py
 import numpy as np
+
+try:  # imported as collide.gsd_export
+    from . import safe_output
+except ImportError:  # run as a script: its own folder is on sys.path
+    import safe_output
 
 try:
     import gsd.hoomd
@@ -70,29 +73,23 @@ def _frame(run, k, box, typeid):
 
 def write_gsd(run_path, out_path):
     """Writes every frame of `run_path` to `out_path` (a temporary file beside it, renamed when
-    complete: an existing file is replaced whole or not at all)."""
+    complete: an existing file is replaced whole or not at all; safe_output.atomic_output)."""
     if gsd is None:
         raise RuntimeError("the Python package gsd is missing (Debian: apt-get install python3-gsd)")
+    safe_output.check_input_file(run_path)  # h5py would wait on a FIFO for good
     with h5py.File(run_path, "r") as run:
         if "frames" not in run:
             raise RuntimeError("%s: the run has no frames to export: it was written without --frames; "
                                "rerun it with `collide run ... --frames`" % run_path)
         box = _box(run)
         typeid = (run["particles/inv_mass"][:] == 0).astype(np.uint32)
-        folder = os.path.dirname(os.path.abspath(out_path))
-        fd, temporary = tempfile.mkstemp(prefix="." + os.path.basename(out_path) + ".", suffix=".tmp", dir=folder)
-        os.close(fd)
-        umask = os.umask(0)  # mkstemp makes the file private; the export gets the usual mode
-        os.umask(umask)
-        os.chmod(temporary, 0o666 & ~umask)
-        try:
+        # The output guard and atomic rename every writer of collide shares: a link is followed
+        # (its file replaced, the link kept), and a FIFO or a device put at the path during the
+        # export is refused, not replaced by a plain file.
+        with safe_output.atomic_output(out_path) as temporary:
             with gsd.hoomd.open(temporary, "wb") as trajectory:
                 for k in range(run["frames/time"].shape[0]):
                     trajectory.append(_frame(run, k, box, typeid))
-            os.replace(temporary, out_path)
-        except BaseException:
-            os.unlink(temporary)
-            raise
 
 
 def main(argv):
@@ -101,7 +98,7 @@ def main(argv):
         return 2
     try:
         write_gsd(argv[1], argv[2])
-    except (OSError, RuntimeError, KeyError) as e:
+    except (OSError, RuntimeError, KeyError, safe_output.OutputPathError) as e:
         print("collide: error: %s" % e, file=sys.stderr)
         return 1
     return 0

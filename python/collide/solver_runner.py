@@ -23,10 +23,16 @@ runs it. read_request() and write_result() are the protocol for a program of you
 
 import importlib
 import importlib.util
+import io
 import os
 import sys
 
 import numpy as np
+
+try:  # imported as collide.solver_runner
+    from . import safe_output
+except ImportError:  # run as a script: its own folder is on sys.path
+    import safe_output
 
 # request.txt keys whose values are words, not numbers; output_times is a list.
 _WORDS = {"solver", "scene", "order", "boundary"}
@@ -67,7 +73,9 @@ def write_result(directory, times, states, steps=None, contacts=None, version=No
     if refuse is not None:
         lines.append("refuse " + " ".join(str(refuse).split()))
     else:
-        np.save(os.path.join(directory, "states.npy"), np.ascontiguousarray(states, dtype="<f8"))
+        answer = io.BytesIO()
+        np.save(answer, np.ascontiguousarray(states, dtype="<f8"))
+        safe_output.write_bytes(os.path.join(directory, "states.npy"), answer.getvalue())  # the output guard
         lines.append("times " + " ".join(repr(float(t)) for t in times))
         if steps is not None:
             lines.append("steps %d" % int(steps))
@@ -75,8 +83,7 @@ def write_result(directory, times, states, steps=None, contacts=None, version=No
             lines.append("contacts %d" % int(contacts))
     if version:
         lines.append("version " + " ".join(str(version).split()))
-    with open(os.path.join(directory, "result.txt"), "w", encoding="utf-8") as f:
-        f.write("\n".join(lines) + "\n")
+    safe_output.write_text(os.path.join(directory, "result.txt"), "\n".join(lines) + "\n")
 
 
 def load_class(spec):

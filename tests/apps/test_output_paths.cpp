@@ -15,9 +15,11 @@
 
 #include <sys/stat.h>
 #include <sys/sysmacros.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -47,6 +49,14 @@ ProgramResult run_collide(const std::vector<std::string>& args, const ScratchDir
 }
 
 const std::string case_id = "head_on_equal__step__seed1";
+
+// The id of a process that has ended (a temporary named after it belongs to no running writer).
+pid_t ended_process() {
+    const pid_t pid = ::fork();
+    if (pid == 0) ::_exit(0);
+    ::waitpid(pid, nullptr, 0);
+    return pid;
+}
 
 std::string suite_file(const ScratchDirectory& dir) {
     const std::string path = dir.file("suite.toml");
@@ -118,6 +128,21 @@ const std::vector<Writer>& writers() {
         {"validate_run", "", "runs/" + case_id + ".h5",
          [](const fs::path& p, const ScratchDirectory& d) -> std::vector<std::string> {
              return {"validate", suite_file(d), "--out", p.parent_path().parent_path().string()};
+         }},
+        // The files written as they go: a case's log and the output directory's lock.
+        {"validate_log", "", "cases/" + case_id + ".log",
+         [](const fs::path& p, const ScratchDirectory& d) -> std::vector<std::string> {
+             return {"validate", suite_file(d), "--out", p.parent_path().parent_path().string()};
+         }},
+        {"validate_lock", "", ".lock", [](const fs::path& p, const ScratchDirectory& d) -> std::vector<std::string> {
+             return {"validate", suite_file(d), "--out", p.parent_path().string()};
+         }},
+        // The exports; GSD is written by the Python writer (python/collide/gsd_export.py).
+        {"export_gsd", ".gsd", "", [](const fs::path& p, const ScratchDirectory&) -> std::vector<std::string> {
+             return {"export", run_with_frames(), "--out", p.string()};
+         }},
+        {"export_xdmf", ".xdmf", "", [](const fs::path& p, const ScratchDirectory&) -> std::vector<std::string> {
+             return {"export", run_with_frames(), "--out", p.string()};
          }},
         {"report_html", "", "report/index.html", [](const fs::path& p, const ScratchDirectory&) -> std::vector<std::string> {
              const fs::path results = p.parent_path().parent_path();
@@ -346,18 +371,130 @@ TEST_P(EveryWriterFollowingALink, ReplacesTheFileAndKeepsTheLink) {
 }
 
 // Left out: the report, which needs a whole suite's results to render (its writer follows a
-// link in tests/report/test_safe_output.py), and a case record, which `validate` removes
-// before its case runs, so that a case that dies is not taken for a finished one.
+// link in tests/report/test_safe_output.py), a case record, which `validate` removes
+// before its case runs, so that a case that dies is not taken for a finished one, and the log
+// and the lock, which refuse a link (LogsAndLocksAreNeverWrittenThroughALink).
 std::vector<Writer> writers_of_a_followed_link() {
     std::vector<Writer> chosen;
     for (const Writer& w : writers())
-        if (w.name.rfind("report", 0) != 0 && w.name != "validate_record") chosen.push_back(w);
+        if (w.name.rfind("report", 0) != 0 && w.name != "validate_record" && w.name != "validate_log" &&
+            w.name != "validate_lock")
+            chosen.push_back(w);
     return chosen;
 }
 
 INSTANTIATE_TEST_SUITE_P(OutputPaths, EveryWriterFollowingALink, testing::ValuesIn(writers_of_a_followed_link()),
                          [](const testing::TestParamInfo<Writer>& info) { return info.param.name; });
 
+
+// collide's own files in its output directory are never written through a link: a `.lock`
+// linked out of the directory truncated its target, a log linked elsewhere was written there.
+TEST(OutputPaths, LogsAndLocksAreNeverWrittenThroughALink) {
+    for (const std::string& name : {std::string(".lock"), "cases/" + case_id + ".log"}) {
+        ScratchDirectory dir;
+        const fs::path out = dir.path() / "out", precious = dir.path() / "precious.txt";
+        fs::create_directories(out / "cases");
+        test::write_text_file(precious.string(), "keep me");
+        fs::create_symlink(precious, out / name);
+        const auto r = run_collide({"validate", suite_file(dir), "--out", out.string()}, dir);
+        EXPECT_NE(r.exit_code, 0) << name;
+        const std::string quoted = std::string("'").append((out / name).string()).append("'");  // GCC 12 warns falsely on "'" + s
+        EXPECT_TRUE(contains(r.err, quoted)) << r.err;
+        EXPECT_TRUE(contains(r.err, "symbolic link")) << r.err;
+        EXPECT_EQ(test::read_text_file(precious.string()), "keep me") << name;
+        EXPECT_TRUE(fs::is_symlink(out / name)) << name;
+    }
+}
+
+// An output that is the command's input (the same file, or a link to it) is refused before
+// anything is written: `collide export run.h5 --out run.h5` destroyed the only copy.
+TEST(OutputPaths, OutputIsNotInput) {
+    ScratchDirectory dir;
+    const std::string run = dir.file("run.h5"), scene = dir.file("scene.toml"), link = dir.file("link.xyz");
+    const std::string gif = dir.file("run.gif");  // a run file named as render's output
+    fs::copy_file(run_with_frames(), run);
+    fs::copy_file(run_with_frames(), gif);
+    fs::copy_file(test::scene_file("head_on_equal.toml"), scene);
+    fs::create_symlink(run, link);
+    const std::string run_bytes = test::read_text_file(run), scene_bytes = test::read_text_file(scene);
+    const std::string gif_bytes = test::read_text_file(gif);
+    const std::vector<std::vector<std::string>> commands = {
+        {"export", run, "--out", run, "--format", "xyz"},
+        {"export", run, "--out", link},
+        {"render", gif, "--out", gif},
+        {"run", scene, "--out", scene},
+    };
+    for (const auto& args : commands) {
+        const auto r = run_collide(args, dir);
+        EXPECT_NE(r.exit_code, 0) << args[0] << " " << args[3];
+        EXPECT_TRUE(contains(r.err, "it is the input")) << args[0] << ": " << r.err;
+    }
+    EXPECT_EQ(test::read_text_file(run), run_bytes);
+    EXPECT_EQ(test::read_text_file(scene), scene_bytes);
+    EXPECT_EQ(test::read_text_file(gif), gif_bytes);
+    EXPECT_TRUE(fs::is_symlink(link));
+}
+
+// A FIFO given as any command's input is refused at once (every reading command waited on it
+// for good).
+TEST(InputPaths, NonRegularInputsRefused) {
+    ScratchDirectory dir;
+    const std::string fifo = dir.file("fifo.toml"), results = dir.file("results"), other = dir.file("other");
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0644), 0);
+    for (const std::string& d : {results, other}) {
+        fs::create_directories(d);
+        ASSERT_EQ(::mkfifo((d + "/summary.json").c_str(), 0644), 0);
+    }
+    const std::vector<std::vector<std::string>> commands = {
+        {"run", fifo}, {"view", fifo, "--headless"}, {"validate", fifo, "--out", dir.file("v")},
+        {"export", fifo, "--out", dir.file("x.xyz")}, {"render", fifo, "--out", dir.file("x.gif")},
+        {"report", results}, {"compare", other, results}, {"explain", results, "case"}};
+    for (const auto& args : commands) {
+        const auto r = run_collide(args, dir);
+        EXPECT_NE(r.exit_code, 0) << args[0];
+        EXPECT_NE(r.exit_code, 124) << args[0] << " waited on the FIFO";
+        EXPECT_TRUE(contains(r.err, "FIFO")) << args[0] << ": " << r.err;
+    }
+}
+
+// A FIFO named like a case log hung `validate` for good, deaf to SIGINT and SIGTERM (the case
+// blocked opening it, and after the case's time limit the runner blocked reading it). Now it is
+// refused before any case runs; a SIGTERM after 10 s (timeout(1)) would end it in any case,
+// and a KILL 5 s later (exit 137) would mean it ignored the TERM.
+TEST(OutputPaths, AFifoPlantedAsACaseLogNeitherHangsNorIgnoresSignals) {
+    ScratchDirectory dir;
+    const fs::path out = dir.path() / "out";
+    fs::create_directories(out / "cases");
+    ASSERT_EQ(::mkfifo((out / "cases" / (case_id + ".log")).c_str(), 0644), 0);
+    std::string suite = test::read_text_file(suite_file(dir));
+    suite.insert(suite.find("[[scene]]"), "time_limit = 1\n");
+    test::write_text_file(dir.file("suite.toml"), suite);
+    const auto start = std::chrono::steady_clock::now();
+    const auto r = test::run_program("timeout", {"--signal=TERM", "--kill-after=5", "10", COLLIDE_EXECUTABLE,
+                                                 "validate", dir.file("suite.toml"), "--out", out.string()}, dir);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_NE(r.exit_code, 137) << "SIGTERM was ignored";
+    EXPECT_LT(seconds, 14.0);
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_TRUE(contains(r.err, "a FIFO")) << r.err;
+}
+
+// A kill during the summary's rename leaves `.summary.json.tmp-PID-K`: --resume and report remove
+// it and say so.
+TEST(OutputPaths, ResumeAndReportRemoveAnInterruptedRunsTemporaries) {
+    ScratchDirectory dir;
+    const fs::path out = dir.path() / "out";
+    ASSERT_EQ(run_collide({"validate", suite_file(dir), "--out", out.string()}, dir).exit_code, 0);
+    const std::string stale = ".summary.json.tmp-" + std::to_string(ended_process()) + "-0";
+    for (const char* command : {"validate", "report"}) {
+        test::write_text_file((out / stale).string(), "{");
+        const auto r = std::string(command) == "validate"
+                           ? run_collide({"validate", suite_file(dir), "--out", out.string(), "--resume"}, dir)
+                           : run_collide({"report", out.string()}, dir);
+        EXPECT_FALSE(fs::exists(out / stale)) << command;
+        EXPECT_TRUE(contains(r.out + r.err, stale)) << command << ": " << r.out << r.err;
+    }
+}
 
 // Every command's input path (scene, suite, run file, results directory) names the system's
 // cause: a loop of links was "File does not exist" (CLI11's ExistingFile), a path too long

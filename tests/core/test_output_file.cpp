@@ -6,11 +6,18 @@
 #include <gtest/gtest.h>
 
 #include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
+#include <functional>
 #include <string>
+#include <vector>
 
+#include "core/io/input_file.h"
 #include "core/io/output_file.h"
 #include "tests/support/scratch_directory.h"
 
@@ -167,6 +174,110 @@ TEST(InputPath, EachCauseIsNamed) {
     EXPECT_TRUE(contains(input_path_problem(file, true), "not a directory"));
     EXPECT_EQ(input_path_problem(file, false), "");
     EXPECT_EQ(input_path_problem(dir.path().string(), true), "");
+}
+
+// The message of the exception `action` throws, "" if none.
+template <typename Error>
+std::string message_of(const std::function<void()>& action) {
+    try {
+        action();
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+// A twin of /dev/null (character device 1, 3) inside the scratch directory, never the system's
+// own; false where this process may not make one (mknod needs CAP_MKNOD).
+bool make_null_device(const std::string& path) { return ::mknod(path.c_str(), S_IFCHR | 0666, makedev(1, 3)) == 0; }
+
+mode_t kind_at(const std::string& path) {
+    struct stat st {};
+    return ::lstat(path.c_str(), &st) == 0 ? (st.st_mode & S_IFMT) : 0;
+}
+
+// The files written as they go (case logs, the lock, a solver's files) pass the same guard as
+// every other output, and a link is refused too: a `.lock` linked out of its directory was
+// truncated, a log linked to a device written into it, a log linked to a FIFO fed its reader.
+TEST(OutputStream, EveryWriterUsesTheOutputGuard) {
+    ScratchDirectory dir;
+    const std::string outside = dir.file("precious"), link = dir.file("linked.lock"), fifo = dir.file("fifo.log");
+    const std::string device = dir.file("null.log"), device_link = dir.file("device.log");
+    test::write_text_file(outside, "keep me");
+    fs::create_symlink(outside, link);
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0644), 0);
+    const bool have_device = make_null_device(device);
+    if (have_device) fs::create_symlink(device, device_link);
+    auto open_stream = [](const std::string& path) { return [path] { ::close(open_output_stream(path)); }; };
+    EXPECT_TRUE(contains(message_of<OutputFileError>(open_stream(link)), "symbolic link"));
+    EXPECT_EQ(test::read_text_file(outside), "keep me");
+    EXPECT_TRUE(contains(message_of<OutputFileError>(open_stream(fifo)), "not a regular file (a FIFO)"));
+    EXPECT_EQ(kind_at(fifo), mode_t(S_IFIFO));
+    if (have_device) {
+        EXPECT_TRUE(contains(message_of<OutputFileError>(open_stream(device)), "a character device"));
+        EXPECT_TRUE(contains(message_of<OutputFileError>(open_stream(device_link)), "a character device"));
+        EXPECT_EQ(kind_at(device), mode_t(S_IFCHR));
+    }
+    // A new file and an existing regular file are written; the existing one emptied first.
+    const std::string log = dir.file("case.log");
+    test::write_text_file(log, "old output");
+    const int fd = open_output_stream(log);
+    EXPECT_EQ(::write(fd, "new", 3), 3);
+    ::close(fd);
+    EXPECT_EQ(test::read_text_file(log), "new");
+}
+
+// A FIFO, a device or a socket is no input: refused at once, never opened to wait on.
+TEST(InputFile, NonRegularInputsRefused) {
+    ScratchDirectory dir;
+    const std::string fifo = dir.file("scene.toml"), device = dir.file("null"), file = dir.file("f");
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0644), 0);
+    test::write_text_file(file, "text");
+    EXPECT_TRUE(contains(input_path_problem(fifo, false), "not a regular file (it is a FIFO)"));
+    EXPECT_TRUE(contains(message_of<InputFileError>([&] { read_input_file(fifo, 100); }), "a FIFO"));
+    if (make_null_device(device)) {
+        EXPECT_TRUE(contains(input_path_problem(device, false), "a character device"));
+        EXPECT_TRUE(contains(message_of<InputFileError>([&] { read_input_file(device, 100); }), "a character device"));
+    }
+    EXPECT_EQ(read_input_file(file, 100), "text");
+    EXPECT_EQ(read_input_file(file, 2), "tex") << "one byte past the limit, so a caller sees the file is longer";
+}
+
+// An output that is one of the command's inputs (the same file, also through a link) is refused
+// before anything is written: `collide export run.h5 --out run.h5` destroyed the only copy.
+TEST(OutputFile, OutputIsNotInput) {
+    ScratchDirectory dir;
+    const std::string input = dir.file("run.h5"), link = dir.file("link.xyz"), other = dir.file("other.xyz");
+    test::write_text_file(input, "the run");
+    fs::create_symlink(input, link);
+    remember_input(input);
+    EXPECT_TRUE(contains(refusal(input), "it is the input '" + input + "'")) << refusal(input);
+    EXPECT_TRUE(contains(refusal(link), "it is the input")) << refusal(link);
+    EXPECT_TRUE(contains(message_of<OutputFileError>([&] { write_file_atomically(link, "x"); }), "it is the input"));
+    EXPECT_EQ(test::read_text_file(input), "the run");
+    EXPECT_EQ(refusal(other), "");
+    const std::string second = dir.file("b.h5");
+    test::write_text_file(second, "b");
+    EXPECT_TRUE(contains(message_of<OutputFileError>([&] { check_output_is_not_input(second, second); }), "the input"));
+    forget_remembered_inputs();  // the scratch files' inodes may be reused by the next test
+    EXPECT_EQ(refusal(input), "");
+}
+
+// A kill during a write or its rename leaves ".NAME.tmp-PID-K": removed once its writer is
+// gone, kept while the writer runs.
+TEST(OutputFile, StaleTemporariesOfEndedWritersAreRemoved) {
+    ScratchDirectory dir;
+    const pid_t ended = ::fork();
+    if (ended == 0) ::_exit(0);
+    ::waitpid(ended, nullptr, 0);
+    const std::string stale = ".summary.json.tmp-" + std::to_string(ended) + "-0";
+    const std::string live = ".junit.xml.tmp-" + std::to_string(::getppid()) + "-3";
+    for (const std::string& name : {stale, live, std::string(".notes.tmp-x-1"), std::string("summary.json")})
+        test::write_text_file(dir.file(name), "x");
+    EXPECT_EQ(remove_stale_temporaries(dir.path().string()), std::vector<std::string>{stale});
+    EXPECT_FALSE(fs::exists(dir.file(stale)));
+    for (const std::string& name : {live, std::string(".notes.tmp-x-1"), std::string("summary.json")})
+        EXPECT_TRUE(fs::exists(dir.file(name))) << name;
 }
 
 }  // namespace

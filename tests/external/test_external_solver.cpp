@@ -95,6 +95,19 @@ TEST(ExternalSolver, ACorrectAnswerComesThroughBitForBit) {
     EXPECT_EQ(p.at("solver_command"), "cp states.npy result.txt");
 }
 
+// The files a command names are found as the shell splits its words: a path with a space or a
+// quote in it, quoted or escaped, is one file and is hashed (it was left out of the provenance).
+TEST(ExternalSolver, ProvenanceHashesEveryFileTheShellWouldRun) {
+    Fixture f;
+    const std::vector<std::string> names = {"my solver.py", "it's.py", "say \"hi\".py", "back\\slash.py"};
+    const std::string command = "python3 'my solver.py' \"it's.py\" 'say \"hi\".py' back\\\\slash.py";
+    for (const std::string& name : names) test::write_text_file(f.dir.file(name), "print('" + name + "')\n");
+    auto solver = make_external_solver(f.shell(command));
+    const std::string hashes = solver->provenance().at("solver_files_sha256");
+    for (const std::string& name : names)
+        EXPECT_NE(hashes.find(name + " " + sha256_file(f.dir.file(name))), std::string::npos) << name << ": " << hashes;
+}
+
 TEST(ExternalSolver, ATimeOffByRoundingIsAccepted) {
     Fixture f;
     EXPECT_NO_THROW(f.run(f.answering(npy_bytes(f.states(), {2, 2, 4}), "times 0.50000000000000011 0.99999999999999989\n")));

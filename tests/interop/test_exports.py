@@ -1,16 +1,19 @@
 """`collide export` and `collide.export`: each format read back by a reader that is not ours
-(the XDMF's data items through meshio, GSD through the gsd package, extended XYZ through ASE)
+(XDMF through meshio's TimeSeriesReader, GSD through the gsd package, extended XYZ through ASE)
 and compared with the run file it came from: positions, radii and times bit for bit where the
 format holds doubles, and as float32 roundings bit for bit where HOOMD's schema fixes float32.
 """
 
+import os
+import stat
+import sys
 import xml.etree.ElementTree as ET
 
 import h5py
 import numpy as np
 import pytest
 
-from conftest import SCENES
+from conftest import SCENES, SOURCE
 
 
 @pytest.fixture(scope="module")
@@ -36,57 +39,43 @@ def exported(run_collide, run, name, *extra):
     return out
 
 
-# --- XDMF: meshio 5 reads XDMF's HDF and XML data items but not HyperSlab items, nor points
-# that move from one time to the next; so the HyperSlab items are composed here, from the XDMF
-# model (start, stride and count rows, then the data), and every leaf is read by meshio's own
-# reader (file path relative to the XDMF file, type, precision, shape).
+# --- XDMF: the XDMF file and its data beside it (NAME.frames.h5, plain per-frame datasets),
+# read back through meshio's TimeSeriesReader: the points of the first frame, and each frame's
+# time, position, velocity, radius and mass.
 
-def evaluate(item, reader):
-    kind = item.get("ItemType")
-    if kind == "HyperSlab":
-        selection, data = [evaluate(c, reader) for c in item]
-        start, stride, count = selection.astype(int)
-        index = tuple(slice(s, s + st * c, st) for s, st, c in zip(start, stride, count))
-        return data[index]
-    assert kind is None, kind  # no Function items: their meaning differs between XDMF 2 and 3
-    return reader._read_data_item(item)
-
-
-def test_xdmf_points_into_the_run_file_and_reads_back_bit_for_bit(run_file, run_collide):
+def test_xdmf_reads_back_bit_for_bit_through_meshios_time_series_reader(run_file, run_collide):
     meshio_xdmf = pytest.importorskip("meshio.xdmf")
     run, truth = run_file
     xdmf = exported(run_collide, run, "run.xdmf")
-    assert xdmf.stat().st_size < 40_000, "the XDMF file points into the run file, it copies nothing"
-    reader = meshio_xdmf.TimeSeriesReader(xdmf)  # checks Xdmf 3, Domain, a Temporal collection
-    assert reader.num_steps == truth["frames/time"].size
+    assert (run.parent / "run.frames.h5").is_file()
     n = truth["particles/radius"].size
-    for k, grid in enumerate(reader.collection):
-        assert grid.get("GridType") == "Uniform"
-        assert float(grid.find("Time").get("Value")) == truth["frames/time"][k]
-        topology = grid.find("Topology")
-        assert (topology.get("TopologyType"), topology.get("NumberOfElements")) == ("Polyvertex", str(n))
-        assert grid.find("Geometry").get("GeometryType") == "XY"
-        points = evaluate(grid.find("Geometry/DataItem"), reader).reshape(n, 2)
-        assert np.array_equal(points, truth["frames/position"][k])
-        attributes = {a.get("Name"): a for a in grid.findall("Attribute")}
-        for name in ("radius", "mass"):
-            assert attributes[name].get("AttributeType") == "Scalar"
-            assert np.array_equal(evaluate(attributes[name].find("DataItem"), reader), truth["particles/" + name])
-        for c, name in enumerate(("velocity_x", "velocity_y")):
-            assert attributes[name].get("AttributeType") == "Scalar"
-            component = evaluate(attributes[name].find("DataItem"), reader).reshape(n)
-            assert np.array_equal(component, truth["frames/velocity"][k][:, c])
-    for f in reader.hdf5_files.values():
-        f.close()
+    with meshio_xdmf.TimeSeriesReader(xdmf) as reader:  # it refused the HyperSlab items (ReadError)
+        points, cells = reader.read_points_cells()
+        assert np.array_equal(points[:, :2], truth["frames/position"][0]) and not points[:, 2].any()
+        assert [c.type for c in cells] == ["vertex"] and np.array_equal(cells[0].data.ravel(), np.arange(n))
+        assert reader.num_steps == truth["frames/time"].size
+        for k in range(reader.num_steps):
+            t, point_data, _ = reader.read_data(k)
+            assert t == truth["frames/time"][k]
+            assert np.array_equal(point_data["position"][:, :2], truth["frames/position"][k])
+            assert np.array_equal(point_data["velocity"][:, :2], truth["frames/velocity"][k])
+            assert not point_data["velocity"][:, 2].any()
+            for name in ("radius", "mass"):
+                assert np.array_equal(point_data[name], truth["particles/" + name])
 
 
-def test_xdmf_names_the_run_file_relative_to_itself(run_file, run_collide, tmp_path):
+def test_xdmf_holds_no_hyperslab_and_names_its_data_file_beside_itself(run_file, run_collide, tmp_path):
     run, _ = run_file
     (tmp_path / "views").mkdir()
     xdmf = tmp_path / "views" / "run.xdmf"
     assert run_collide("export", run, "--out", xdmf).returncode == 0
-    leaf = ET.parse(xdmf).getroot().find(".//DataItem[@Format='HDF']").text
-    assert (xdmf.parent / leaf.split(":")[0]).resolve() == run.resolve()
+    root = ET.parse(xdmf).getroot()
+    items = root.findall(".//DataItem")
+    assert items and all(i.get("Format") == "HDF" and i.get("ItemType") is None for i in items)
+    for grid in root.findall(".//Grid[@GridType='Uniform']"):  # each frame has its own points (ParaView)
+        assert grid.find("Geometry").get("GeometryType") == "XYZ"
+    files = {i.text.split(":")[0] for i in items}
+    assert files == {"run.frames.h5"} and (xdmf.parent / "run.frames.h5").is_file()
 
 
 def test_gsd_reads_back_in_the_hoomd_schema(run_file, run_collide):
@@ -153,13 +142,58 @@ def test_an_unknown_format_is_refused(run_file, run_collide):
 def test_python_export_writes_what_the_program_writes(run_file, run_collide):
     collide = pytest.importorskip("collide")
     run, truth = run_file
-    for name in ("run.xdmf", "run.xyz"):
-        cli = exported(run_collide, run, name)
-        ours = run.parent / ("python-" + name)  # the same folder: the XDMF names run.h5 alike
-        assert collide.export(run, ours) == str(ours)
-        assert ours.read_bytes() == cli.read_bytes()
+    cli = exported(run_collide, run, "run.xyz")
+    ours = run.parent / "python-run.xyz"
+    assert collide.export(run, ours) == str(ours)
+    assert ours.read_bytes() == cli.read_bytes()
+    cli = exported(run_collide, run, "run.xdmf")
+    ours = run.parent / "python-run.xdmf"  # its data: python-run.frames.h5
+    collide.export(run, ours)
+    assert ours.read_text() == cli.read_text().replace("run.frames.h5", "python-run.frames.h5")
+    with h5py.File(run.parent / "run.frames.h5", "r") as a, h5py.File(run.parent / "python-run.frames.h5", "r") as b:
+        assert np.array_equal(a["frames/3/position"][()], b["frames/3/position"][()])
     ours = run.parent / "python.gsd"
     collide.export(run, ours)
     hoomd = pytest.importorskip("gsd.hoomd")
     with hoomd.open(str(ours), "rb") as trajectory:
         assert [f.log["collide/time"][0] for f in trajectory] == list(truth["frames/time"])
+
+
+# --- the GSD writer goes through the output guard (python/collide/safe_output.py) -------------
+
+def test_gsd_writer_uses_the_output_guard(run_file, tmp_path, monkeypatch):
+    """A link is followed (its file replaced, the link kept); a FIFO put at the path during the
+    export is refused and left a FIFO (the writer renamed its file over both)."""
+    pytest.importorskip("gsd.hoomd")
+    sys.path.insert(0, str(SOURCE / "python" / "collide"))  # as `collide export` runs it: a script
+    import gsd_export
+    run, _ = run_file
+    real, link = tmp_path / "real.gsd", tmp_path / "link.gsd"
+    real.write_text("old")
+    link.symlink_to(real)
+    gsd_export.write_gsd(str(run), str(link))
+    assert link.is_symlink() and real.read_bytes()[:3] != b"old"
+    planted = tmp_path / "planted.gsd"
+    frame = gsd_export._frame
+
+    def plant_a_fifo(*args):
+        if not planted.exists():
+            os.mkfifo(planted)
+        return frame(*args)
+
+    monkeypatch.setattr(gsd_export, "_frame", plant_a_fifo)
+    with pytest.raises(gsd_export.safe_output.OutputPathError, match="a FIFO"):
+        gsd_export.write_gsd(str(run), str(planted))
+    assert stat.S_ISFIFO(os.lstat(planted).st_mode)
+    assert not [p for p in os.listdir(tmp_path) if ".tmp-" in p]
+
+
+def test_xdmf_export_refuses_its_own_run_as_its_data_file(run_file, tmp_path):
+    """NAME.xdmf writes NAME.frames.h5: a run file of that name is the input, refused."""
+    collide = pytest.importorskip("collide")
+    run, _ = run_file
+    copy = tmp_path / "a.frames.h5"
+    copy.write_bytes(run.read_bytes())
+    with pytest.raises(Exception, match="it is the input"):
+        collide.export(copy, tmp_path / "a.xdmf")
+    assert copy.read_bytes() == run.read_bytes()

@@ -50,3 +50,16 @@ def test_read_run_refuses_a_damaged_file(small_gas, tmp_path):
 def test_read_run_names_a_missing_file(tmp_path):
     with pytest.raises(RuntimeError, match="no_such.h5"):
         collide.read_run(tmp_path / "no_such.h5")
+
+
+def test_read_run_refuses_a_fifo_at_once(tmp_path):
+    """Non-regular inputs are refused: a FIFO given as the run file was waited on for good. In a
+    child process with a time limit, so that a wait fails this test instead of hanging it."""
+    import os
+    import subprocess
+    import sys
+    fifo = tmp_path / "run.h5"
+    os.mkfifo(fifo)
+    code = f"import collide\ntry:\n    collide.read_run({str(fifo)!r})\nexcept Exception as e:\n    print(e)\n"
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
+    assert "not a regular file (it is a FIFO)" in r.stdout, r.stdout + r.stderr

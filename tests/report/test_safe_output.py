@@ -1,4 +1,4 @@
-"""validation/report/safe_output.py, the report's output guard and atomic write: every place
+"""python/collide/safe_output.py, the report's output guard and atomic write: every place
 that is not a new or a regular file is refused with the cause and left as it was, a symbolic
 link to a regular file is followed, permissions follow the umask, and a failed write leaves
 neither a temporary file nor a changed target. Run by ctest (label unit) with pytest."""
@@ -10,7 +10,7 @@ import sys
 import pytest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "validation", "report"))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "python", "collide"))
 import safe_output  # noqa: E402
 from safe_output import OutputPathError  # noqa: E402
 

@@ -1,4 +1,5 @@
 #include "validation/compare/published_reference.h"
+#include "core/io/input_file.h"
 
 #include <cmath>
 #include <filesystem>
@@ -75,13 +76,15 @@ std::string PublishedReference::text(const std::string& n) const {
 
 PublishedReference load_reference(const std::string& directory, const std::string& key) {
     const std::string file = (std::filesystem::path(directory) / (key + ".toml")).string();
-    std::ifstream in(file);
-    if (!in) throw std::runtime_error(file + ": cannot open the published reference '" + key + "'");
-    std::stringstream text;
-    text << in.rdbuf();
+    std::string text;
+    try {  // the input guard (core/io/input_file.h)
+        text = read_input_file(file, 1u << 20);
+    } catch (const InputFileError& e) {
+        throw std::runtime_error(file + ": cannot open the published reference '" + key + "': " + e.cause());
+    }
     toml::table root;
     try {
-        root = toml::parse(text.str(), file);
+        root = toml::parse(text, file);
     } catch (const toml::parse_error& e) {
         throw std::runtime_error(file + ":" + std::to_string(e.source().begin.line) + ": not valid TOML: " +
                                  std::string(e.description()));

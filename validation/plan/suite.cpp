@@ -6,7 +6,7 @@
 #include <sstream>
 #include <toml++/toml.h>
 
-#include "core/io/output_file.h"
+#include "core/io/input_file.h"
 #include "core/scene/scene_loader.h"
 #include "core/scene/toml_fields.h"
 #include "core/text/printable.h"
@@ -374,16 +374,19 @@ Suite parse_suite(const std::string& text, const std::string& file, const std::s
     }
 }
 
+// A suite is a page of TOML; this bound only keeps a mistaken path (a disk image) from being read whole.
+constexpr std::size_t max_suite_file_bytes = 64u << 20;
+
 Suite load_suite(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) {
-        const std::string why = input_path_problem(path, false);
-        throw SuiteError(path + ": cannot open the suite file" + (why.empty() ? "" : ": " + why));
+    std::string text;
+    try {  // the input guard (core/io/input_file.h): no FIFO or device waited on
+        text = read_input_file(path, max_suite_file_bytes);
+    } catch (const InputFileError& e) {
+        throw SuiteError(path + ": cannot open the suite file: " + e.cause());
     }
-    std::stringstream text;
-    text << in.rdbuf();
+    if (text.size() > max_suite_file_bytes) throw SuiteError(path + ": more than 64 MiB: expected a suite file");
     const auto dir = std::filesystem::absolute(path).parent_path().string();
-    return parse_suite(text.str(), path, dir);
+    return parse_suite(text, path, dir);
 }
 
 std::vector<Scene> load_suite_scenes(const Suite& suite) {

@@ -28,6 +28,7 @@ import tomllib
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import digest  # noqa: E402  (the standard library only)
 from printable import terminal  # noqa: E402
+from safe_files import safe_output  # noqa: E402  (the input guard: no FIFO waited on)
 
 
 class Unreadable(Exception):
@@ -49,7 +50,7 @@ def case_numbers(directory, case):
     record, or one whose checksum line is missing or does not match: digest.verified_record_text)."""
     path = os.path.join(directory, case.get("result_file") or "cases/%s.toml" % case["id"])
     try:
-        with open(path, "rb") as f:
+        with safe_output.open_input(path, "rb") as f:
             record = tomllib.loads(digest.verified_record_text(path, f.read()))
     except (OSError, digest.ReportInputError, UnicodeDecodeError, tomllib.TOMLDecodeError):
         return None

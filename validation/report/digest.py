@@ -15,6 +15,8 @@ import tomllib
 import zlib
 from collections import OrderedDict
 
+from safe_files import safe_output  # the input guard: no FIFO waited on
+
 
 class ReportInputError(Exception):
     """A malformed input file; the message names the file and what is wrong with it."""
@@ -58,7 +60,7 @@ def load_summary(directory):
     """summary.json of a validation run, checked for every key the report reads."""
     path = os.path.join(directory, "summary.json")
     try:
-        with open(path, encoding="utf-8") as f:
+        with safe_output.open_input(path, "r", encoding="utf-8") as f:
             summary = json.load(f)
     except OSError as e:
         raise ReportInputError(f"{path}: cannot read: {e.strerror or e}") from None
@@ -126,7 +128,7 @@ def load_case(directory, case):
         raise ReportInputError(f"{os.path.join(directory, 'summary.json')}: case {case['id']}: no result_file")
     path = os.path.join(directory, case["result_file"])
     try:
-        with open(path, "rb") as f:
+        with safe_output.open_input(path, "rb") as f:
             result = tomllib.loads(record_text(path, f.read()))
     except OSError as e:
         raise ReportInputError(f"{path}: cannot read: {e.strerror or e}") from None

@@ -23,7 +23,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import templating  # noqa: E402  (first: it names a missing jinja2 rather than failing later)
 import digest  # noqa: E402
-import safe_output  # noqa: E402
+from safe_files import safe_output  # noqa: E402  (python/collide/safe_output.py)
 import scenes  # noqa: E402
 import sections  # noqa: E402
 import stability  # noqa: E402

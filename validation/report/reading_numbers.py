@@ -17,7 +17,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import digest  # noqa: E402
-import safe_output  # noqa: E402
+from safe_files import safe_output  # noqa: E402  (python/collide/safe_output.py)
 
 MARKER = re.compile(r"<!--n:([a-z0-9_.\[\]]+)-->(.*?)<!--/n-->", re.S)
 
@@ -90,7 +90,7 @@ def numbers(directory):
             n[f"cost.{c['id']}"] = g(c["wall_seconds"] / c["duration"])
     md = os.path.join(directory, "report", "summary.md")
     if os.path.exists(md):
-        with open(md, encoding="utf-8") as f:
+        with safe_output.open_input(md, "r", encoding="utf-8") as f:
             n["summary_md_lines"] = str(len(f.read().splitlines()))
     return n
 
@@ -104,7 +104,7 @@ def main():
         n = numbers(directory)
     except digest.ReportInputError as e:
         sys.exit(f"reading_numbers: {e}")
-    with open(doc, encoding="utf-8") as f:
+    with safe_output.open_input(doc, "r", encoding="utf-8") as f:
         text = f.read()
     keys = MARKER.findall(text)
     unknown = sorted({k for k, _ in keys if k not in n})

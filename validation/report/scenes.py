@@ -13,11 +13,12 @@ import digest
 import figures
 import progress
 import trajectory
+from safe_files import safe_output  # the input guard: no FIFO waited on
 
 
 def scene_box(path):
     try:
-        with open(path, "rb") as f:
+        with safe_output.open_input(path, "rb") as f:
             return tomllib.load(f).get("world", {}).get("box")
     except (OSError, tomllib.TOMLDecodeError):
         return None

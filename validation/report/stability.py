@@ -16,6 +16,7 @@ from matplotlib.patches import Patch  # noqa: E402
 
 import figures  # noqa: E402
 import printable  # noqa: E402
+from safe_files import safe_output  # noqa: E402  (the input guard: no FIFO waited on)
 
 # One fixed colour per outcome; their order, the most severe first, is summary.json's
 # `outcome_order` (the classification's precedence, validation/judge/stability.h).
@@ -39,7 +40,7 @@ def scene_dt(summary, scene):
     path = summary.get("scene_files", {}).get(scene)
     if path not in _SCENE_DT:
         try:
-            with open(path, "rb") as f:
+            with safe_output.open_input(path, "rb") as f:
                 _SCENE_DT[path] = tomllib.load(f).get("run", {}).get("dt")
         except (OSError, TypeError, tomllib.TOMLDecodeError):
             _SCENE_DT[path] = None

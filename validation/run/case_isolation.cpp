@@ -2,6 +2,8 @@
 
 #include "core/io/fd_io.h"
 #include "core/process/descendants.h"
+#include "core/io/input_file.h"
+#include "core/io/output_file.h"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -30,6 +32,10 @@ namespace collide::validation {
 
 std::string result_path(const std::string& result_dir, const std::string& id) {
     return result_dir + "/" + id + ".toml";
+}
+
+std::string case_log_path(const std::string& result_dir, const std::string& id) {
+    return result_dir + "/" + id + ".log";
 }
 
 namespace {
@@ -68,21 +74,38 @@ struct Worker {
 
 using Workers = std::map<pid_t, Worker>;
 
-// The last lines a child printed: usually the sanitizer report or the abort message.
+// The last lines a child printed: usually the sanitizer report or the abort message. Read
+// through the input guard (core/io/input_file.h): a FIFO planted as the log is refused, not
+// waited on for good.
 std::string log_tail(const std::string& path, std::size_t max_chars = 1500) {
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string s = text.str();
-    if (s.size() > max_chars) s = "..." + s.substr(s.size() - max_chars);
-    return s;
+    int fd = -1;
+    try {
+        fd = open_input_file(path);
+    } catch (const InputFileError& e) {
+        return ::access(path.c_str(), F_OK) == 0 ? "(the log is not read: " + e.cause() + ")" : "";
+    }
+    const off_t size = ::lseek(fd, 0, SEEK_END);
+    const off_t start = size > off_t(max_chars) ? size - off_t(max_chars) : 0;
+    std::string s(std::size_t(std::max<off_t>(size - start, 0)), '\0');
+    const ssize_t n = ::pread(fd, s.data(), s.size(), start);
+    ::close(fd);
+    s.resize(n > 0 ? std::size_t(n) : 0);
+    return start > 0 ? "..." + s : s;
 }
 
 // SIGINT, SIGTERM and SIGHUP end the suite, but not before the parent has stopped its cases
 // and removed their temporary files (a terminal's Ctrl-C reaches the children too; they die
 // without cleaning up). The handler only records the signal; the wait loop acts on it.
 volatile std::sig_atomic_t stop_signal = 0;
-extern "C" void record_stop_signal(int signal_number) { stop_signal = signal_number; }
+// A second stop signal ends collide at once, whatever it is doing (the cases die with it:
+// PR_SET_PDEATHSIG): a stop must never depend on the runner reaching its loop.
+extern "C" void record_stop_signal(int signal_number) {
+    if (stop_signal) {
+        ::signal(signal_number, SIG_DFL);
+        ::raise(signal_number);
+    }
+    stop_signal = signal_number;
+}
 constexpr int stop_signals[] = {SIGINT, SIGTERM, SIGHUP};
 
 void stop_cases_and_die(std::map<pid_t, Child>& running, Workers& workers, const IsolationOptions& options,
@@ -115,16 +138,23 @@ void become_case_process(pid_t runner, const Workers& workers) {
     if (::getppid() != runner) ::_exit(4);  // the runner died before the line above took effect
 }
 
-// The case's output goes to its own log so that parallel cases do not interleave.
+// The case's output goes to its own log so that parallel cases do not interleave. The log is
+// opened through the output guard (core/io/output_file.h): a link to a device or a FIFO
+// planted there is refused, not written into (the runner checked the path before the suite
+// started; this refusal is for one planted since).
 void redirect_output_to_log(const CaseSpec& spec, const IsolationOptions& options) {
     std::fflush(nullptr);
-    const std::string log = options.result_dir + "/" + spec.id + ".log";
-    const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (fd >= 0) {
-        ::dup2(fd, STDOUT_FILENO);
-        ::dup2(fd, STDERR_FILENO);
-        ::close(fd);
+    const std::string log = case_log_path(options.result_dir, spec.id);
+    int fd = -1;
+    try {
+        fd = open_output_stream(log);
+    } catch (const OutputFileError& e) {
+        std::fprintf(stderr, "case %s: %s\n", spec.id.c_str(), e.what());
+        ::_exit(3);
     }
+    ::dup2(fd, STDOUT_FILENO);
+    ::dup2(fd, STDERR_FILENO);
+    ::close(fd);
 }
 
 // Runs the case and writes its result file; 0, or 3 when it threw (its message in the log).
@@ -233,7 +263,7 @@ void wait_for_case_end(const std::map<pid_t, Child>& running, const Workers& wor
 
 CaseResult death_result(const Child& child, int wait_status, const IsolationOptions& options) {
     const std::string path = result_path(options.result_dir, child.spec.id);
-    const std::string log = options.result_dir + "/" + child.spec.id + ".log";
+    const std::string log = case_log_path(options.result_dir, child.spec.id);
     const bool ended_cleanly = !child.killed_for_time && WIFEXITED(wait_status) && WEXITSTATUS(wait_status) == 0;
     // A child that died without cleaning up (a signal, the time limit, an error exit) leaves its
     // temporaries. One that exited 0 committed or removed its own, and listing both folders

@@ -58,5 +58,7 @@ void run_isolated_claiming(const IsolationOptions& options, const std::function<
                            const std::function<void()>& idle = [] {});
 
 std::string result_path(const std::string& result_dir, const std::string& id);
+// The case's log (its output) beside its record: RESULT_DIR/ID.log.
+std::string case_log_path(const std::string& result_dir, const std::string& id);
 
 }  // namespace collide::validation

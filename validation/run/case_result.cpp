@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <toml++/toml.h>
 
+#include "core/io/input_file.h"
 #include "core/numerics/crc32.h"
 #include "core/io/hdf5_handle.h"
 #include "core/io/output_file.h"
@@ -138,13 +139,18 @@ void write_case_result(const CaseResult& r, const std::string& path) {
 
 namespace {
 
+// A record is a few kilobytes; the bound keeps a mistaken file from being read whole.
+constexpr std::size_t max_record_bytes = 64u << 20;
+
 // The record's text after its checksum line, once the checksum matches it.
 std::string verified_record_text(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error(path + ": cannot read the case record (" + std::strerror(errno) + ")");
-    std::ostringstream read;
-    read << in.rdbuf();  // one buffered copy, not a character at a time
-    const std::string text = std::move(read).str();
+    std::string text;
+    try {  // the input guard (core/io/input_file.h): a FIFO or a device is refused, not waited on
+        text = read_input_file(path, max_record_bytes);
+    } catch (const InputFileError& e) {
+        throw std::runtime_error(path + ": cannot read the case record (" + e.cause() + ")");
+    }
+    if (text.size() > max_record_bytes) throw std::runtime_error(path + ": more than 64 MiB: not a case record");
     const std::size_t newline = text.find('\n');
     if (text.rfind(checksum_prefix, 0) != 0 || newline == std::string::npos)
         throw std::runtime_error(path + ": damaged case record: no checksum line (cut short, edited, or written "

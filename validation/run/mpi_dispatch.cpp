@@ -9,10 +9,12 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <optional>
 #include <set>
 #include <thread>
 
+#include "core/io/input_file.h"
 #include "core/io/output_file.h"
 
 namespace collide::validation {
@@ -36,9 +38,10 @@ void wait_for_all_ranks() {
     for (int done = 0; MPI_Test(&barrier, &done, MPI_STATUS_IGNORE), !done;) nap();
 }
 
+// A case's record or run file, through the input guard (core/io/input_file.h): whole, however
+// large (a run with frames), but never a FIFO or a device put in its place.
 std::string read_bytes(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), {}};
+    return read_input_file(path, std::numeric_limits<std::size_t>::max() / 2);
 }
 
 std::string receive_bytes(int source, int tag) {

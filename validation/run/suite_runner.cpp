@@ -148,8 +148,9 @@ std::map<std::string, CaseResult> finished_results(const std::vector<CaseSpec>& 
 class OutputDirectoryLock {
 public:
     explicit OutputDirectoryLock(const std::string& dir) : path_(dir + "/.lock") {
-        fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-        if (fd_ < 0) throw std::runtime_error(path_ + ": cannot create the lock file (" + std::strerror(errno) + ")");
+        // Through the output guard: a `.lock` that is a link (out of the directory, to a device)
+        // is refused, not followed and truncated (core/io/output_file.h).
+        fd_ = open_output_stream(path_, StreamStart::as_it_is);
         if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
             const std::string holder = holder_pid();
             ::close(fd_);
@@ -202,8 +203,10 @@ void check_output_places(const std::string& dir, const std::vector<CaseSpec>& sp
     for (const char* sub : {"/cases", "/runs"}) check_output_directory(dir + sub);
     if (!fs::is_directory(dir)) return;  // created empty: nothing in it to refuse
     for (const char* file : {"/summary.json", "/junit.xml"}) check_output_path(dir + file);
+    check_output_stream_path(dir + "/.lock");
     for (const CaseSpec& spec : specs) {
         if (fs::is_directory(dir + "/cases")) check_output_path(result_path(dir + "/cases", spec.id));
+        if (fs::is_directory(dir + "/cases")) check_output_stream_path(case_log_path(dir + "/cases", spec.id));
         if (hdf5 && fs::is_directory(dir + "/runs")) check_output_path(dir + "/runs/" + spec.id + ".h5");
     }
 }
@@ -220,6 +223,14 @@ nlohmann::json explain_energy_jumps(const Suite& suite, const std::vector<Backen
         std::fprintf(options.progress, "looking for energy jumps in %zu drawn case(s), explaining each one found\n",
                      drawn.size());
     return report_energy_jumps(options.output_dir, drawn, &suite, "", available, outcome.jobs)["jumps"];
+}
+
+// A kill during the summary's rename leaves its temporary: removed on --resume, and said.
+void say_removed(const std::vector<std::string>& names, const std::string& dir, std::FILE* progress) {
+    if (names.empty() || !progress) return;
+    std::fprintf(progress, "resume: removed %zu temporary file(s) an interrupted run left in %s:", names.size(), dir.c_str());
+    for (const std::string& name : names) std::fprintf(progress, " %s", name.c_str());
+    std::fprintf(progress, "\n");
 }
 
 }  // namespace
@@ -251,6 +262,7 @@ SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& avail
     std::map<std::string, CaseResult> results;
     if (options.resume && judges) {
         remove_temporaries(runs_dir, result_dir);  // left by a SIGKILL: no process cleaned them
+        say_removed(remove_stale_temporaries(options.output_dir), options.output_dir, options.progress);
         results = finished_results(specs, options.output_dir, options.progress);
     }
 

@@ -13,8 +13,18 @@ write_text(path, text) / write_bytes(path, data) write a temporary ".NAME.tmp-PI
 target's own directory (created with mode 0666 less the umask), fsync it and os.replace() it
 over the target: a reader sees the old file or the new one, never half of one. A symbolic link
 is followed, so the file it points to is replaced and the link stays a link. On any failure
-the temporary file is removed.
+the temporary file is removed. atomic_output(path) does the same for a writer that writes a
+file by its name (the GSD writer): it yields the temporary's path.
+
+The readers' side (core/io/input_file.h in C++): open_input(path, mode) opens only a regular
+file (or a link to one) and never waits on a FIFO; check_input_file(path) checks a file another
+library opens (h5py). A FIFO, a device or a socket raises InputPathError, an OSError whose
+strerror says what the path is.
+
+This module needs nothing but the standard library: the report renderer (validation/report)
+and the GSD writer import it from this folder.
 """
+import contextlib
 import errno
 import itertools
 import os
@@ -156,18 +166,70 @@ def make_output_directory(path):
     os.makedirs(path, exist_ok=True)
 
 
-def write_bytes(path, data):
-    """`data` written atomically at `path` (module docstring)."""
+class InputPathError(OSError):
+    """An input that is no regular file; strerror names what it is, filename the path."""
+
+
+def _not_regular(path, mode):
+    what = "a directory, not a file" if stat.S_ISDIR(mode) else \
+        f"not a regular file (it is {_kind(mode)}); collide reads only regular files"
+    return InputPathError(errno.EINVAL, what, os.fspath(path))
+
+
+def check_input_file(path):
+    """Raises InputPathError (or the OSError of a failed stat) unless `path` is a regular file."""
+    st = os.stat(path)
+    if not stat.S_ISREG(st.st_mode):
+        raise _not_regular(path, st.st_mode)
+
+
+def open_input(path, mode="rb", encoding=None):
+    """open(path, mode) for reading, refusing what is no regular file without waiting on it: the
+    open is non-blocking, and what was opened is checked (a FIFO put there after a check too)."""
+    fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK | os.O_CLOEXEC | os.O_NOCTTY)
+    try:
+        st = os.fstat(fd)
+        if not stat.S_ISREG(st.st_mode):
+            raise _not_regular(path, st.st_mode)
+        os.set_blocking(fd, True)
+        return os.fdopen(fd, mode, encoding=encoding)
+    except BaseException:
+        os.close(fd)
+        raise
+
+
+@contextlib.contextmanager
+def atomic_output(path):
+    """Yields a temporary path in the target's directory for the caller to write; when the block
+    ends without an exception, the target is checked again (something may have been put there
+    meanwhile) and the temporary renamed over it (a link's target, the link kept). The
+    temporary is removed on any failure."""
     path = os.fspath(path)
     check_output_path(path)
     target = _followed(path)
     temporary = os.path.join(_directory_of(target),
                              f".{os.path.basename(target)}.tmp-{os.getpid()}-{next(_counter)}")
     try:
-        fd = os.open(temporary, os.O_WRONLY | os.O_CREAT | os.O_EXCL | os.O_CLOEXEC, 0o666)
+        os.close(os.open(temporary, os.O_WRONLY | os.O_CREAT | os.O_EXCL | os.O_CLOEXEC, 0o666))
     except OSError as e:
         _refuse(path, f"cannot create '{temporary}' ({e.strerror})")
     try:
+        yield temporary
+        _check_existing(path)
+        os.replace(temporary, target)
+    except OSError as e:
+        if isinstance(e, OutputPathError):
+            raise
+        _refuse(path, e.strerror or str(e))
+    finally:
+        if os.path.lexists(temporary):
+            os.unlink(temporary)
+
+
+def write_bytes(path, data):
+    """`data` written atomically at `path` (module docstring)."""
+    with atomic_output(path) as temporary:
+        fd = os.open(temporary, os.O_WRONLY | os.O_CLOEXEC)
         try:
             view = memoryview(data)
             while view:
@@ -175,13 +237,6 @@ def write_bytes(path, data):
             os.fsync(fd)  # complete on disk before the rename, even if the power fails
         finally:
             os.close(fd)
-        _check_existing(path)  # something else may have been put there meanwhile
-        os.replace(temporary, target)
-    except OSError as e:
-        _refuse(path, e.strerror or str(e))
-    finally:
-        if os.path.lexists(temporary):
-            os.unlink(temporary)
 
 
 def write_text(path, text, encoding="utf-8"):
