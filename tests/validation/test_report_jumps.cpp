@@ -51,7 +51,7 @@ TEST(ReportJumps, DrawnSteppedCasesOnlyAndTwinsExplainedOnce) {
         record("gas", "cpu", 2e-3, 1),                                     // not drawn
         record("calm", "step", 1e-3, 1)};                                  // energy drift not judged
     nlohmann::json summary = {{"checks", nlohmann::json::array()}, {"cases", nlohmann::json::array()},
-                              {"backends", {{"event-plain", {{"event_driven", true}}}, {"cpu", {{"event_driven", false}}}}}};
+                              {"backends", {{"event-plain", {{"exact", true}}}, {"cpu", {{"exact", false}}}}}};
     for (const CaseResult& r : records) {
         write_case_result(r, dir.file("cases/" + r.spec.id + ".toml"));
         summary["cases"].push_back({{"id", r.spec.id}, {"scene", r.spec.scene}, {"backend", r.spec.backend},

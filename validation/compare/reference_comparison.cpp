@@ -7,6 +7,7 @@
 #include <limits>
 #include <sstream>
 
+#include "validation/compare/reference_runs.h"
 #include "validation/judge/check_table.h"
 #include "validation/judge/observables.h"
 #include "validation/judge/statistics.h"
@@ -59,9 +60,6 @@ void judge_at_most(CheckResult& c, double value, double tolerance, const std::st
         c.detail = s.str();
     }
 }
-
-// A case's reference runs share its scene and scene-parameter values.
-std::string reference_key(const CaseSpec& spec) { return spec.scene + "|" + parameter_label(spec); }
 
 std::vector<double> replicate_values(const Group& g, double (*value)(const CaseResult&)) {
     std::vector<double> out;
@@ -160,7 +158,8 @@ std::optional<StatisticalDifference> statistical_difference(const ReplicateMeans
 
 Comparisons compare_with_reference(const Suite& suite, const std::vector<CaseResult>& results,
                                    const std::vector<SceneFeatures>& features,
-                                   const std::map<std::string, Tolerances>& tolerances) {
+                                   const std::map<std::string, Tolerances>& tolerances,
+                                   const std::map<std::string, const BackendInfo*>& declared) {
     Comparisons out;
     // Groups in first-seen order, so the report follows the suite's order.
     std::vector<Group> groups;
@@ -221,7 +220,7 @@ Comparisons compare_with_reference(const Suite& suite, const std::vector<CaseRes
             for (const CaseResult* r : g.cases) {
                 const CaseResult* partner = nullptr;
                 for (const CaseResult* q : ref->cases)
-                    if (q->spec.seed == r->spec.seed && (!q->spec.dt || q->spec.dt == r->spec.dt)) partner = q;
+                    if (is_reference_run_of(q->spec, r->spec)) partner = q;
                 double e = std::nan("");
                 if (r->finished() && partner && partner->finished()) e = trajectory_error(*r, *partner);
                 if (!(e <= worst)) worst = e;
@@ -245,7 +244,7 @@ Comparisons compare_with_reference(const Suite& suite, const std::vector<CaseRes
             // statistics are judged against it (statistics_bias_model.h); every other backend
             // (box2d is not the stepped rule) against equal means.
             std::function<BiasPrediction(const MeanAndError&)> pressure_model, rate_model;
-            if (follows_stepping_rules(spec.backend)) {
+            if (declared.at(spec.backend)->stepping_rule()) {
                 const double h = g.cases.front()->dt / std::max(1, g.cases.front()->substeps);
                 pressure_model = [h](const MeanAndError& nu) {
                     return predicted_pressure_bias(nu.mean, nu.standard_error, h, contact_shell);

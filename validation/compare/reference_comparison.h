@@ -59,10 +59,13 @@ struct Comparisons {
     std::vector<WorkPrecisionLine> work_precision;
 };
 
-// `tolerances` maps a backend name to its tolerances; `features` is parallel to suite.scenes.
+// `tolerances` maps a backend name to its tolerances and `declared` to what it declares (a
+// stepping rule's statistics are held to the rule's predicted bias); `features` is parallel to
+// suite.scenes.
 Comparisons compare_with_reference(const Suite& suite, const std::vector<CaseResult>& results,
                                    const std::vector<SceneFeatures>& features,
-                                   const std::map<std::string, Tolerances>& tolerances);
+                                   const std::map<std::string, Tolerances>& tolerances,
+                                   const std::map<std::string, const BackendInfo*>& declared);
 
 // max over common output times and disks of the (minimum-image) distance between two
 // trajectories, divided by the smallest radius; NaN when they cannot be compared.

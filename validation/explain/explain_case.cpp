@@ -55,7 +55,7 @@ ExplainedCase explain_case(const std::string& dir, const Suite& suite, const std
                            const std::vector<BackendInfo>& backends, const std::vector<SceneOverride>& overrides,
                            double from, double to, const std::function<void(double, double)>& on_progress) {
     ReplayedCase c = replay_case(suite, case_id, backends, overrides);
-    if (c.backend.event_driven)  // exact: from collision to collision
+    if (c.backend.exact)  // exact: from collision to collision
         throw std::runtime_error("case " + c.spec.id + " ran on '" + c.backend.name +
                                  "', which has no time steps to look inside");
     const CaseResult record = read_case_result(dir + "/cases/" + c.spec.id + ".toml");

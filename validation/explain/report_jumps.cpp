@@ -28,10 +28,21 @@ std::set<std::string> scenes_judging_energy(const nlohmann::json& summary) {
     return scenes;
 }
 
-bool event_driven(const nlohmann::json& summary, const std::string& backend) {
+// Whether the backend declares itself exact (summary.json's backends.NAME.exact): it has no
+// step to look inside.
+bool exact(const nlohmann::json& summary, const std::string& backend) {
     const auto backends = summary.find("backends");
     if (backends == summary.end() || !backends->contains(backend)) return false;
-    return backends->at(backend).value("event_driven", false);
+    return backends->at(backend).value("exact", false);
+}
+
+// Whether the case's backend (a variant: its base's) uses its device one process at a time
+// (BackendInfo::one_device).
+bool uses_one_device(const std::vector<BackendInfo>& backends, const std::string& name) {
+    const std::string base = name.substr(0, name.find('['));
+    for (const BackendInfo& b : backends)
+        if (b.name == name || b.name == base) return b.one_device;
+    return false;
 }
 
 // The cases the report draws (summary.json's `drawn`) whose jumps are explained, in its order.
@@ -40,7 +51,7 @@ std::vector<DrawnCase> cases_to_explain(const nlohmann::json& summary) {
     std::vector<DrawnCase> out;
     for (const auto& c : summary.at("cases")) {
         DrawnCase d{c.at("id"), c.at("scene"), c.at("backend")};
-        if (c.value("drawn", false) && scenes.count(d.scene) && !event_driven(summary, d.backend)) out.push_back(d);
+        if (c.value("drawn", false) && scenes.count(d.scene) && !exact(summary, d.backend)) out.push_back(d);
     }
     return out;
 }
@@ -135,7 +146,7 @@ nlohmann::json report_energy_jumps(const std::string& dir, const nlohmann::json&
                 break;
             }
     std::vector<nlohmann::json> jumps(cases.size());
-    std::mutex opencl;
+    std::mutex device;
     for_each_index(cases.size(), jobs, [&](std::size_t k) {
         const DrawnCase& d = cases[k];
         if (!found[k].unreadable.empty()) {
@@ -150,8 +161,8 @@ nlohmann::json report_energy_jumps(const std::string& dir, const nlohmann::json&
             return;
         }
         try {
-            std::unique_lock<std::mutex> one_device_at_a_time(opencl, std::defer_lock);
-            if (d.backend.rfind("opencl", 0) == 0) one_device_at_a_time.lock();
+            std::unique_lock<std::mutex> one_device_at_a_time(device, std::defer_lock);
+            if (uses_one_device(backends, d.backend)) one_device_at_a_time.lock();
             jumps[k]["explained"] = explanation_json(
                 explain_case(dir, *suite, d.id, backends, {}, found[k].jump->t0, found[k].jump->t1));
         } catch (const std::exception& e) {

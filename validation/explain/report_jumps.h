@@ -4,8 +4,8 @@
 //
 // Which cases: the cases the report draws (summary.json's `drawn`, validation/summary/drawn_cases.h)
 // of every scene whose energy_drift check was judged (passed or failed, not left out), on every
-// backend with time steps (summary.json's `event_driven` false: an exact solver has no step to
-// look inside, BackendInfo::event_driven). A case whose recorded series has a jump
+// backend with time steps (summary.json's `exact` false: an exact solver has no step to
+// look inside, BackendInfo::exact). A case whose recorded series has a jump
 // (largest_interval_jump) is rerun over that output interval and its step named (explain_case);
 // a rerun that fails is kept with its reason, never dropped.
 //

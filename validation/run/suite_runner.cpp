@@ -16,6 +16,8 @@
 #include <thread>
 #include <sstream>
 
+#include "validation/compare/reference_runs.h"
+#include "validation/judge/exact_limits.h"
 #include "validation/plan/backend_variant.h"
 #include "validation/run/case_execution.h"
 #include "validation/run/case_isolation.h"
@@ -258,20 +260,24 @@ SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& avail
     outcome.execution = options.dispatch ? options.dispatch->execution() : serial_execution(outcome.jobs);
     outcome.cases_run = to_run.size();
 
-    // Judge every case in plan order, then the comparisons with the reference.
+    // Judge every case in plan order, then the comparisons with the reference. Each case's
+    // limits follow from what its backend declares, at the case's scale (an exact solver's
+    // counts its collisions from the reference run: exact_limits.h).
     std::map<std::string, Tolerances> tolerances;
     for (const BackendInfo& b : backends) {
-        tolerances[b.name] = suite.tolerances.for_backend(b.name, b.precision);
-        outcome.precision[b.name] = b.precision;
-        outcome.event_driven[b.name] = b.event_driven;
+        tolerances[b.name] = suite.tolerances.for_backend(b);
+        outcome.declared.emplace(b.name, b);
     }
-    for (const CaseSpec& spec : specs) {
-        outcome.cases.push_back(results.at(spec.id));
-        const auto checks = case_checks(outcome.cases.back(), case_scenes.feature(spec), tolerances.at(spec.backend));
+    for (const CaseSpec& spec : specs) outcome.cases.push_back(results.at(spec.id));
+    const ReferenceRuns reference_runs(outcome.cases);
+    for (const CaseResult& r : outcome.cases) {
+        const BackendInfo& backend = *by_name.at(r.spec.backend);
+        const RoundingScale scale = rounding_scale(r, case_scenes.scene(r.spec), reference_runs.of(r.spec));
+        const auto checks = case_checks(r, case_scenes.feature(r.spec), suite.tolerances.for_case(backend, scale), backend);
         outcome.checks.insert(outcome.checks.end(), checks.begin(), checks.end());
     }
     if (suite.stability) classify_all(outcome, case_scenes, tolerances);
-    Comparisons comparisons = compare_with_reference(suite, outcome.cases, features, tolerances);
+    Comparisons comparisons = compare_with_reference(suite, outcome.cases, features, tolerances, by_name);
     outcome.checks.insert(outcome.checks.end(), comparisons.checks.begin(), comparisons.checks.end());
     apply_variant_leave_outs(outcome.checks, suite.variants);
     outcome.work_precision = std::move(comparisons.work_precision);

@@ -44,8 +44,8 @@ struct SuiteOutcome {
     int jobs = 1;  // the cases run at the same time in this process (options.jobs resolved)
     double wall_seconds = 0;
     std::map<std::string, std::string> execution;  // ranks, hosts, jobs per rank (summary provenance)
-    std::map<std::string, std::string> precision;  // backend -> "double", "float", ... (BackendInfo)
-    std::map<std::string, bool> event_driven;      // backend -> BackendInfo::event_driven
+    // backend -> what it declares (precision, exact, rule, conserves: BackendInfo)
+    std::map<std::string, BackendInfo> declared;
     std::size_t count(CheckStatus s) const;
     std::size_t physics_failures() const;
     bool passed() const { return count(CheckStatus::fail) == 0 && physics_failures() == 0; }
