@@ -45,14 +45,14 @@ struct BackendInfo {
     // "integrate-first", or "collide-first|integrate-first" for one that runs the rule the
     // scene's [run] order names. Such a backend's statistics are judged against the rule's
     // predicted bias and its kinetic energy against the rule's energy-loss model.
-    std::string rule;
+    std::string rule = "";
     // The quantities its method conserves up to rounding ("momentum", "energy") where the
     // scene's physics conserves them.
-    std::vector<std::string> conserves;
+    std::vector<std::string> conserves = {};
     // A backend that is neither exact nor a stepping rule may bring limits of its own, derived
     // for its method (tolerance key -> value; box2d: docs/validation.md). Empty: the loose
     // limits of a solver that claims nothing (tolerances.cpp).
-    std::vector<std::pair<std::string, double>> limits;
+    std::vector<std::pair<std::string, double>> limits = {};
     // Whether its cases should use its device one at a time when replayed side by side
     // (an OpenCL device: `collide report` explaining energy jumps).
     bool one_device = false;
