@@ -77,7 +77,7 @@ protected:
     std::vector<BackendInfo> join(const std::string& table) const {
         Suite s = parse(table);
         for (auto& spec : s.solvers) spec.directory = dir_.string();
-        return backends_with_solvers(s, {}, {"python3", std::string(COLLIDE_SOURCE_DIR) + "/python/collide/solver_runner.py"});
+        return backends_with_solvers(s, {}, {COLLIDE_PYTHON, std::string(COLLIDE_SOURCE_DIR) + "/python/collide/solver_runner.py"});
     }
     std::filesystem::path dir_;
 };
