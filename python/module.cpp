@@ -348,7 +348,7 @@ PYBIND11_MODULE(_collide, m) {
     m.def("_read_run", &read_run, py::arg("path"), py::arg("frames"));
     m.def("_export", &export_run, py::arg("run"), py::arg("out"), py::arg("format"));
     m.def("_validate", [](const std::string& suite, const std::string& out, int jobs, bool resume,
-                          const std::vector<std::tuple<std::string, std::string, std::string, std::string>>& solvers,
+                          const std::vector<std::tuple<std::string, std::string, std::string, std::string, bool, std::string>>& solvers,
                           const std::string& python, const std::string& runner) {
         return validate(suite, out, jobs, resume, solvers, validation::PythonRunner{python, runner});
     }, py::arg("suite"), py::arg("out"), py::arg("jobs"), py::arg("resume"), py::arg("solvers"), py::arg("python"),
