@@ -13,27 +13,44 @@
 namespace collide {
 
 const std::vector<BackendInfo>& all_backends() {
+    // What each method conserves up to rounding where the scene's physics does: an exact
+    // collision conserves momentum and energy; the stepped rules exchange equal and opposite
+    // impulses (momentum) but lose or gain energy when a disk takes two impulses from one
+    // Jacobi snapshot (docs/stepping-rules.md, "Energy at e = 1").
+    const std::vector<std::string> momentum_and_energy = {"momentum", "energy"}, momentum = {"momentum"};
+    const std::string either_rule = "collide-first|integrate-first";  // the scene's [run] order
     static const std::vector<BackendInfo> backends = {
         {.name = "event", .precision = "double",
          .description = "exact event-driven hard disks (EDMD), serial: the reference", .supports = &EventSolver::supports,
          .create = [](const BackendOptions&) -> std::unique_ptr<Solver> { return std::make_unique<EventSolver>(); },
-         .event_driven = true},
+         .exact = true, .conserves = momentum_and_energy},
         {.name = "event-plain", .precision = "double",
          .description = "the same exact event-driven method written plainly (binary heap, cell list), serial",
          .supports = &PlainEventSolver::supports,
          .create = [](const BackendOptions&) -> std::unique_ptr<Solver> { return std::make_unique<PlainEventSolver>(); },
          .in_all = false,  // not in a suite's "all" (BackendInfo::in_all)
-         .event_driven = true},
-        {"step", "double", "the two stepping rules (collide-first, integrate-first) in double, serial: the readable reference",
-         [](const Scene&) -> std::optional<std::string> { return std::nullopt; },
-         [](const BackendOptions&) -> std::unique_ptr<Solver> { return std::make_unique<StepSolver>(); }, false},
-        {"cpu", "float", "the same rules in float, multi-threaded (OpenMP), loops specialised on the scene's features",
-         [](const Scene&) -> std::optional<std::string> { return std::nullopt; },
-         [](const BackendOptions& o) -> std::unique_ptr<Solver> { return std::make_unique<cpu::CpuSolver>(o); }, false},
-        {"opencl", "float|double", "the same rules as OpenCL kernels, float or --real double",
-         [](const Scene&) -> std::optional<std::string> { return std::nullopt; }, opencl::make_opencl_solver, false},
-        {"box2d", "float", "Box2D 2.4 world of circle bodies, the baseline", box2d_supports,
-         [](const BackendOptions& o) -> std::unique_ptr<Solver> { return std::make_unique<Box2dSolver>(o); }, true},
+         .exact = true, .conserves = momentum_and_energy},
+        {.name = "step", .precision = "double",
+         .description = "the two stepping rules (collide-first, integrate-first) in double, serial: the readable reference",
+         .supports = [](const Scene&) -> std::optional<std::string> { return std::nullopt; },
+         .create = [](const BackendOptions&) -> std::unique_ptr<Solver> { return std::make_unique<StepSolver>(); },
+         .rule = either_rule, .conserves = momentum},
+        {.name = "cpu", .precision = "float",
+         .description = "the same rules in float, multi-threaded (OpenMP), loops specialised on the scene's features",
+         .supports = [](const Scene&) -> std::optional<std::string> { return std::nullopt; },
+         .create = [](const BackendOptions& o) -> std::unique_ptr<Solver> { return std::make_unique<cpu::CpuSolver>(o); },
+         .rule = either_rule, .conserves = momentum},
+        {.name = "opencl", .precision = "float|double", .description = "the same rules as OpenCL kernels, float or --real double",
+         .supports = [](const Scene&) -> std::optional<std::string> { return std::nullopt; },
+         .create = opencl::make_opencl_solver, .rule = either_rule, .conserves = momentum, .one_device = true},
+        // Box2D is neither exact nor the stepping rules: its limits are its own, derived from its
+        // sequential impulses, restitution threshold and linear slop (docs/validation.md, "box2d").
+        {.name = "box2d", .precision = "float", .description = "Box2D 2.4 world of circle bodies, the baseline",
+         .supports = box2d_supports,
+         .create = [](const BackendOptions& o) -> std::unique_ptr<Solver> { return std::make_unique<Box2dSolver>(o); },
+         .sweeps_iterations = true,
+         .limits = {{"momentum_drift", 1e-4}, {"energy_drift", 5e-2}, {"max_overlap", 0.25}, {"mean_overlap", 0.05},
+                    {"overlapping_pairs_per_disk", 1.0}, {"wall_penetration", 0.25}, {"trajectory_error", 1.0}}},
     };
     return backends;
 }

@@ -2,19 +2,27 @@
 // the conformance tests find every backend by name without knowing it in advance.
 #pragma once
 
+#include <algorithm>
 #include <functional>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/solver.h"
 
 namespace collide {
 
+// What a solver claims about itself, as data (docs/validation.md, "What a solver claims").
+// Every judgement reads these and none tests a backend's name: the limits of its checks
+// (validation/judge/tolerances.h), whether its statistics are held to a stepping rule's
+// predicted bias, whether `collide explain` can look inside one of its steps.
 struct BackendInfo {
-    std::string name;         // "event", "step", ...
-    std::string precision;    // "double", "float", "float|double"
+    std::string name;         // its name in every output
+    // The floating-point type it computes in: "double", "float", or "float|double" for a backend
+    // that offers both and runs the first-listed one unless asked (a validation case does not ask).
+    std::string precision;
     std::string description;  // one line
     // Empty if the backend can run the scene, otherwise the reason it cannot
     // (e.g. box2d has no periodic boundaries). The scene is then left out, not faked.
@@ -28,11 +36,35 @@ struct BackendInfo {
     // measure every backend against the exact dynamics once (`event`), and the conformance
     // tests hold the plain exact solver against the tuned one. A suite that names it runs it.
     bool in_all = true;
-    // Whether the backend is event-driven: it jumps from collision to collision and has no time
-    // step dt. `collide explain` (and so the report's energy jumps) looks inside one step, so it
-    // refuses such a backend's cases; summary.json records it per backend (`event_driven`).
-    bool event_driven = false;
+    // Exact (event-driven): it jumps from collision to collision, resolves every contact at its
+    // time and has no time step dt. Its conservation and overlap checks are held to rounding
+    // (validation/judge/exact_limits.h); `collide explain` (and so the report's energy jumps)
+    // looks inside one step, so it refuses such a backend's cases.
+    bool exact = false;
+    // The stepping rule of docs/stepping-rules.md it implements: "" (none), "collide-first",
+    // "integrate-first", or "collide-first|integrate-first" for one that runs the rule the
+    // scene's [run] order names. Such a backend's statistics are judged against the rule's
+    // predicted bias and its kinetic energy against the rule's energy-loss model.
+    std::string rule = "";
+    // The quantities its method conserves up to rounding ("momentum", "energy") where the
+    // scene's physics conserves them.
+    std::vector<std::string> conserves = {};
+    // A backend that is neither exact nor a stepping rule may bring limits of its own, derived
+    // for its method (tolerance key -> value; box2d: docs/validation.md). Empty: the loose
+    // limits of a solver that claims nothing (tolerances.cpp).
+    std::vector<std::pair<std::string, double>> limits = {};
+    // Whether its cases should use its device one at a time when replayed side by side
+    // (an OpenCL device: `collide report` explaining energy jumps).
+    bool one_device = false;
+
+    bool stepping_rule() const { return !rule.empty(); }
+    bool claims_to_conserve(const std::string& quantity) const {
+        return std::find(conserves.begin(), conserves.end(), quantity) != conserves.end();
+    }
+    // The precision its validation cases run in: the first of `precision` ("float|double": float).
+    bool single_precision() const { return precision.rfind("float", 0) == 0; }
 };
+
 
 // Every backend compiled into this build, in a fixed order (event first: the reference).
 // Both functions are defined beside the list itself, in apps/all_backends.cpp (library

@@ -153,6 +153,7 @@ struct Answer {
     bool has_times = false;
     std::int64_t steps = 0, contacts = 0;
     std::string version, refusal;
+    std::string precision;  // "" when result.txt does not say
 };
 
 bool whole_number(const std::string& word, std::int64_t& value) {
@@ -203,6 +204,10 @@ Answer parse_answer(const std::string& text) {
             std::int64_t v = 0;
             if (!whole_number(word, v)) throw std::runtime_error(where + key + ": expected a whole number >= 0");
             (key == "steps" ? a.steps : a.contacts) = v;
+        } else if (key == "precision") {
+            a.precision = rest_of_line(in);
+            if (const std::string why = precision_problem(a.precision); !why.empty())
+                throw std::runtime_error(where + "precision: expected " + why);
         } else if (key == "version") {
             a.version = rest_of_line(in);
         } else if (key == "refuse") {
@@ -210,7 +215,7 @@ Answer parse_answer(const std::string& text) {
             if (a.refusal.empty()) throw std::runtime_error(where + "refuse: expected the reason after the word");
         } else {
             throw std::runtime_error(where + "unknown key '" + printable_tail(key, 40) +
-                                     "' (expected times, steps, contacts, version or refuse)");
+                                     "' (expected times, steps, contacts, precision, version or refuse)");
         }
     }
     return a;
@@ -262,6 +267,8 @@ public:
         if (!spec_.directory.empty()) p["solver_directory"] = spec_.directory;
         if (!spec_.python_class.empty()) p["solver_python_class"] = spec_.python_class;
         if (!spec_.rule.empty()) p["solver_rule"] = spec_.rule;
+        if (spec_.exact) p["solver_exact"] = "true";
+        p["solver_precision"] = spec_.computed_precision();
         if (!version_.empty()) p["solver_version"] = version_;
         if (!files_sha256_.empty()) p["solver_files_sha256"] = files_sha256_;
         return p;
@@ -309,6 +316,12 @@ private:
             fault(e.what());
         }
         if (!answer.version.empty()) version_ = answer.version;
+        // The limits it is judged by follow from the precision it declared: an answer computed
+        // in another one would be judged by the wrong limits.
+        if (!answer.precision.empty() && answer.precision != spec_.computed_precision())
+            fault("result.txt says precision " + answer.precision + ", but the solver is declared " + spec_.computed_precision() +
+                  " (declare it: precision = \"" + answer.precision + "\" in its [solver] table, --solver-precision " +
+                  spec_.name + "=" + answer.precision + ", or the class's `precision` attribute)");
         if (!answer.refusal.empty()) throw SceneRefused(spec_.name + " refuses this scene: " + answer.refusal);
         check_times(answer, times);
         store(dir.file("states.npy"), times);
@@ -415,6 +428,18 @@ std::string rule_problem(const std::string& rule) {
     return "\"collide-first\" or \"integrate-first\" (the stepping rule it implements), not \"" + rule + "\"";
 }
 
+std::string precision_problem(const std::string& precision) {
+    if (precision.empty() || precision == "double" || precision == "float") return "";
+    return "\"double\" or \"float\" (the precision it computes in), not \"" + printable_tail(precision, 40) + "\"";
+}
+
+std::string claims_problem(bool exact, const std::string& rule) {
+    if (exact && !rule.empty())
+        return "exact together with rule \"" + rule + "\": an exact solver has no time step, a stepping rule has one; "
+               "declare one of them";
+    return "";
+}
+
 std::string spec_problem(const ExternalSolverSpec& spec) {
     if (std::string why = solver_name_problem(spec.name); !why.empty()) return "expected " + why;
     if (spec.command.empty() == spec.python_class.empty())
@@ -422,7 +447,8 @@ std::string spec_problem(const ExternalSolverSpec& spec) {
     if (!spec.python_class.empty() && spec.python_class.find(':') == std::string::npos)
         return "python: expected \"module:Class\" or \"file.py:Class\", not \"" + spec.python_class + "\"";
     if (std::string why = rule_problem(spec.rule); !why.empty()) return "rule: expected " + why;
-    return "";
+    if (std::string why = precision_problem(spec.precision); !why.empty()) return "precision: expected " + why;
+    return claims_problem(spec.exact, spec.rule);
 }
 
 ExternalSolverSpec parse_solver_option(const std::string& text) {
@@ -447,7 +473,11 @@ std::unique_ptr<Solver> make_external_solver(const ExternalSolverSpec& spec) {
 BackendInfo external_backend(const ExternalSolverSpec& spec) {
     BackendInfo info;
     info.name = spec.name;
-    info.precision = "double";
+    info.precision = spec.computed_precision();
+    info.exact = spec.exact;
+    info.rule = spec.rule;
+    if (spec.exact) info.conserves = {"momentum", "energy"};
+    else if (!spec.rule.empty()) info.conserves = {"momentum"};
     info.description = "outside solver: " + (spec.python_class.empty() ? spec.command : spec.python_class);
     info.supports = [](const Scene&) -> std::optional<std::string> { return std::nullopt; };
     info.create = [spec](const BackendOptions&) { return make_external_solver(spec); };

@@ -30,6 +30,12 @@ struct ExternalSolverSpec {
     // "" or the stepping rule it implements ("collide-first", "integrate-first"): such a solver is
     // judged as the built-in stepped backends are (the statistics against the predicted bias).
     std::string rule;
+    // Declared exact (event-driven: no time step, every contact resolved at its time): held to
+    // what exact dynamics allows in its precision (docs/validation.md, "What a solver claims").
+    // Exact with a rule is a contradiction, refused.
+    bool exact = false;
+    std::string precision;  // "double", "float", or "" (not declared: double)
+    std::string computed_precision() const { return precision.empty() ? "double" : precision; }
     double call_time_limit = 60;  // seconds per program call
     std::string origin;       // where it was named, for messages ("--solver", "suite.toml:12")
 };
@@ -46,8 +52,15 @@ std::string solver_name_problem(const std::string& name);
 // "" or what is wrong with a rule name.
 std::string rule_problem(const std::string& rule);
 
+// "" or what is wrong with a precision name ("" is not declared: double).
+std::string precision_problem(const std::string& precision);
+
+// "" or the contradiction between the declarations: exact (no time step) with a stepping rule.
+std::string claims_problem(bool exact, const std::string& rule);
+
 // "" when `spec` is complete and valid (name, exactly one of command and python_class, a class
-// as "module:Class", the rule), else what is wrong, e.g. "rule: expected ...". Every way a
+// as "module:Class", the rule, the precision, no contradiction), else what is wrong, e.g.
+// "rule: expected ...". Every way a
 // solver is named (a suite's [solver.NAME], --solver, Python's solvers=) is checked by it;
 // the suite file also names the key's line.
 std::string spec_problem(const ExternalSolverSpec& spec);
@@ -55,9 +68,10 @@ std::string spec_problem(const ExternalSolverSpec& spec);
 // The spec of NAME=COMMAND (`--solver`); throws std::invalid_argument naming the fault.
 ExternalSolverSpec parse_solver_option(const std::string& text);
 
-// The registry entry of an outside solver: supports() accepts every scene (the program may
-// refuse one at run time by answering "refuse REASON": the case is then left out), create()
-// makes an ExternalSolver.
+// The registry entry of an outside solver: what it declares (exact, rule, precision; an exact
+// solver conserves momentum and energy, a stepping rule momentum), supports() accepts every
+// scene (the program may refuse one at run time by answering "refuse REASON": the case is then
+// left out), create() makes an ExternalSolver.
 BackendInfo external_backend(const ExternalSolverSpec& spec);
 
 // The Solver behind external_backend(); public for the tests.

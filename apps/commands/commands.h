@@ -41,6 +41,8 @@ struct SolverArgs {
     std::vector<std::string> programs;  // --solver NAME=COMMAND
     std::vector<std::string> classes;   // --python-solver NAME=MODULE:CLASS
     std::vector<std::string> rules;     // --solver-rule NAME=RULE
+    std::vector<std::string> exact;     // --solver-exact NAME
+    std::vector<std::string> precisions;  // --solver-precision NAME=PRECISION
 };
 void add_solver_options(CLI::App& cmd, SolverArgs& args);
 // The specs the options name; throws std::invalid_argument for a malformed one.

@@ -111,20 +111,22 @@ def _class_file(name, solver):
 
 
 def _solver_entry(name, solver):
-    """(name, command, "file.py:Class", rule) for one entry of validate(solvers=...)."""
+    """(name, command, "file.py:Class", rule, exact, precision) for one entry of validate(solvers=...).
+    A class's own attributes (exact, precision, rule) are read by collide itself, as for
+    `collide validate --python-solver` (solver_runner.py --declarations), not here."""
     if isinstance(solver, type):
         path = _class_file(name, solver)
         if path is None or "." in solver.__qualname__:
             raise ValueError("solvers[%r]: %r must be a class defined at the top level of a .py file, so that "
                              "collide's runner can load it in a process of its own" % (name, solver))
-        rule = getattr(solver, "rule", "") or ""
-        return (name, "", "%s:%s" % (os.path.abspath(path), solver.__qualname__), rule)
+        return (name, "", "%s:%s" % (os.path.abspath(path), solver.__qualname__), "", False, "")
     if isinstance(solver, str) and ":" in solver and " " not in solver:
-        return (name, "", solver, "")
+        return (name, "", solver, "", False, "")
     if isinstance(solver, dict):
-        return (name, solver.get("command", ""), solver.get("python", ""), solver.get("rule", ""))
+        return (name, solver.get("command", ""), solver.get("python", ""), solver.get("rule", ""),
+                bool(solver.get("exact", False)), solver.get("precision", ""))
     raise ValueError("solvers[%r]: expected a class, \"module:Class\", or a dict with \"command\" or \"python\" "
-                     "(and optionally \"rule\")" % name)
+                     "(and optionally \"rule\", \"exact\", \"precision\")" % name)
 
 
 def validate(suite, out="results", jobs=None, resume=False, solvers=None):
@@ -134,8 +136,9 @@ def validate(suite, out="results", jobs=None, resume=False, solvers=None):
     counts printed).
 
     `solvers`: outside solvers that join the suite's backends for this run, name -> a class
-    (its `rule` attribute, e.g. "collide-first", says which stepping rule it implements),
-    "module:Class", or {"command": "..."} for any program (docs/your-solver.md)."""
+    (its attributes declare what it claims: `exact = True`, `precision = "float"`, or `rule`,
+    e.g. "collide-first", the stepping rule it implements), "module:Class", or {"command": "..."}
+    for any program, with optional "rule", "exact" and "precision" (docs/your-solver.md)."""
     entries = [_solver_entry(name, s) for name, s in (solvers or {}).items()]
     runner = os.path.join(os.path.dirname(os.path.abspath(__file__)), "solver_runner.py")
     counts = _collide._validate(os.fspath(suite), os.fspath(out), int(jobs or 0), bool(resume), entries,

@@ -17,6 +17,15 @@ The class is created without arguments and used as
     solver.version                optional: a version string for the provenance
     solver.refuses(scene)         optional: a reason (str) not to run the scene, or None
 
+What the class declares about itself, as class attributes (docs/your-solver.md, "Declaring an
+exact solver"): `exact = True` (event-driven: no time step), `precision = "float"` (default
+"double"), `rule = "collide-first"` or `"integrate-first"` (a stepped solver). collide reads
+them once, before the run, with
+
+    python3 solver_runner.py --declarations MODULE:CLASS OUT_FILE
+
+which writes one "key value" line per attribute the class has (declarations()).
+
 Only the standard library and NumPy: it needs no part of collide, so any Python with NumPy
 runs it. read_request() and write_result() are the protocol for a program of your own.
 """
@@ -67,8 +76,9 @@ def read_request(directory):
     return scene, initial
 
 
-def write_result(directory, times, states, steps=None, contacts=None, version=None, refuse=None):
-    """states.npy ((K, N, 4) float64: x, y, vx, vy at each of the K times) and result.txt."""
+def write_result(directory, times, states, steps=None, contacts=None, version=None, refuse=None, precision=None):
+    """states.npy ((K, N, 4) float64: x, y, vx, vy at each of the K times) and result.txt.
+    `precision` ("double" or "float"), when given, must be the one the solver is declared with."""
     lines = []
     if refuse is not None:
         lines.append("refuse " + " ".join(str(refuse).split()))
@@ -81,6 +91,8 @@ def write_result(directory, times, states, steps=None, contacts=None, version=No
             lines.append("steps %d" % int(steps))
         if contacts is not None:
             lines.append("contacts %d" % int(contacts))
+        if precision:
+            lines.append("precision %s" % precision)
     if version:
         lines.append("version " + " ".join(str(version).split()))
     safe_output.write_text(os.path.join(directory, "result.txt"), "\n".join(lines) + "\n")
@@ -129,6 +141,20 @@ def checked_pairs(solver, name, disks, t):
     return value
 
 
+# The class attributes that declare what a solver claims, and how each is written.
+_DECLARATIONS = {"exact": lambda v: "true" if v else "false", "precision": str, "rule": str}
+
+
+def declarations(cls):
+    """The "key value" lines of what `cls` declares as attributes (exact, precision, rule)."""
+    lines = []
+    for key, text in _DECLARATIONS.items():
+        value = getattr(cls, key, None)
+        if value is not None and value != "":
+            lines.append("%s %s" % (key, text(value)))
+    return lines
+
+
 def run(spec, directory):
     scene, initial = read_request(directory)
     solver = load_class(spec)()
@@ -147,10 +173,16 @@ def run(spec, directory):
         states[k, :, 0:2] = checked_pairs(solver, "positions", disks, t)
         states[k, :, 2:4] = checked_pairs(solver, "velocities", disks, t)
     stats = solver.stats() if hasattr(solver, "stats") else {}
-    write_result(directory, times, states, steps=stats.get("steps"), contacts=stats.get("contacts"), version=version)
+    write_result(directory, times, states, steps=stats.get("steps"), contacts=stats.get("contacts"), version=version,
+                 precision=getattr(solver, "precision", None))
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3:
-        raise SystemExit("usage: solver_runner.py MODULE:CLASS REQUEST_DIR")
-    run(sys.argv[1], sys.argv[2])
+    if len(sys.argv) == 4 and sys.argv[1] == "--declarations":
+        with open(sys.argv[3], "w", encoding="utf-8") as f:
+            f.write("".join(line + "\n" for line in declarations(load_class(sys.argv[2]))))
+    elif len(sys.argv) == 3:
+        run(sys.argv[1], sys.argv[2])
+    else:
+        raise SystemExit("usage: solver_runner.py MODULE:CLASS REQUEST_DIR\n"
+                         "       solver_runner.py --declarations MODULE:CLASS OUT_FILE")

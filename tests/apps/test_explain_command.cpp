@@ -69,7 +69,7 @@ TEST(ExplainCommand, RefusesWhatItCannotExplain) {
     const auto exact = run_program(COLLIDE_EXECUTABLE, {"explain", out, "box_gas_1000__event__seed1"}, dir);
     EXPECT_NE(exact.exit_code, 0);
     EXPECT_TRUE(contains(exact.err, "ran on 'event', which has no time steps")) << exact.err;
-    // The rule is the backend's property (BackendInfo::event_driven), not a list of names.
+    // The rule is the backend's property (BackendInfo::exact), not a list of names.
     const auto plain = run_program(COLLIDE_EXECUTABLE, {"explain", out, "box_gas_1000__event-plain__dt0.001__seed1"}, dir);
     EXPECT_NE(plain.exit_code, 0);
     EXPECT_TRUE(contains(plain.err, "ran on 'event-plain', which has no time steps")) << plain.err;

@@ -8,12 +8,11 @@
 namespace collide::test {
 
 double conformance_tolerance(const std::string& backend) {
-    const std::string precision = find_backend(backend).precision;
-    if (precision == "double") return 1e-12;
-    return 1e-5;
+    return find_backend(backend).single_precision() ? 1e-5 : 1e-12;
 }
 
-bool is_exact(const std::string& backend) { return backend == "event" || backend == "event-plain"; }
+// What the backend declares (BackendInfo::exact), not its name.
+bool is_exact(const std::string& backend) { return find_backend(backend).exact; }
 
 bool Conformance::skip_unless_supported(const Scene& scene) const {
     if (auto reason = backend().supports(scene)) {

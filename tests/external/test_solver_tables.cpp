@@ -67,11 +67,11 @@ TEST(SolverTables, ARuleMakesTheSolverAStepperForTheChecks) {
     const Suite s = parse("[solver.mine]\ncommand = \"x\"\nrule = \"collide-first\"\n[solver.other]\ncommand = \"y\"\n");
     const auto backends = backends_with_solvers(s, {}, {"python3", "runner.py"});
     ASSERT_EQ(backends.size(), 2u);
-    EXPECT_TRUE(follows_stepping_rules("mine"));
-    EXPECT_FALSE(follows_stepping_rules("other"));
+    EXPECT_TRUE(backends[0].stepping_rule());
+    EXPECT_EQ(backends[0].rule, "collide-first");
+    EXPECT_FALSE(backends[1].stepping_rule());
+    EXPECT_FALSE(backends[1].exact);
     EXPECT_EQ(s.backends, (std::vector<std::string>{"all"}));  // "all" takes them anyway
-    set_outside_stepping_rules({});
-    EXPECT_FALSE(follows_stepping_rules("mine"));
 }
 
 TEST(SolverTables, ShellQuotingKeepsQuotes) {

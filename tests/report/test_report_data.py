@@ -174,9 +174,9 @@ class DrawnCases(unittest.TestCase):
         cases = {c["id"]: c for c in summary["cases"]}
         for j in jumps:
             self.assertTrue(cases[j["case"]]["drawn"], j["case"])
-            self.assertFalse(summary["backends"][j["backend"]]["event_driven"], j["case"])
-        self.assertTrue(summary["backends"]["event"]["event_driven"])
-        self.assertFalse(summary["backends"]["step"]["event_driven"])
+            self.assertFalse(summary["backends"][j["backend"]]["exact"], j["case"])
+        self.assertTrue(summary["backends"]["event"]["exact"])
+        self.assertFalse(summary["backends"]["step"]["exact"])
 
 
 class MotionStrips(unittest.TestCase):

@@ -73,11 +73,14 @@ name = "gas"
     EXPECT_EQ(suite.variants[0].base, "box2d");
     EXPECT_EQ(suite.variants[0].settings.at("preset"), "shipped");
     EXPECT_EQ(suite.variants[0].settings.at("velocity_iterations"), "10");
-    const Tolerances shipped = suite.tolerances.for_backend("box2d[shipped]", "float");
+    // A variant inherits what its base declares (box2d's own limits), then the overrides.
+    const BackendInfo variant = variant_backend(find_backend("box2d"), suite.variants[0]);
+    EXPECT_EQ(variant.name, "box2d[shipped]");
+    const Tolerances shipped = suite.tolerances.for_backend(variant);
     EXPECT_EQ(shipped.energy_drift, 0.5);
     // Everything not overridden is the base backend's limit, not a float stepper's.
-    EXPECT_EQ(shipped.max_overlap, suite.tolerances.for_backend("box2d", "float").max_overlap);
-    EXPECT_NE(shipped.max_overlap, suite.tolerances.for_backend("cpu", "float").max_overlap);
+    EXPECT_EQ(shipped.max_overlap, suite.tolerances.for_backend(find_backend("box2d")).max_overlap);
+    EXPECT_NE(shipped.max_overlap, suite.tolerances.for_backend(find_backend("cpu")).max_overlap);
 }
 
 TEST(BackendVariants, LeaveOutNeedsAReasonAndKnownCheckNames) {
@@ -178,12 +181,12 @@ TEST(BackendVariants, TwoConfigurationsGetDistinctCasesFilesChecksAndColumns) {
 
 TEST(BackendVariants, DefaultSuiteRunsBothBox2dConfigurationsWithTheirOwnLimits) {
     const Suite suite = load_suite(COLLIDE_SOURCE_DIR "/validation/suites/default.toml");
-    std::vector<std::string> names;
-    for (const BackendInfo& b : select_backends(suite, all_backends())) names.push_back(b.name);
-    EXPECT_NE(std::find(names.begin(), names.end(), "box2d"), names.end());
-    EXPECT_NE(std::find(names.begin(), names.end(), "box2d[shipped]"), names.end());
-    const Tolerances tuned = suite.tolerances.for_backend("box2d", "float");
-    const Tolerances shipped = suite.tolerances.for_backend("box2d[shipped]", "float");
+    std::map<std::string, BackendInfo> selected;
+    for (const BackendInfo& b : select_backends(suite, all_backends())) selected.emplace(b.name, b);
+    ASSERT_TRUE(selected.count("box2d"));
+    ASSERT_TRUE(selected.count("box2d[shipped]"));
+    const Tolerances tuned = suite.tolerances.for_backend(selected.at("box2d"));
+    const Tolerances shipped = suite.tolerances.for_backend(selected.at("box2d[shipped]"));
     EXPECT_GT(shipped.energy_drift, tuned.energy_drift);
     // A stated limit, not "anything": a run that loses all its energy still fails.
     EXPECT_LT(shipped.energy_drift, 1.0);

@@ -53,7 +53,7 @@ TEST(CheckTable, CaseChecksComeInTheTablesOrder) {
     r.spec.id = "x";
     r.status = RunStatus::left_out;
     r.diagnostic = "cannot";
-    const auto checks = case_checks(r, SceneFeatures{}, Tolerances{});
+    const auto checks = case_checks(r, SceneFeatures{}, Tolerances{}, BackendInfo{});
     const auto names = check_names(CheckKind::case_check);
     ASSERT_EQ(checks.size(), names.size());
     for (std::size_t k = 0; k < names.size(); ++k) EXPECT_EQ(checks[k].check, names[k]);

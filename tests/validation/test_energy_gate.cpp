@@ -47,7 +47,8 @@ CheckResult energy_check_of(const Scene& declared, const Scene& solver_scene) {
     r.contacts = run.stats.contacts;
     for (double w : initial.inv_mass) r.total_mass += 1 / w;
     r.initial.radius = initial.radius;
-    for (const auto& c : case_checks(r, scene_features(declared, initial), default_tolerances("step", "double")))
+    for (const auto& c : case_checks(r, scene_features(declared, initial), default_tolerances(find_backend("step")),
+                                      find_backend("step")))
         if (c.check == "energy_drift") {
             std::printf("drift %.3g, predicted %.3g +- %.3g, bound %.3g\n", c.value, c.predicted,
                         c.predicted_uncertainty, c.tolerance);

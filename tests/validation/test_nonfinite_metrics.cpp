@@ -37,12 +37,12 @@ TEST(NonfiniteMetrics, FailTheRunCheckAndTheEnergyCheck) {
     SceneFeatures features;  // no walls, no gravity: kinetic energy and momentum are checked
     const Tolerances tolerances;
     for (double bad : {std::numeric_limits<double>::infinity(), std::nan("")}) {
-        const auto checks = case_checks(case_with_kinetic_energy(bad, bad), features, tolerances);
+        const auto checks = case_checks(case_with_kinetic_energy(bad, bad), features, tolerances, BackendInfo{});
         EXPECT_EQ(find(checks, "run").status, CheckStatus::fail) << bad;
         EXPECT_EQ(find(checks, "energy_drift").status, CheckStatus::fail) << bad;
         EXPECT_EQ(find(checks, "max_overlap").status, CheckStatus::pass) << "a check that does not read it";
     }
-    const auto healthy = case_checks(case_with_kinetic_energy(1, 1), features, tolerances);
+    const auto healthy = case_checks(case_with_kinetic_energy(1, 1), features, tolerances, BackendInfo{});
     EXPECT_EQ(find(healthy, "run").status, CheckStatus::pass);
     EXPECT_EQ(find(healthy, "energy_drift").status, CheckStatus::pass);
 }

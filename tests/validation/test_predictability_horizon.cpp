@@ -162,7 +162,7 @@ BackendInfo exact_backend(const std::string& name, std::function<std::unique_ptr
                           bool event_driven = true) {
     return {.name = name, .precision = "double", .description = name,
             .supports = [](const Scene&) -> std::optional<std::string> { return std::nullopt; },
-            .create = [make](const BackendOptions&) { return make(); }, .event_driven = event_driven};
+            .create = [make](const BackendOptions&) { return make(); }, .exact = event_driven};
 }
 
 TEST(PredictabilityHorizon, EventPlainPassesTheChaoticSuiteALateSolverFailsBeforeTheHorizon) {

@@ -109,9 +109,9 @@ namespace {
 // default, first-listed precision, so it gets the float tolerances; a pure double backend
 // keeps the rounding-level ones.
 TEST(DefaultTolerances, DualPrecisionBackendIsJudgedAsItsDefaultFloat) {
-    const Tolerances dual = default_tolerances("opencl", "float|double");
-    const Tolerances single = default_tolerances("cpu", "float");
-    const Tolerances twice = default_tolerances("step", "double");
+    const Tolerances dual = default_tolerances(find_backend("opencl"));
+    const Tolerances single = default_tolerances(find_backend("cpu"));
+    const Tolerances twice = default_tolerances(find_backend("step"));
     EXPECT_EQ(dual.momentum_drift, single.momentum_drift);
     EXPECT_LT(twice.momentum_drift, dual.momentum_drift);
 }

@@ -51,7 +51,7 @@ substeps = [1, 2]
     EXPECT_EQ(suite.scenes[0].comparison, Comparison::statistics);
     EXPECT_EQ(suite.scenes[0].dt.size(), 2u);
     EXPECT_EQ(suite.seeds, (std::vector<std::uint64_t>{3, 4}));
-    const auto t = suite.tolerances.for_backend("step", "double");
+    const auto t = suite.tolerances.for_backend(find_backend("step"));
     EXPECT_EQ(t.energy_drift, 0.5);
     EXPECT_EQ(t.max_overlap, 0.25);
 }

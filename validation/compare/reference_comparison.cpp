@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "validation/compare/predictability_horizon.h"
+#include "validation/compare/reference_runs.h"
 #include "validation/judge/check_table.h"
 #include "validation/judge/observables.h"
 #include "validation/judge/statistics.h"
@@ -78,9 +79,6 @@ void judge_at_most(CheckResult& c, double value, double tolerance, const std::st
         c.detail = s.str();
     }
 }
-
-// A case's reference runs share its scene and scene-parameter values.
-std::string reference_key(const CaseSpec& spec) { return spec.scene + "|" + parameter_label(spec); }
 
 std::vector<double> replicate_values(const Group& g, double (*value)(const CaseResult&)) {
     std::vector<double> out;
@@ -175,12 +173,18 @@ std::optional<StatisticalDifference> statistical_difference(const ReplicateMeans
     return d;
 }
 
-// The reference run a case's trajectory is compared with: same seed, and the same dt when the
-// reference ran per dt.
+// Whether `backend` claims exact dynamics in double (BackendInfo::exact, precision): its
+// trajectory is then held to the rounding level of the reference's twins.
+bool claims_exact_double(const std::map<std::string, const BackendInfo*>& declared, const std::string& backend) {
+    const auto it = declared.find(backend);
+    return it != declared.end() && it->second->exact && it->second->precision == "double";
+}
+
+// The reference run a case's trajectory is compared with (reference_runs.h).
 const CaseResult* trajectory_partner(const CaseResult& r, const Group& ref) {
     const CaseResult* partner = nullptr;
     for (const CaseResult* q : ref.cases)
-        if (q->spec.seed == r.spec.seed && (!q->spec.dt || q->spec.dt == r.spec.dt)) partner = q;
+        if (is_reference_run_of(q->spec, r.spec)) partner = q;
     return partner;
 }
 
@@ -272,7 +276,7 @@ CheckResult trajectory_check(const Group& g, const Group& ref, double tolerance,
 Comparisons compare_with_reference(const Suite& suite, const std::vector<CaseResult>& results,
                                    const std::vector<SceneFeatures>& features,
                                    const std::map<std::string, Tolerances>& tolerances,
-                                   const std::set<std::string>& exact) {
+                                   const std::map<std::string, const BackendInfo*>& declared) {
     Comparisons out;
     // Groups in first-seen order, so the report follows the suite's order.
     std::vector<Group> groups;
@@ -329,14 +333,14 @@ Comparisons compare_with_reference(const Suite& suite, const std::vector<CaseRes
         std::vector<double> seconds, errors;
 
         if (entry.comparison == Comparison::trajectory) {
-            out.checks.push_back(trajectory_check(g, *ref, tol.trajectory_error, exact.count(spec.backend) > 0,
+            out.checks.push_back(trajectory_check(g, *ref, tol.trajectory_error, claims_exact_double(declared, spec.backend),
                                                   out.trajectories, seconds, errors));
         } else {
             // Stepped rules differ from the exact dynamics by a derived first-order bias: their
             // statistics are judged against it (statistics_bias_model.h); every other backend
             // (box2d is not the stepped rule) against equal means.
             std::function<BiasPrediction(const MeanAndError&)> pressure_model, rate_model;
-            if (follows_stepping_rules(spec.backend)) {
+            if (declared.at(spec.backend)->stepping_rule()) {
                 const double h = g.cases.front()->dt / std::max(1, g.cases.front()->substeps);
                 pressure_model = [h](const MeanAndError& nu) {
                     return predicted_pressure_bias(nu.mean, nu.standard_error, h, contact_shell);

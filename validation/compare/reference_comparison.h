@@ -64,14 +64,14 @@ struct Comparisons {
     std::map<std::string, TrajectoryJudgement> trajectories;
 };
 
-// `tolerances` maps a backend name to its tolerances; `features` is parallel to suite.scenes;
-// `exact`: the backends that claim exact dynamics in double (no time step, every contact at its
-// time), whose trajectories are held to the rounding level of the reference's twins.
+// `tolerances` maps a backend name to its tolerances and `declared` to what it declares (a
+// stepping rule's statistics are held to the rule's predicted bias; an exact solver in double has
+// its trajectory held to the rounding level of the reference's twins); `features` is parallel to
+// suite.scenes.
 Comparisons compare_with_reference(const Suite& suite, const std::vector<CaseResult>& results,
                                    const std::vector<SceneFeatures>& features,
                                    const std::map<std::string, Tolerances>& tolerances,
-                                   const std::set<std::string>& exact = {});
-
+                                   const std::map<std::string, const BackendInfo*>& declared);
 // The smallest radius of a snapshot's disks: trajectory errors are measured in it.
 double smallest_radius(const Snapshot& s);
 

@@ -77,7 +77,7 @@ ExplainedCase explain_case(const std::string& dir, const Suite& suite, const std
                            double from, double to, const std::function<void(double, double)>& on_progress) {
     require_known_solver(dir, case_id, backends);
     ReplayedCase c = replay_case(suite, case_id, backends, overrides);
-    if (c.backend.event_driven)  // exact: from collision to collision
+    if (c.backend.exact)  // exact: from collision to collision
         throw std::runtime_error("case " + c.spec.id + " ran on '" + c.backend.name +
                                  "', which has no time steps to look inside");
     const CaseResult record = read_case_result(dir + "/cases/" + c.spec.id + ".toml");

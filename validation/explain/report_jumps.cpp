@@ -16,6 +16,15 @@
 namespace collide::validation {
 namespace {
 
+// Whether the case's backend (a variant: its base's) uses its device one process at a time
+// (BackendInfo::one_device).
+bool uses_one_device(const std::vector<BackendInfo>& backends, const std::string& name) {
+    const std::string base = name.substr(0, name.find('['));
+    for (const BackendInfo& b : backends)
+        if (b.name == name || b.name == base) return b.one_device;
+    return false;
+}
+
 // FNV-1a over the bits of a record's numbers: every metric of its series (the run schema's
 // columns) and its final state. Equal records hash equally; equal hashes are confirmed by
 // same_numbers before a case is taken for another's twin.
@@ -83,7 +92,7 @@ void for_each_index(std::size_t n, int jobs, Work work) {
 }  // namespace
 
 std::vector<DrawnCase> cases_to_explain(const std::vector<CaseResult>& cases, const std::vector<CheckResult>& checks,
-                                        const std::map<std::string, bool>& event_driven) {
+                                        const std::map<std::string, bool>& exact) {
     std::set<std::string> judging_energy;  // scenes whose energy_drift was judged (not left out)
     for (const CheckResult& c : checks)
         if (c.check == "energy_drift" && (c.status == CheckStatus::pass || c.status == CheckStatus::fail))
@@ -92,8 +101,8 @@ std::vector<DrawnCase> cases_to_explain(const std::vector<CaseResult>& cases, co
     std::vector<DrawnCase> out;
     for (std::size_t k = 0; k < cases.size(); ++k) {
         const CaseSpec& spec = cases[k].spec;
-        const auto exact = event_driven.find(spec.backend);
-        if (drawn[k] && judging_energy.count(spec.scene) && !(exact != event_driven.end() && exact->second))
+        const auto claim = exact.find(spec.backend);
+        if (drawn[k] && judging_energy.count(spec.scene) && !(claim != exact.end() && claim->second))
             out.push_back({spec.id, spec.scene, spec.backend});
     }
     return out;
@@ -122,7 +131,7 @@ nlohmann::json report_energy_jumps(const std::string& dir, const std::vector<Dra
                 break;
             }
     std::vector<nlohmann::json> jumps(cases.size());
-    std::mutex opencl;
+    std::mutex device;
     for_each_index(cases.size(), jobs, [&](std::size_t k) {
         const DrawnCase& d = cases[k];
         if (!found[k].unreadable.empty()) {
@@ -137,8 +146,8 @@ nlohmann::json report_energy_jumps(const std::string& dir, const std::vector<Dra
             return;
         }
         try {
-            std::unique_lock<std::mutex> one_device_at_a_time(opencl, std::defer_lock);
-            if (d.backend.rfind("opencl", 0) == 0) one_device_at_a_time.lock();
+            std::unique_lock<std::mutex> one_device_at_a_time(device, std::defer_lock);
+            if (uses_one_device(backends, d.backend)) one_device_at_a_time.lock();
             jumps[k]["explained"] = explanation_json(
                 explain_case(dir, *suite, d.id, backends, {}, found[k].jump->t0, found[k].jump->t1));
         } catch (const std::exception& e) {

@@ -6,7 +6,7 @@
 //
 // Which cases: the cases the report draws (validation/summary/drawn_cases.h) of every scene
 // whose energy_drift check was judged (passed or failed, not left out), on every backend with
-// time steps (an exact solver has no step to look inside, BackendInfo::event_driven). A case whose recorded series has a jump
+// time steps (an exact solver has no step to look inside, BackendInfo::exact). A case whose recorded series has a jump
 // (largest_interval_jump) is rerun over that output interval and its step named (explain_case);
 // a rerun that fails is kept with its reason, never dropped.
 //
@@ -36,9 +36,9 @@ struct DrawnCase {
 };
 
 // The cases among `cases` (a suite's, in plan order) whose jumps are explained; `checks` are
-// their judged checks, `event_driven` says per backend whether it has time steps.
+// their judged checks, `exact` says per backend whether it claims exact dynamics (no time step).
 std::vector<DrawnCase> cases_to_explain(const std::vector<CaseResult>& cases, const std::vector<CheckResult>& checks,
-                                        const std::map<std::string, bool>& event_driven);
+                                        const std::map<std::string, bool>& exact);
 
 // `dir` holds the suite's records (cases/<id>.toml); `suite` is the suite that ran them, with
 // `backends` including its outside solvers; or no suite and `suite_problem`, why the cases cannot

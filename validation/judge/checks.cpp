@@ -3,7 +3,6 @@
 #include "core/io/run_schema.h"
 #include "validation/judge/check_table.h"
 #include "validation/models/energy_loss_model.h"
-#include "validation/models/statistics_bias_model.h"
 
 #include <algorithm>
 #include <cmath>
@@ -136,11 +135,10 @@ double collision_frequency(const CaseResult& r, const SceneFeatures& f) {
     return enskog_collision_frequency(f.area_fraction, sum_r / m, sum_r2 / m, kt_over_m);
 }
 
-// The backends that run the stepping rules (docs/stepping-rules.md).
-
 }  // namespace
 
-std::vector<CheckResult> case_checks(const CaseResult& r, const SceneFeatures& f, const Tolerances& tol) {
+std::vector<CheckResult> case_checks(const CaseResult& r, const SceneFeatures& f, const Tolerances& tol,
+                                     const BackendInfo& backend) {
     std::vector<CheckResult> out;
     CaseChecker c(r, out);
     std::vector<std::string> per_case = check_names(CheckKind::case_check);  // "run" first, then the rest
@@ -173,7 +171,7 @@ std::vector<CheckResult> case_checks(const CaseResult& r, const SceneFeatures& f
 
     const EnergyCheck energy = energy_check(f);
     if (energy.kind == EnergyKind::none) c.left_out("energy_drift", energy.reason);
-    else if (energy.kind == EnergyKind::kinetic && follows_stepping_rules(r.spec.backend) && r.duration > 0 && r.disks > 0) {
+    else if (energy.kind == EnergyKind::kinetic && backend.stepping_rule() && r.duration > 0 && r.disks > 0) {
         // The stepped rules lose or gain energy when one disk takes two impulses from one
         // Jacobi snapshot; the bound is the drift the rule itself predicts for this case's
         // collision frequency, dt, duration and size (docs/stepping-rules.md, "Energy at e = 1").

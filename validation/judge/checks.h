@@ -30,9 +30,11 @@ struct CheckResult {
     double predicted = std::nan(""), predicted_uncertainty = std::nan("");
 };
 
-// The checks of one case on its own (run, conservation, overlaps).
+// The checks of one case on its own (run, conservation, overlaps), with the case's limits
+// (ToleranceTable::for_case) and what its backend declares (a stepping rule's kinetic energy
+// is held to the rule's energy-loss model).
 std::vector<CheckResult> case_checks(const CaseResult& result, const SceneFeatures& features,
-                                     const Tolerances& tolerances);
+                                     const Tolerances& tolerances, const BackendInfo& backend);
 
 // The id of a case's sweep group: the case id without the "__seed<N>" suffix.
 std::string group_id(const CaseSpec& spec);

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "validation/judge/check_table.h"
+#include "validation/judge/exact_limits.h"
 
 namespace collide::validation {
 
@@ -33,33 +34,26 @@ double tolerance_value(const Tolerances& t, const std::string& key) {
 }
 
 // Each number is derived in docs/validation.md; the comments give the one-line reason.
-Tolerances default_tolerances(const std::string& backend, const std::string& precision) {
+Tolerances default_tolerances(const BackendInfo& backend, const RoundingScale& scale) {
     Tolerances t;
-    if (backend == "event") {
-        // Exact dynamics in double: every collision rounds the velocities of two disks, so
-        // invariants random-walk by ~eps*sqrt(collisions) (eps = 2.2e-16); 1e-9 allows 1e12
-        // collisions. Disks touch at contact to round-off: depth ~ 1e-15 of r_i + r_j.
+    if (backend.exact) {
+        // Exact dynamics: conserved sums move by rounding at each collision and disks touch at
+        // contact up to the rounding of their positions (exact_limits.h).
+        apply_exact_limits(t, machine_epsilon(backend.single_precision()), scale);
         t.overlapping_pairs_per_disk = 0.05;  // pairs caught exactly at contact, depth ~1e-16
         return t;
     }
-    // A backend that offers both ("float|double") runs the first-listed precision unless asked
-    // otherwise, and a validation case does not ask: opencl cases run in float.
-    const bool single = precision.rfind("float", 0) == 0;
-    if (backend == "box2d") {
-        // Sequential impulses with a velocity threshold for restitution and a linear slop
-        // of 0.005 m (Box2D 2.4 b2_linearSlop) scaled to the scene: see docs/validation.md.
-        t.momentum_drift = 1e-4;
-        t.energy_drift = 5e-2;
-        t.max_overlap = 0.25;
-        t.mean_overlap = 0.05;
-        t.overlapping_pairs_per_disk = 1.0;
-        t.wall_penetration = 0.25;
-        t.trajectory_error = 1.0;
+    if (!backend.stepping_rule() && !backend.limits.empty()) {
+        // Limits of its own, derived for its method (box2d: docs/validation.md).
+        for (const auto& [key, value] : backend.limits) tolerance_field(t, key) = value;
         return t;
     }
-    // Stepped rules (step, cpu, opencl): momentum is exchanged in equal and opposite impulses,
-    // so only rounding breaks it; energy changes when a disk has several contacts in one step
-    // (Jacobi pass) and overlap depth is bounded by the approach speed times dt.
+    // Stepped rules (and a solver that declares nothing): momentum is exchanged in equal and
+    // opposite impulses, so only rounding breaks it; energy changes when a disk has several
+    // contacts in one step (Jacobi pass) and overlap depth is bounded by the approach speed
+    // times dt. A backend that offers both precisions ("float|double") runs the first-listed
+    // unless asked otherwise, and a validation case does not ask: opencl cases run in float.
+    const bool single = backend.single_precision();
     t.momentum_drift = single ? 1e-4 : 1e-10;
     // Used for the total-energy check under gravity only: the kinetic-energy check at e = 1
     // takes its bound from the rule's own energy-loss model for the case (energy_loss_model.h).
@@ -72,15 +66,27 @@ Tolerances default_tolerances(const std::string& backend, const std::string& pre
     return t;
 }
 
+Tolerances default_tolerances(const BackendInfo& backend) { return default_tolerances(backend, RoundingScale{}); }
+
 // A variant "box2d[shipped]" starts from its base's limits (defaults, then [tolerances.box2d])
 // and [tolerances."box2d[shipped]"] overrides them.
-Tolerances ToleranceTable::for_backend(const std::string& backend, const std::string& precision) const {
+void ToleranceTable::apply_overrides(Tolerances& t, const std::string& backend) const {
     const std::string base = backend.substr(0, backend.find('['));
-    Tolerances t = default_tolerances(base, precision);
     for (const auto& [key, value] : all_backends) tolerance_field(t, key) = value;
     for (const std::string& name : {base, backend})  // twice the same name: harmless
         if (auto it = per_backend.find(name); it != per_backend.end())
             for (const auto& [key, value] : it->second) tolerance_field(t, key) = value;
+}
+
+Tolerances ToleranceTable::for_backend(const BackendInfo& backend) const {
+    Tolerances t = default_tolerances(backend);
+    apply_overrides(t, backend.name);
+    return t;
+}
+
+Tolerances ToleranceTable::for_case(const BackendInfo& backend, const RoundingScale& scale) const {
+    Tolerances t = default_tolerances(backend, scale);
+    apply_overrides(t, backend.name);
     return t;
 }
 

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "core/backend_registry.h"
+
 namespace collide::validation {
 
 // One limit per [tolerances] key; every value is a bound on a dimensionless number. Which
@@ -29,16 +31,29 @@ const std::vector<std::string>& tolerance_keys();
 double& tolerance_field(Tolerances& t, const std::string& key);  // throws on an unknown key
 double tolerance_value(const Tolerances& t, const std::string& key);
 
-// Defaults by backend name and precision, before any suite override: exact double (event),
-// stepped double (step), stepped float (cpu, opencl), the Box2D baseline.
-Tolerances default_tolerances(const std::string& backend, const std::string& precision);
+struct RoundingScale;  // exact_limits.h
+
+// Defaults from what the backend declares (BackendInfo: exact, rule, precision, limits), before
+// any suite override; never from its name. Exact: rounding-level limits at the scale of a case
+// (exact_limits.h; without a scale, the largest a case of that solver could need); a stepping
+// rule: the rule's (double or float); limits of its own (box2d); otherwise, for a solver that
+// declares nothing, the loose limits of the stepped rules.
+Tolerances default_tolerances(const BackendInfo& backend);
+Tolerances default_tolerances(const BackendInfo& backend, const RoundingScale& scale);
 
 // [tolerances.default] and [tolerances.<backend>] of a suite: key -> value overrides.
 struct ToleranceTable {
     std::map<std::string, double> all_backends;
     std::map<std::string, std::map<std::string, double>> per_backend;
 
-    Tolerances for_backend(const std::string& backend, const std::string& precision) const;
+    // The backend's limits: its defaults, then [tolerances.default], [tolerances.BASE] and
+    // [tolerances."BASE[VARIANT]"] (a variant inherits its base's declarations and overrides).
+    Tolerances for_backend(const BackendInfo& backend) const;
+    // The same for one case: an exact backend's limits at the case's rounding scale.
+    Tolerances for_case(const BackendInfo& backend, const RoundingScale& scale) const;
+
+private:
+    void apply_overrides(Tolerances& t, const std::string& backend) const;
 };
 
 }  // namespace collide::validation

@@ -1,6 +1,5 @@
 #include "validation/models/statistics_bias_model.h"
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -16,22 +15,6 @@ const StatisticsBiasConstants& fitted_statistics_bias() {
     // and consistent with the derived 1).
     static const StatisticsBiasConstants c{1.12, 0.07, 0.80, 0.16};
     return c;
-}
-
-namespace {
-std::vector<std::string>& outside_stepping_rules() {
-    static std::vector<std::string> names;
-    return names;
-}
-}  // namespace
-
-void set_outside_stepping_rules(const std::vector<std::string>& backends) { outside_stepping_rules() = backends; }
-
-bool follows_stepping_rules(const std::string& backend) {
-    const std::string base = backend.substr(0, backend.find('['));  // "step[x]" is step
-    const auto& outside = outside_stepping_rules();
-    return base == "step" || base == "cpu" || base == "opencl" ||
-           std::find(outside.begin(), outside.end(), backend) != outside.end();
 }
 
 BiasPrediction predicted_pressure_bias(double nu, double nu_se, double h, double shell,

@@ -44,14 +44,8 @@ struct StatisticsBiasConstants {
 };
 const StatisticsBiasConstants& fitted_statistics_bias();
 
-// True for the backends that implement the stepping rules (step, cpu, opencl, and variants of
-// them): their pressure and collision rate are judged against the model, not against equality.
-bool follows_stepping_rules(const std::string& backend);
-
-// The outside solvers of this run that declare a stepping rule (validation/plan/external_solvers.h):
-// follows_stepping_rules() is true for them too. Replaces the previous list; the runner's case
-// processes inherit it.
-void set_outside_stepping_rules(const std::vector<std::string>& backends);
+// Which backends are judged by this model: those that declare a stepping rule
+// (BackendInfo::rule, and `rule` of an outside solver), read by the caller.
 
 // Z_backend - Z_reference for a stepped rule of step h on a gas whose reference collision rate
 // per disk is nu (standard error nu_se), for the contact estimator of shell fraction `shell`.

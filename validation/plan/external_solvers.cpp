@@ -5,7 +5,7 @@
 #include "core/scene/toml_fields.h"
 #include "validation/plan/backend_variant.h"
 #include "validation/plan/solver_tables.h"
-#include "validation/models/statistics_bias_model.h"
+#include "validation/plan/class_declarations.h"
 
 namespace collide::validation {
 namespace {
@@ -42,13 +42,23 @@ std::vector<external::ExternalSolverSpec> read_solver_tables(const toml::table& 
         const toml::table* t = sub.as_table();
         if (!t) fail(file, sub, where, "a table with command = \"...\" or python = \"module:Class\"");
         for (const auto& [k, v] : *t)
-            if (k.str() != "command" && k.str() != "python" && k.str() != "rule")
-                fail(file, v, where + "." + std::string(k.str()), "no such key here (allowed: command, python, rule)");
+            if (k.str() != "command" && k.str() != "python" && k.str() != "rule" && k.str() != "exact" && k.str() != "precision")
+                fail(file, v, where + "." + std::string(k.str()),
+                     "no such key here (allowed: command, python, rule, exact, precision)");
         external::ExternalSolverSpec spec;
         spec.name = name;
         spec.command = string_key(*t, "command", file, where);
         spec.python_class = string_key(*t, "python", file, where);
         spec.rule = string_key(*t, "rule", file, where);
+        if (const toml::node* exact = t->get("exact")) {
+            if (!exact->is_boolean()) fail(file, *exact, where + ".exact", "true or false");
+            spec.exact = *exact->value<bool>();
+        }
+        if (const std::string precision = string_key(*t, "precision", file, where); !precision.empty()) {
+            spec.precision = precision;
+            if (const std::string why = external::precision_problem(precision); !why.empty())
+                fail(file, *t->get("precision"), where + ".precision", why);
+        }
         spec.directory = dir;
         spec.origin = file + ":" + std::to_string(sub.source().begin.line);
         if (spec.command.empty() == spec.python_class.empty())
@@ -57,6 +67,8 @@ std::vector<external::ExternalSolverSpec> read_solver_tables(const toml::table& 
             fail(file, *t->get("python"), where + ".python", "\"module:Class\" or \"file.py:Class\"");
         if (const std::string why = external::rule_problem(spec.rule); !why.empty())
             fail(file, *t->get("rule"), where + ".rule", why);
+        if (const std::string why = external::claims_problem(spec.exact, spec.rule); !why.empty())
+            throw SuiteError(location(file, int(t->get("exact")->source().begin.line)) + where + ".exact: " + why);
         // (the checks above, with each key's line, are those of external::spec_problem)
         out.push_back(std::move(spec));
     }
@@ -76,7 +88,6 @@ void add_solvers(Suite& suite, const std::vector<external::ExternalSolverSpec>& 
 
 std::vector<BackendInfo> backends_with_solvers(const Suite& suite, std::vector<BackendInfo> built_in,
                                                const PythonRunner& python) {
-    std::vector<std::string> stepped;
     if (!suite.solvers.empty())
         if (const std::string problem = external::request_root_problem(); !problem.empty()) throw SuiteError(problem);
     for (external::ExternalSolverSpec spec : suite.solvers) {
@@ -92,13 +103,12 @@ std::vector<BackendInfo> backends_with_solvers(const Suite& suite, std::vector<B
                 throw SuiteError(spec.origin + ": the outside solver '" + spec.name + "' is named like the variant '" +
                                  v.label + "' (" + suite.source_path + ", [variant.\"" + v.label + "\"]), whose case "
                                  "ids and files spell it '" + backend_id_token(v.label) + "'; choose another name");
+        add_class_declarations(spec, python);
         if (!spec.python_class.empty())
             spec.command = shell_quote(python.python) + " " + shell_quote(python.runner) + " " + shell_quote(spec.python_class);
         spec.call_time_limit = call_share_of_case_limit * suite.time_limit_seconds;
-        if (!spec.rule.empty()) stepped.push_back(spec.name);
         built_in.push_back(external::external_backend(spec));
     }
-    set_outside_stepping_rules(stepped);
     return built_in;
 }
 

@@ -28,8 +28,9 @@ void add_solvers(Suite& suite, const std::vector<external::ExternalSolverSpec>& 
 
 // `built_in` plus one backend per outside solver of the suite (a Python class as its runner's
 // command; each program call limited to 45 % of the case's time limit, as a case calls it
-// twice: warm-up and timed run). Solvers that name a stepping rule are judged as the stepped
-// backends (statistics_bias_model.h). Throws SuiteError for a name a built-in backend has.
+// twice: warm-up and timed run), declaring what its spec declares and, for a class, what its
+// attributes declare (class_declarations.h). Throws SuiteError for a name a built-in backend
+// has, or a class whose declarations cannot be read or contradict the spec's.
 std::vector<BackendInfo> backends_with_solvers(const Suite& suite, std::vector<BackendInfo> built_in,
                                                const PythonRunner& python);
 

@@ -17,6 +17,8 @@
 #include <thread>
 #include <sstream>
 
+#include "validation/compare/reference_runs.h"
+#include "validation/judge/exact_limits.h"
 #include "validation/plan/backend_variant.h"
 #include "validation/plan/case_definition.h"
 #include "validation/run/case_execution.h"
@@ -218,7 +220,9 @@ void check_output_places(const std::string& dir, const std::vector<CaseSpec>& sp
 // included: the selected backends would plan each variant twice).
 nlohmann::json explain_energy_jumps(const Suite& suite, const std::vector<BackendInfo>& available,
                                     const SuiteOutcome& outcome, const RunnerOptions& options) {
-    const std::vector<DrawnCase> drawn = cases_to_explain(outcome.cases, outcome.checks, outcome.event_driven);
+    std::map<std::string, bool> exact;
+    for (const auto& [name, backend] : outcome.declared) exact[name] = backend.exact;
+    const std::vector<DrawnCase> drawn = cases_to_explain(outcome.cases, outcome.checks, exact);
     if (options.progress && !drawn.empty())
         std::fprintf(options.progress, "looking for energy jumps in %zu drawn case(s), explaining each one found\n",
                      drawn.size());
@@ -309,22 +313,24 @@ SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& avail
     outcome.execution = options.dispatch ? options.dispatch->execution() : serial_execution(outcome.jobs);
     outcome.cases_run = to_run.size();
 
-    // Judge every case in plan order, then the comparisons with the reference.
+    // Judge every case in plan order, then the comparisons with the reference. Each case's
+    // limits follow from what its backend declares, at the case's scale (an exact solver's
+    // counts its collisions from the reference run: exact_limits.h).
     std::map<std::string, Tolerances> tolerances;
-    std::set<std::string> exact;  // exact dynamics in double: held to the twins' rounding level
     for (const BackendInfo& b : backends) {
-        tolerances[b.name] = suite.tolerances.for_backend(b.name, b.precision);
-        outcome.precision[b.name] = b.precision;
-        outcome.event_driven[b.name] = b.event_driven;
-        if (b.event_driven && b.precision == "double") exact.insert(b.name);
+        tolerances[b.name] = suite.tolerances.for_backend(b);
+        outcome.declared.emplace(b.name, b);
     }
-    for (const CaseSpec& spec : specs) {
-        outcome.cases.push_back(results.at(spec.id));
-        const auto checks = case_checks(outcome.cases.back(), case_scenes.feature(spec), tolerances.at(spec.backend));
+    for (const CaseSpec& spec : specs) outcome.cases.push_back(results.at(spec.id));
+    const ReferenceRuns reference_runs(outcome.cases);
+    for (const CaseResult& r : outcome.cases) {
+        const BackendInfo& backend = *by_name.at(r.spec.backend);
+        const RoundingScale scale = rounding_scale(r, case_scenes.scene(r.spec), reference_runs.of(r.spec));
+        const auto checks = case_checks(r, case_scenes.feature(r.spec), suite.tolerances.for_case(backend, scale), backend);
         outcome.checks.insert(outcome.checks.end(), checks.begin(), checks.end());
     }
     if (suite.stability) classify_all(outcome, case_scenes, tolerances);
-    Comparisons comparisons = compare_with_reference(suite, outcome.cases, features, tolerances, exact);
+    Comparisons comparisons = compare_with_reference(suite, outcome.cases, features, tolerances, by_name);
     outcome.trajectories = std::move(comparisons.trajectories);
     outcome.checks.insert(outcome.checks.end(), comparisons.checks.begin(), comparisons.checks.end());
     apply_variant_leave_outs(outcome.checks, suite.variants);

@@ -48,8 +48,8 @@ struct SuiteOutcome {
     int jobs = 1;  // the cases run at the same time in this process (options.jobs resolved)
     double wall_seconds = 0;
     std::map<std::string, std::string> execution;  // ranks, hosts, jobs per rank (summary provenance)
-    std::map<std::string, std::string> precision;  // backend -> "double", "float", ... (BackendInfo)
-    std::map<std::string, bool> event_driven;      // backend -> BackendInfo::event_driven
+    // backend -> what it declares (precision, exact, rule, conserves: BackendInfo)
+    std::map<std::string, BackendInfo> declared;
     nlohmann::json energy_jumps = nlohmann::json::array();  // report_jumps.h, explained after judging
     std::size_t count(CheckStatus s) const;
     std::size_t physics_failures() const;

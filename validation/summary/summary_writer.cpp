@@ -188,19 +188,23 @@ Json check_order_json(const SuiteOutcome& outcome) {
     return out;
 }
 
-// What the report needs to know of each backend of the run, so that it names none itself.
+// What the report needs to know of each backend of the run, so that it names none itself: what
+// the backend declares (BackendInfo: precision, exact, rule, conserves), which every judgement
+// of it read. `stepping_rule` is whether it declares a rule; a variant inherits its base's.
 Json backends_json(const Suite& suite, const SuiteOutcome& outcome) {
     Object o;
     for (const auto& r : outcome.cases) {
         const std::string& b = r.spec.backend;
         if (o.json().contains(b)) continue;
-        const auto p = outcome.precision.find(b);
-        const std::string precision = p == outcome.precision.end() ? "" : p->second;
+        const auto d = outcome.declared.find(b);
+        const BackendInfo declared = d == outcome.declared.end() ? BackendInfo{} : d->second;
+        Json conserves = Json::array();
+        for (const auto& q : declared.conserves) conserves.push_back(q);
         Object x;
-        x.text("base", b.substr(0, b.find('['))).text("precision", precision)
-            .boolean("float", precision.rfind("float", 0) == 0).boolean("reference", b == suite.reference)
-            .boolean("stepping_rule", follows_stepping_rules(b))
-            .boolean("event_driven", outcome.event_driven.count(b) && outcome.event_driven.at(b));
+        x.text("base", b.substr(0, b.find('['))).text("precision", declared.precision)
+            .boolean("float", declared.single_precision()).boolean("reference", b == suite.reference)
+            .boolean("stepping_rule", declared.stepping_rule()).text("rule", declared.rule)
+            .boolean("exact", declared.exact).field("conserves", conserves);
         o.field(b, x.json());
     }
     return o.json();
