@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/text/printable.h"
 #include "core/io/shell_quote.h"
 #include "external/program_call.h"
 
@@ -65,7 +66,7 @@ void add_class_declarations(external::ExternalSolverSpec& spec, const PythonRunn
         load_time_limit);
     if (!outcome.succeeded())
         throw SuiteError(where + ": could not load it to read its declarations (" + outcome.describe(load_time_limit) +
-                         "): " + external::printable_tail(file_text(dir.file("output.txt")), 600));
+                         "): " + printable_tail(file_text(dir.file("output.txt")), 600));
     std::istringstream lines(file_text(dir.file("declarations.txt")));
     std::string key, value, exact;
     std::string rule, precision;

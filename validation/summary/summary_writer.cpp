@@ -396,8 +396,8 @@ Json thresholds_json(const VerdictThresholds& t) {
 
 // What each backend's verdict names (verdict_facts.h): the report words it, deciding nothing.
 Json verdicts_json(const Suite& suite, const SuiteOutcome& outcome) {
-    std::map<std::string, bool> stepping_rule;
-    for (const auto& r : outcome.cases) stepping_rule[r.spec.backend] = follows_stepping_rules(r.spec.backend);
+    std::map<std::string, bool> stepping_rule;  // what each backend declares (BackendInfo::rule)
+    for (const auto& [name, backend] : outcome.declared) stepping_rule[name] = backend.stepping_rule();
     Object out;
     for (const auto& [backend, f] : verdict_facts(suite.reference, outcome.checks, outcome.work_precision,
                                                    suite.verdicts, stepping_rule)) {
