@@ -33,13 +33,10 @@ NAMED_CHECKS = {
     "wall": {"wall_penetration", "trajectory_error"},      # a disk leaves the box
     "late": {"trajectory_error"},                          # everything after shifted by 1e-9 x speed
 }
-# Today an outside solver is held to the stepped rules' limits (energy drift 0.02, trajectory
-# 0.5 r_min): a restitution of 0.995 loses 0.4 to 1 % of the energy in the few-body scenes and a
-# 1e-9 delay moves the disks by 4e-9 r_min, both inside those limits. Only the limits derived
-# from the declaration `exact = true` (rounding level, up to the predictability horizon:
-# docs/validation.md) catch them; until the suite declares it, these two are expected to fail.
-NEEDS_EXACT_LIMITS = pytest.mark.xfail(
-    strict=True, reason="caught only by the limits of a solver declared exact (exact = true in exact_solvers.toml)")
+# An undeclared outside solver is held to looser limits (energy drift 0.02, trajectory 0.5 r_min):
+# a restitution of 0.995 loses 0.4 to 1 % of the energy in the few-body scenes and a 1e-9 delay
+# moves the disks by 4e-9 r_min, both inside those. The limits that follow from `exact = true`
+# (rounding level, up to the predictability horizon: docs/validation.md) catch them.
 
 
 def summary(out):
@@ -166,10 +163,10 @@ def test_each_fault_is_off_by_what_it_implies(run):
 
 
 @pytest.mark.parametrize("fault", [
-    pytest.param("restitution", marks=NEEDS_EXACT_LIMITS),
+    "restitution",
     "skip",
     "wall",
-    pytest.param("late", marks=NEEDS_EXACT_LIMITS),
+    "late",
 ])
 def test_each_faulty_solver_fails_the_check_that_names_its_fault(run, fault):
     _, s = run
