@@ -173,3 +173,25 @@ def test_each_faulty_solver_fails_the_check_that_names_its_fault(run, fault):
     for scene in ACTS_IN[fault]:
         failed = {c["check"] for c in checks(s, fault, scene) if c["status"] == "fail"}
         assert failed & NAMED_CHECKS[fault], (fault, scene, failed)
+
+
+def test_the_chaotic_suite_passes_event_plain_and_the_exact_solver(tmp_path):
+    """validation/suites/chaotic.toml (random sizes, periodic, mass ratio 50; 3 seeds each) with
+    the exact NumPy solver declared exact on the command line: two exact solvers that share no
+    code with `event` part from it after the predictability horizon, and both pass every check
+    (trajectory_error judged up to each run's horizon, which summary.json records)."""
+    out = tmp_path / "chaotic"
+    exact = HERE.parents[1] / "docs" / "examples" / "solvers" / "exact_disks.py"
+    r = subprocess.run([COLLIDE, "validate", HERE.parents[1] / "validation" / "suites" / "chaotic.toml",
+                        "--out", out, "--jobs", "2", "--python-solver", f"exact={exact}:ExactDisks",
+                        "--solver-exact", "exact"], capture_output=True, text=True)
+    assert r.returncode == 0, r.stdout + r.stderr
+    s = summary(out)
+    for backend in ("event-plain", "exact"):
+        judged = [c for c in checks(s, backend) if c["status"] != "left_out"]
+        assert {c["check"] for c in judged} >= {"trajectory_error", "energy_drift"}, backend
+        assert [c for c in judged if c["status"] == "fail"] == [], backend
+    # Each compared case records its horizon, and it ends before the run does (the scenes are chaotic).
+    horizons = [c["trajectory"]["horizon"] for c in s["cases"]
+                if c["backend"] == "exact" and c.get("trajectory")]
+    assert len(horizons) == 9 and all(0 < h < 20 for h in horizons), horizons
