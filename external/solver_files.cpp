@@ -67,9 +67,7 @@ std::string file_digest(const std::string& path, const struct stat& st, std::FIL
 
 std::string solver_files_digest(const ExternalSolverSpec& spec, std::FILE* progress) {
     std::string out;
-    for (std::string w : candidate_words(spec)) {
-        w.erase(std::remove(w.begin(), w.end(), '\''), w.end());
-        w.erase(std::remove(w.begin(), w.end(), '"'), w.end());
+    for (const std::string& w : candidate_words(spec)) {  // unquoted already (shell_words)
         if (w.empty()) continue;
         fs::path p(w);
         if (p.is_relative() && !spec.directory.empty()) p = fs::path(spec.directory) / p;

@@ -14,17 +14,17 @@ of the C++ side.
 
 def _is_control(ch):
     code = ord(ch)
-    return code < 0x20 or 0x7f <= code <= 0x9f
+    return code < 0x20 or 0x7f <= code <= 0x9f  # layout: the C0 and C1 control characters
 
 
 def terminal(text):
     out = []
     for ch in str(text):
         code = ord(ch)
-        if 0xdc80 <= code <= 0xdcff:  # a byte that was not UTF-8 (surrogateescape)
+        if 0xdc80 <= code <= 0xdcff:  # layout: a byte that was not UTF-8 (surrogateescape)
             out.append("\\x%02x" % (code - 0xdc00))
-        elif _is_control(ch) or 0xd800 <= code <= 0xdfff:
-            out.append("\\x%02x" % code if code <= 0xff else "\\u%04x" % code)
+        elif _is_control(ch) or 0xd800 <= code <= 0xdfff:  # layout: a lone surrogate
+            out.append("\\x%02x" % code if code <= 0xff else "\\u%04x" % code)  # layout: two hex digits for a byte
         else:
             out.append(ch)
     return "".join(out)
