@@ -16,7 +16,7 @@ namespace collide {
 
 // What a solver claims about itself, as data (docs/validation.md, "What a solver claims").
 // Every judgement reads these and none tests a backend's name: the limits of its checks
-// (validation/judge/tolerances.h), whether its statistics are held to a stepping rule's
+// (validation/record/tolerances.h), whether its statistics are held to a stepping rule's
 // predicted bias, whether `collide explain` can look inside one of its steps.
 struct BackendInfo {
     std::string name;         // its name in every output
@@ -38,7 +38,7 @@ struct BackendInfo {
     bool in_all = true;
     // Exact (event-driven): it jumps from collision to collision, resolves every contact at its
     // time and has no time step dt. Its conservation and overlap checks are held to rounding
-    // (validation/judge/exact_limits.h); `collide explain` (and so the report's energy jumps)
+    // (validation/record/exact_limits.h); `collide explain` (and so the report's energy jumps)
     // looks inside one step, so it refuses such a backend's cases.
     bool exact = false;
     // The stepping rule of docs/stepping-rules.md it implements: "" (none), "collide-first",

@@ -25,9 +25,9 @@
 #include "path_argument.h"
 #include "scene_from_dict.h"
 #include "simulation.h"
-#include "validation/run/case_result.h"
+#include "validation/record/case_result.h"
 #include "validation/plan/external_solvers.h"
-#include "validation/run/suite_runner.h"
+#include "validation/suite_runner.h"
 
 namespace py = pybind11;
 

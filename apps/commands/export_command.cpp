@@ -13,7 +13,7 @@
 #include "commands.h"
 #include "core/io/output_file.h"
 #include "core/io/run_export.h"
-#include "validation/run/case_result.h"
+#include "validation/record/case_result.h"
 
 namespace collide::cli {
 namespace {

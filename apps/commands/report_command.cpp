@@ -28,8 +28,8 @@
 #include "apps/input_paths.h"
 #include "commands.h"
 #include "core/io/output_file.h"
-#include "validation/run/case_result.h"
-#include "validation/run/suite_runner.h"
+#include "validation/record/case_result.h"
+#include "validation/suite_runner.h"
 
 namespace collide::cli {
 namespace {

@@ -12,7 +12,7 @@
 #include "commands.h"
 #include "core/backend_registry.h"
 #include "core/text/printable.h"
-#include "validation/run/suite_runner.h"
+#include "validation/suite_runner.h"
 
 namespace collide::cli {
 namespace {

@@ -14,7 +14,7 @@
 #include "core/scene/scene_loader.h"
 #include "external/external_solver.h"
 #include "validation/judge/checks.h"
-#include "validation/judge/exact_limits.h"
+#include "validation/record/exact_limits.h"
 #include "validation/plan/external_solvers.h"
 #include "validation/plan/suite.h"
 

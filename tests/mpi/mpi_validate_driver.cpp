@@ -16,7 +16,7 @@
 
 #include "core/io/provenance.h"
 #include "tests/validation/test_backends.h"
-#include "validation/run/suite_runner.h"
+#include "validation/suite_runner.h"
 
 namespace {
 

@@ -14,7 +14,7 @@
 #include "validation/run/case_isolation.h"
 #include "validation/plan/backend_variant.h"
 #include "validation/plan/case_plan.h"
-#include "validation/run/suite_runner.h"
+#include "validation/suite_runner.h"
 
 namespace collide::validation {
 namespace {

@@ -1,4 +1,4 @@
-// Case records (validation/run/case_result.h): a record reads back as written; a record whose
+// Case records (validation/record/case_result.h): a record reads back as written; a record whose
 // checksum line is missing or does not match, or that lacks a field or holds one of another
 // type, is refused as damaged (so --resume runs its case again) instead of read as defaults.
 #include <gtest/gtest.h>
@@ -12,7 +12,7 @@
 #include "core/numerics/crc32.h"
 #include "tests/support/scratch_directory.h"
 #include "core/io/run_schema.h"
-#include "validation/run/case_result.h"
+#include "validation/record/case_result.h"
 
 namespace collide::validation {
 namespace {

@@ -17,7 +17,7 @@
 #include "test_backends.h"
 #include "validation/plan/backend_variant.h"
 #include "validation/run/case_isolation.h"
-#include "validation/run/suite_runner.h"
+#include "validation/suite_runner.h"
 
 namespace collide::test {
 namespace {

@@ -1,4 +1,4 @@
-// The check table (validation/judge/check_table.h) is the one list of checks: the tolerance keys and
+// The check table (validation/record/check_table.h) is the one list of checks: the tolerance keys and
 // the names leave_out accepts come from it, and docs/validation.md describes each check as it
 // does.
 #include <gtest/gtest.h>
@@ -8,16 +8,16 @@
 #include <string>
 
 #include "tests/support/markdown_table.h"
-#include "validation/judge/check_table.h"
+#include "validation/record/check_table.h"
 #include "validation/judge/checks.h"
-#include "validation/judge/tolerances.h"
+#include "validation/record/tolerances.h"
 
 namespace collide::validation {
 namespace {
 
 TEST(CheckTable, DocsDescribeEveryCheckAsTheTableDoes) {
     const auto rows = test::markdown_table_after("docs/validation.md", "## The checks");
-    ASSERT_EQ(rows.size(), check_count) << "docs/validation.md: one row per check of validation/judge/check_table.h";
+    ASSERT_EQ(rows.size(), check_count) << "docs/validation.md: one row per check of validation/record/check_table.h";
     for (std::size_t k = 0; k < rows.size(); ++k) {
         const CheckDefinition& c = check_table[k];
         ASSERT_EQ(rows[k].size(), 6u) << c.name;

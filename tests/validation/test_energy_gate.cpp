@@ -13,7 +13,7 @@
 #include "reference/step_solver.h"
 #include "validation/judge/applicability.h"
 #include "validation/judge/checks.h"
-#include "validation/judge/tolerances.h"
+#include "validation/record/tolerances.h"
 
 namespace collide::validation {
 namespace {

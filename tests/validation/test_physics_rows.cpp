@@ -14,7 +14,7 @@
 #include "test_backends.h"
 #include "tests/support/test_scenes.h"
 #include "validation/compare/physics_rows.h"
-#include "validation/run/suite_runner.h"
+#include "validation/suite_runner.h"
 
 namespace collide::validation {
 namespace {

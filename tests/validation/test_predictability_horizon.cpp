@@ -13,7 +13,7 @@
 #include "reference/plain_event_solver.h"
 #include "test_backends.h"
 #include "validation/compare/predictability_horizon.h"
-#include "validation/run/suite_runner.h"
+#include "validation/suite_runner.h"
 #include "validation/run/twin_runs.h"
 
 namespace collide::validation {

@@ -5,7 +5,7 @@
 #include <random>
 
 #include "validation/judge/statistics.h"
-#include "validation/judge/tolerances.h"
+#include "validation/record/tolerances.h"
 
 namespace collide::validation {
 namespace {

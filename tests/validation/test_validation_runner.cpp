@@ -10,8 +10,8 @@
 #include <sstream>
 
 #include "test_backends.h"
-#include "validation/judge/check_table.h"
-#include "validation/run/suite_runner.h"
+#include "validation/record/check_table.h"
+#include "validation/suite_runner.h"
 
 namespace collide::test {
 namespace {

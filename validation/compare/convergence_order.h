@@ -22,27 +22,14 @@
 #include <string>
 #include <vector>
 
+#include "validation/record/observed_order.h"
+
 namespace collide::validation {
 
 struct ErrorPoint {
     double h = 0;               // the rule's effective step, dt / substeps
     double error = 0;
     double standard_error = 0;  // 0 where unknown
-};
-
-struct ErrorFloor {
-    double h = 0, error = 0;               // the last point of the asymptotic range
-    double finest_h = 0, finest_error = 0; // the finest point of the line
-    std::size_t excluded = 0;              // points below the range
-};
-
-struct ConvergenceOrder {
-    std::optional<double> order, standard_error;
-    std::size_t used = 0, points = 0;  // points in the range, points with a positive error
-    double h_coarse = 0, h_fine = 0;   // the range the order was fitted on
-    std::optional<ErrorFloor> floor;
-    bool bending = false;              // see above: the order mixes two regimes
-    std::string note;                  // why no order, when there is none
 };
 
 constexpr double flat_local_order = 0.3;

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "validation/run/case_result.h"
+#include "validation/record/case_result.h"
 #include "validation/compare/published_reference.h"
 #include "validation/plan/suite.h"
 

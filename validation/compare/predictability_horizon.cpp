@@ -7,12 +7,6 @@
 
 namespace collide::validation {
 
-bool PredictabilityHorizon::judges_anything(const std::vector<double>& times) const {
-    for (std::size_t k = 0; k < judged && k < times.size(); ++k)
-        if (times[k] > times.front()) return true;
-    return false;
-}
-
 PredictabilityHorizon predictability_horizon(const std::vector<double>& times,
                                              const std::vector<double>& twin_separation, double tolerance,
                                              double margin) {
@@ -30,26 +24,6 @@ PredictabilityHorizon predictability_horizon(const std::vector<double>& times,
 
 double trajectory_limit(bool exact, double tolerance, double twin_separation, double margin) {
     return exact ? margin * twin_separation : tolerance;
-}
-
-namespace {
-
-double error_ratio(double error, double limit) {
-    if (std::isnan(error)) return error;
-    if (limit > 0) return error / limit;
-    return error > 0 ? std::numeric_limits<double>::infinity() : 0.0;
-}
-
-}  // namespace
-
-bool TrajectoryJudgement::passed() const {
-    for (std::size_t k = 0; k < limit.size(); ++k)
-        if (!(error[k] <= limit[k])) return false;
-    return true;
-}
-
-double TrajectoryJudgement::ratio() const {
-    return limit.empty() ? 0.0 : error_ratio(error[worst], limit[worst]);
 }
 
 TrajectoryJudgement judge_trajectory(const std::vector<double>& times, const std::vector<double>& error,

@@ -26,24 +26,12 @@
 #include <cstdint>
 #include <vector>
 
+#include "validation/record/trajectory_judgement.h"
+
 namespace collide::validation {
 
 constexpr int horizon_twins = 3;          // K: twins of each reference run
 constexpr double horizon_margin = 1e3;    // M: the twins must stay within tolerance / M
-
-struct PredictabilityHorizon {
-    double threshold = 0;     // tolerance / margin [r_min]
-    std::size_t judged = 0;   // output times 0 .. judged-1 lie within the horizon
-    bool reached = false;     // the twins crossed the threshold before the run ended
-    // T_h: the last output time within the horizon (NaN when none is: judged == 0).
-    double time = 0;
-    // The first output time past the horizon (NaN when not reached).
-    double first_unjudged = 0;
-
-    // Whether an output time after the start lies within the horizon: a horizon shorter than
-    // the first output interval judges nothing (at t = 0 every solver starts from one state).
-    bool judges_anything(const std::vector<double>& times) const;
-};
 
 // The horizon of one reference run: `times` its output times, `twin_separation` the twins'
 // largest separation from it at those times [r_min]. A NaN separation (a twin that did not
@@ -59,17 +47,6 @@ double trajectory_limit(bool exact, double tolerance, double twin_separation, do
 // trajectory_error of one case judged up to its reference's horizon: `error` and
 // `twin_separation` at the output `times` [r_min]. Without a measured twin separation (an empty
 // one: a record written before twins were run) every output is judged with the tolerance.
-struct TrajectoryJudgement {
-    PredictabilityHorizon horizon;
-    bool exact = false;       // held to margin * twin separation (trajectory_limit)
-    bool measured = true;     // the twin separation was measured
-    std::vector<double> times, error, twin_separation;
-    std::vector<double> limit;  // at each judged output (0 .. horizon.judged-1)
-    std::size_t worst = 0;      // the judged output with the largest error / limit
-    bool judged() const { return horizon.judges_anything(times); }
-    bool passed() const;        // every judged output within its limit (NaN fails)
-    double ratio() const;       // error / limit at `worst` (inf for an error above a zero limit)
-};
 TrajectoryJudgement judge_trajectory(const std::vector<double>& times, const std::vector<double>& error,
                                      const std::vector<double>& twin_separation, double tolerance, bool exact,
                                      double margin = horizon_margin);

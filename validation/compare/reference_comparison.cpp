@@ -7,9 +7,10 @@
 #include <limits>
 #include <sstream>
 
+#include "validation/compare/convergence_order.h"
 #include "validation/compare/predictability_horizon.h"
 #include "validation/compare/reference_runs.h"
-#include "validation/judge/check_table.h"
+#include "validation/record/check_table.h"
 #include "validation/judge/observables.h"
 #include "validation/judge/statistics.h"
 #include "validation/models/statistics_bias_model.h"

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "validation/plan/case_plan.h"
-#include "validation/run/case_result.h"
+#include "validation/record/case_result.h"
 #include "core/backend_registry.h"
 #include "core/particle_state.h"
 #include "core/scene/scene.h"

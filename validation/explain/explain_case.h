@@ -16,7 +16,7 @@
 #include "validation/explain/case_replay.h"
 #include "validation/explain/energy_jump.h"
 #include "validation/plan/suite.h"
-#include "validation/run/case_result.h"
+#include "validation/record/case_result.h"
 
 namespace collide::validation {
 

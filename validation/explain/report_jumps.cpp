@@ -10,7 +10,7 @@
 
 #include "core/io/run_schema.h"
 #include "validation/explain/explain_case.h"
-#include "validation/run/case_result.h"
+#include "validation/record/case_result.h"
 #include "validation/summary/drawn_cases.h"
 
 namespace collide::validation {

@@ -26,7 +26,7 @@
 #include "core/backend_registry.h"
 #include "validation/judge/checks.h"
 #include "validation/plan/suite.h"
-#include "validation/run/case_result.h"
+#include "validation/record/case_result.h"
 
 namespace collide::validation {
 

@@ -1,7 +1,7 @@
 #include "validation/judge/checks.h"
 
 #include "core/io/run_schema.h"
-#include "validation/judge/check_table.h"
+#include "validation/record/check_table.h"
 #include "validation/models/energy_loss_model.h"
 
 #include <algorithm>
@@ -10,19 +10,6 @@
 #include <utility>
 
 namespace collide::validation {
-
-const char* to_string(CheckStatus s) {
-    switch (s) {
-        case CheckStatus::pass: return "pass";
-        case CheckStatus::fail: return "fail";
-        default: return "left_out";
-    }
-}
-
-std::string group_id(const CaseSpec& spec) {
-    const auto at = spec.id.rfind("__seed");
-    return at == std::string::npos ? spec.id : spec.id.substr(0, at);
-}
 
 namespace {
 

@@ -9,34 +9,16 @@
 #include <vector>
 
 #include "validation/judge/applicability.h"
-#include "validation/run/case_result.h"
-#include "validation/judge/tolerances.h"
+#include "validation/record/case_result.h"
+#include "validation/record/check_result.h"
+#include "validation/record/tolerances.h"
 
 namespace collide::validation {
-
-enum class CheckStatus { pass, fail, left_out };
-const char* to_string(CheckStatus s);
-
-struct CheckResult {
-    std::string subject;     // a case id, or a group id (case id without the seed) for statistics
-    std::string scene, backend;
-    std::string check;
-    CheckStatus status = CheckStatus::left_out;
-    double value = 0;
-    double tolerance = 0;
-    std::string comparison = "<=";  // how value relates to tolerance for a pass ("<=" or ">=")
-    std::string detail;             // failure message or left-out reason
-    // energy_drift of a stepped backend: the drift the rule itself predicts (energy_loss_model.h)
-    double predicted = std::nan(""), predicted_uncertainty = std::nan("");
-};
 
 // The checks of one case on its own (run, conservation, overlaps), with the case's limits
 // (ToleranceTable::for_case) and what its backend declares (a stepping rule's kinetic energy
 // is held to the rule's energy-loss model).
 std::vector<CheckResult> case_checks(const CaseResult& result, const SceneFeatures& features,
                                      const Tolerances& tolerances, const BackendInfo& backend);
-
-// The id of a case's sweep group: the case id without the "__seed<N>" suffix.
-std::string group_id(const CaseSpec& spec);
 
 }  // namespace collide::validation

@@ -22,8 +22,8 @@
 #include <vector>
 
 #include "validation/judge/applicability.h"
-#include "validation/run/case_result.h"
-#include "validation/judge/tolerances.h"
+#include "validation/record/case_result.h"
+#include "validation/record/tolerances.h"
 
 namespace collide::validation {
 

@@ -18,7 +18,7 @@
 #include <cstddef>
 #include <string>
 
-#include "validation/run/case_result.h"
+#include "validation/record/case_result.h"
 
 namespace collide::validation {
 

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "validation/compare/reference_comparison.h"
+#include "validation/record/comparisons.h"
 
 namespace collide::validation {
 

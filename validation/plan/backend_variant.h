@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "validation/judge/checks.h"
+#include "validation/record/check_result.h"
 #include "core/backend_registry.h"
 #include "validation/plan/suite.h"
 

@@ -111,12 +111,6 @@ std::map<std::string, std::string> case_definition(const Suite& suite, const Sce
     return parts;
 }
 
-std::string definition_hash(const std::map<std::string, std::string>& parts) {
-    std::string text;
-    for (const auto& [name, part] : parts) text += name + "=" + part + "\n";
-    return hash(text);
-}
-
 std::vector<std::string> changed_parts(const std::map<std::string, std::string>& recorded,
                                        const std::map<std::string, std::string>& now) {
     std::vector<std::string> changed;

@@ -32,8 +32,6 @@ namespace collide::validation {
 std::map<std::string, std::string> case_definition(const Suite& suite, const Scene& scene, const CaseSpec& spec,
                                                    std::FILE* progress = nullptr);
 
-// One hash over every part (names and hashes): what a record's definition_hash holds.
-std::string definition_hash(const std::map<std::string, std::string>& parts);
 
 // The parts whose hash differs between a record and now, in order (a part only one of them
 // has counts as changed).

@@ -13,26 +13,9 @@
 
 #include "core/backend_registry.h"
 #include "validation/plan/suite.h"
+#include "validation/record/case_spec.h"
 
 namespace collide::validation {
-
-struct CaseSpec {
-    std::string id;                 // e.g. "gas_small__step__dt0.001__sub1__seed2"; a variant
-                                    // "box2d[shipped]" appears as "box2d-shipped" (file names)
-    std::size_t scene_index = 0;    // into Suite::scenes
-    std::string scene;              // scene name
-    std::string backend;            // the name the report shows, e.g. "box2d[shipped]"
-    bool reference = false;         // this is the suite's reference backend
-    std::optional<double> dt;       // overrides of the scene for this sweep point
-    std::optional<int> substeps;
-    std::optional<int> iterations;
-    std::vector<std::pair<std::string, double>> parameters;  // scene-key sweep point (path, value)
-    std::uint64_t seed = 1;
-    std::string left_out;           // non-empty: the backend refused the scene, with its reason
-    // What defines the case, part by part (case_definition.h): filled by the runner before any
-    // case runs, stored in the case record, compared by --resume.
-    std::map<std::string, std::string> definition;
-};
 
 // The backends a suite asks for, found in `available` (`"all"` = every one of them, in order,
 // then every variant of the suite whose base is available), variants made backends of their

@@ -10,7 +10,7 @@
 #include "core/scene/scene_loader.h"
 #include "core/scene/toml_fields.h"
 #include "core/text/printable.h"
-#include "validation/judge/check_table.h"
+#include "validation/record/check_table.h"
 #include "validation/plan/external_solvers.h"
 #include "validation/plan/solver_tables.h"
 #include "validation/compare/physics_rows.h"

@@ -12,7 +12,7 @@
 
 #include "core/scene/scene.h"
 #include "external/external_solver.h"
-#include "validation/judge/tolerances.h"
+#include "validation/record/tolerances.h"
 
 namespace collide::validation {
 

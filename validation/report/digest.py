@@ -98,7 +98,7 @@ CHECKSUM_LINE = re.compile(rb'checksum = "crc32:([0-9a-f]{8})"\n')
 
 def verified_record_text(path, data):
     """The text of a case record after its first line, which holds the CRC-32 of the rest
-    (validation/run/case_result.cpp writes it); a record without it, or whose contents no longer
+    (validation/record/case_result.cpp writes it); a record without it, or whose contents no longer
     match it, is damaged and is not drawn."""
     line = CHECKSUM_LINE.match(data)
     if not line:

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "validation/run/case_isolation.h"
-#include "validation/run/case_result.h"
+#include "validation/record/case_result.h"
 #include "core/scene/scene.h"
 #include "validation/run/progress.h"
 

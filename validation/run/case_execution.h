@@ -5,7 +5,8 @@
 
 #include <string>
 
-#include "validation/run/case_result.h"
+#include "validation/plan/case_plan.h"
+#include "validation/record/case_result.h"
 #include "core/backend_registry.h"
 
 namespace collide::validation {

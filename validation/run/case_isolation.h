@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "validation/run/case_result.h"
+#include "validation/record/case_result.h"
 
 namespace collide::validation {
 

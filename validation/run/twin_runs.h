@@ -15,7 +15,7 @@
 #include "core/backend_registry.h"
 #include "core/particle_state.h"
 #include "core/scene/scene.h"
-#include "validation/run/case_result.h"
+#include "validation/record/case_result.h"
 
 namespace collide::validation {
 

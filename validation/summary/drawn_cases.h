@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "validation/run/case_result.h"
+#include "validation/record/case_result.h"
 
 namespace collide::validation {
 

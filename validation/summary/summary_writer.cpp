@@ -15,7 +15,8 @@
 
 #include "core/io/output_file.h"
 #include "core/io/provenance.h"
-#include "validation/judge/check_table.h"
+#include "validation/compare/predictability_horizon.h"
+#include "validation/record/check_table.h"
 #include "validation/models/bias_fit.h"
 #include "validation/models/statistics_bias_model.h"
 #include "validation/summary/drawn_cases.h"

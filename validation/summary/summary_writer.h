@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "validation/run/suite_runner.h"
+#include "validation/suite_outcome.h"
 
 namespace collide::validation {
 

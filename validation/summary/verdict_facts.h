@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "validation/compare/reference_comparison.h"
-#include "validation/judge/checks.h"
+#include "validation/record/comparisons.h"
+#include "validation/record/check_result.h"
 #include "validation/plan/suite.h"
 
 namespace collide::validation {

@@ -1,4 +1,4 @@
-#include "validation/judge/exact_limits.h"
+#include "validation/record/exact_limits.h"
 
 #include <algorithm>
 #include <cmath>

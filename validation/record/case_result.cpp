@@ -1,4 +1,4 @@
-#include "validation/run/case_result.h"
+#include "validation/record/case_result.h"
 
 #include <unistd.h>
 
@@ -21,7 +21,7 @@
 #include "core/io/output_file.h"
 #include "core/io/run_reader.h"
 #include "core/io/run_schema.h"
-#include "validation/plan/case_definition.h"
+#include "validation/record/case_spec.h"
 
 namespace collide::validation {
 

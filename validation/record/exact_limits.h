@@ -9,8 +9,8 @@
 #include <optional>
 
 #include "core/scene/scene.h"
-#include "validation/judge/tolerances.h"
-#include "validation/run/case_result.h"
+#include "validation/record/tolerances.h"
+#include "validation/record/case_result.h"
 
 namespace collide::validation {
 

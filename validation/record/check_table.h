@@ -16,7 +16,7 @@
 #include <string_view>
 #include <vector>
 
-#include "validation/judge/tolerances.h"
+#include "validation/record/tolerances.h"
 
 namespace collide::validation {
 

@@ -1,4 +1,4 @@
-#include "validation/run/suite_runner.h"
+#include "validation/suite_runner.h"
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -17,8 +17,11 @@
 #include <thread>
 #include <sstream>
 
+#include "validation/compare/reference_comparison.h"
 #include "validation/compare/reference_runs.h"
-#include "validation/judge/exact_limits.h"
+#include "validation/judge/checks.h"
+#include "validation/judge/stability.h"
+#include "validation/record/exact_limits.h"
 #include "validation/plan/backend_variant.h"
 #include "validation/plan/case_definition.h"
 #include "validation/run/case_execution.h"
@@ -32,17 +35,6 @@
 #include "validation/explain/report_jumps.h"
 
 namespace collide::validation {
-
-std::size_t SuiteOutcome::count(CheckStatus s) const {
-    std::size_t n = 0;
-    for (const auto& c : checks) n += c.status == s;
-    return n;
-}
-
-std::size_t SuiteOutcome::physics_failures() const {
-    return std::size_t(std::count_if(physics.rows.begin(), physics.rows.end(),
-                                     [](const PhysicsRow& r) { return r.verdict == PhysicsVerdict::fail; }));
-}
 
 namespace {
 

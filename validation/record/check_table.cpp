@@ -1,4 +1,4 @@
-#include "validation/judge/check_table.h"
+#include "validation/record/check_table.h"
 
 namespace collide::validation {
 std::vector<std::string> check_names(CheckKind kind) {

@@ -1,10 +1,10 @@
-#include "validation/judge/tolerances.h"
+#include "validation/record/tolerances.h"
 
 #include <algorithm>
 #include <stdexcept>
 
-#include "validation/judge/check_table.h"
-#include "validation/judge/exact_limits.h"
+#include "validation/record/check_table.h"
+#include "validation/record/exact_limits.h"
 
 namespace collide::validation {
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "validation/plan/case_plan.h"
+#include "validation/record/case_spec.h"
 #include "core/metrics.h"
 
 namespace collide::validation {
