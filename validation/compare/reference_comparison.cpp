@@ -272,14 +272,9 @@ CheckResult trajectory_check(const Group& g, const Group& ref, double tolerance,
     return c;
 }
 
-}  // namespace
-
-Comparisons compare_with_reference(const Suite& suite, const std::vector<CaseResult>& results,
-                                   const std::vector<SceneFeatures>& features,
-                                   const std::map<std::string, Tolerances>& tolerances,
-                                   const std::map<std::string, const BackendInfo*>& declared) {
-    Comparisons out;
-    // Groups in first-seen order, so the report follows the suite's order.
+// The results in sweep groups (a group: the cases of one id without its seed), in first-seen
+// order, so the report follows the suite's order.
+std::vector<Group> sweep_groups(const std::vector<CaseResult>& results) {
     std::vector<Group> groups;
     for (const CaseResult& r : results) {
         const std::string id = group_id(r.spec);
@@ -287,129 +282,192 @@ Comparisons compare_with_reference(const Suite& suite, const std::vector<CaseRes
         if (it == groups.end()) groups.push_back({id, {&r}});
         else it->cases.push_back(&r);
     }
-    // All reference cases of a scene as one group (trajectory scenes have one per dt).
-    std::map<std::string, Group> reference_groups;
+    return groups;
+}
+
+// All reference cases of a scene as one group, by reference_key (a trajectory scene has one
+// reference run per dt).
+std::map<std::string, Group> reference_groups(const std::vector<Group>& groups) {
+    std::map<std::string, Group> merged;
     for (const Group& g : groups) {
         if (!g.cases.front()->spec.reference) continue;
-        Group& merged = reference_groups[reference_key(g.cases.front()->spec)];
-        if (merged.id.empty()) merged.id = g.id;
-        merged.cases.insert(merged.cases.end(), g.cases.begin(), g.cases.end());
+        Group& m = merged[reference_key(g.cases.front()->spec)];
+        if (m.id.empty()) m.id = g.id;
+        m.cases.insert(m.cases.end(), g.cases.begin(), g.cases.end());
     }
-    auto reference_group = [&](const std::string& key) -> const Group* {
-        auto it = reference_groups.find(key);
-        return it == reference_groups.end() ? nullptr : &it->second;
-    };
-    std::map<std::pair<std::string, std::string>, WorkPrecisionLine> lines;
-    std::vector<std::pair<std::string, std::string>> line_order;
+    return merged;
+}
 
+// Why group `g` cannot be compared with its reference group `ref` (null: the reference backend
+// is not part of this run), or "" when it can.
+std::string comparison_obstacle(const Group& g, const Group* ref, const std::string& reference_backend) {
+    if (g.cases.front()->status == RunStatus::left_out) return "case left out: backend cannot run this scene";
+    if (!ref) return "the reference backend '" + reference_backend + "' is not part of this run";
+    if (ref->cases.front()->status == RunStatus::left_out)
+        return "the reference backend cannot run this scene: " + ref->cases.front()->diagnostic;
+    return "";
+}
+
+// Every comparison check of `g`'s kind, left out for `why`.
+void leave_out_comparison(const Group& g, Comparison comparison, const std::string& why,
+                          std::vector<CheckResult>& checks) {
+    for (const auto& n : check_names(comparison == Comparison::trajectory ? CheckKind::trajectory : CheckKind::statistics)) {
+        CheckResult c = make_check(g, n);
+        c.detail = why;
+        checks.push_back(c);
+    }
+}
+
+// What the statistics of `g` are expected to differ from the reference's by. A stepping rule
+// differs from the exact dynamics by a derived first-order bias in h = dt / substeps
+// (statistics_bias_model.h); every other backend (box2d is not the stepped rule) is held to
+// equal means: empty models.
+struct BiasModels {
+    std::function<BiasPrediction(const MeanAndError&)> pressure, collision_rate;
+};
+BiasModels bias_models(const Group& g, const BackendInfo& backend) {
+    if (!backend.stepping_rule()) return {};
+    const double h = g.cases.front()->dt / std::max(1, g.cases.front()->substeps);
+    return {[h](const MeanAndError& nu) { return predicted_pressure_bias(nu.mean, nu.standard_error, h, contact_shell); },
+            [h](const MeanAndError& nu) { return predicted_collision_rate_bias(nu.mean, nu.standard_error, h); }};
+}
+
+// speed_distribution: the two-sample Kolmogorov-Smirnov test of the pooled speeds of `g`
+// against the reference's; passes at a p-value of at least `p_min`.
+CheckResult speed_distribution_check(const Group& g, const Group& ref, double p_min) {
+    CheckResult speed = make_check(g, "speed_distribution");
+    const auto ks = ks_two_sample(pooled_speeds(g), pooled_speeds(ref));
+    speed.value = ks.p_value;
+    speed.tolerance = p_min;
+    speed.comparison = ">=";
+    speed.status = ks.p_value >= p_min ? CheckStatus::pass : CheckStatus::fail;
+    std::ostringstream s;
+    s << "KS statistic D = " << ks.statistic << ", p = " << ks.p_value;
+    speed.detail = speed.status == CheckStatus::pass ? s.str() : s.str() + " below " + std::to_string(p_min);
+    return speed;
+}
+
+// The statistics comparison of a many-body group: pressure, collision_rate and
+// speed_distribution against the reference, each appended to `checks`. The work-precision
+// point gets the judged differences of the replicate means (what the check judges and the
+// figures draw) and, when Z was judged, the run time of every finished case in `seconds`.
+void compare_statistics(const Group& g, const Group& ref, const SceneFeatures& features, const Tolerances& tol,
+                        const BackendInfo& backend, std::vector<CheckResult>& checks, WorkPrecisionPoint& point,
+                        std::vector<double>& seconds) {
+    const BiasModels models = bias_models(g, backend);
+    CheckResult pressure = make_check(g, "pressure");
+    const auto pressure_left_out_why = pressure_left_out(features);
+    const ReplicateMeans z = pressure_left_out_why ? ReplicateMeans{} : replicate_means(g, ref, mean_compressibility);
+    if (pressure_left_out_why) pressure.detail = *pressure_left_out_why;
+    else z_check(pressure, z, ref, tol.statistics_z, "Z = P/(rho kT) (contact-shell estimator)", models.pressure);
+    checks.push_back(pressure);
+    CheckResult rate = make_check(g, "collision_rate");
+    const ReplicateMeans nu = replicate_means(g, ref, collision_rate);
+    z_check(rate, nu, ref, tol.statistics_z, "collisions per disk per time", models.collision_rate);
+    checks.push_back(rate);
+    if (pressure.status != CheckStatus::left_out) point.pressure = statistical_difference(z, pressure, tol.statistics_z);
+    if (rate.status != CheckStatus::left_out) point.collision_rate = statistical_difference(nu, rate, tol.statistics_z);
+    checks.push_back(speed_distribution_check(g, ref, tol.speed_ks_p_value));
+    if (point.pressure)
+        for (const CaseResult* r : g.cases)
+            if (r->finished()) seconds.push_back(r->wall_seconds / r->duration);
+}
+
+// The work-precision point of `g` before it is measured: its sweep values.
+WorkPrecisionPoint sweep_point(const Group& g) {
+    WorkPrecisionPoint point;
+    point.group = g.id;
+    point.dt = g.cases.front()->dt;
+    point.substeps = g.cases.front()->substeps;
+    point.iterations = g.cases.front()->spec.iterations.value_or(0);
+    return point;
+}
+
+// Sets the point's error and run time: Z's relative difference where it was judged, else the
+// mean of the per-seed trajectory errors. False when nothing was measured (no point).
+bool measure_point(WorkPrecisionPoint& point, const std::vector<double>& seconds, const std::vector<double>& errors) {
+    if (point.pressure && !seconds.empty()) {
+        point.error = std::fabs(point.pressure->relative);
+        point.error_standard_error = point.pressure->relative_standard_error;
+        point.replicates = point.pressure->replicates;
+    } else if (!errors.empty()) {
+        const auto e = mean_and_error(errors);
+        point.error = e.mean;
+        point.error_standard_error = e.standard_error;
+        point.replicates = errors.size();
+    } else {
+        return false;
+    }
+    point.seconds_per_time_unit = mean_and_error(seconds).mean;
+    return true;
+}
+
+// The work-precision lines, one per (scene, backend) in first-seen order, each with the
+// convergence order fitted on its points (convergence_order.h).
+class WorkPrecisionLines {
+public:
+    void add(const std::string& scene, const std::string& backend, const std::string& error_kind,
+             const WorkPrecisionPoint& point) {
+        const auto key = std::make_pair(scene, backend);
+        if (!lines_.count(key)) {
+            order_.push_back(key);
+            lines_[key] = {scene, backend, error_kind, {}, {}};
+        }
+        lines_[key].points.push_back(point);
+    }
+    std::vector<WorkPrecisionLine> fitted() const {
+        std::vector<WorkPrecisionLine> out;
+        for (const auto& key : order_) {
+            WorkPrecisionLine line = lines_.at(key);
+            std::vector<ErrorPoint> points;
+            // The rule's effective step is dt / substeps (the integrate-first rule sub-steps).
+            for (const auto& p : line.points)
+                points.push_back({p.dt / std::max(1, p.substeps), p.error, p.error_standard_error});
+            line.order = asymptotic_order(points);
+            out.push_back(line);
+        }
+        return out;
+    }
+
+private:
+    std::map<std::pair<std::string, std::string>, WorkPrecisionLine> lines_;
+    std::vector<std::pair<std::string, std::string>> order_;
+};
+
+}  // namespace
+
+Comparisons compare_with_reference(const Suite& suite, const std::vector<CaseResult>& results,
+                                   const std::vector<SceneFeatures>& features,
+                                   const std::map<std::string, Tolerances>& tolerances,
+                                   const std::map<std::string, const BackendInfo*>& declared) {
+    Comparisons out;
+    const std::vector<Group> groups = sweep_groups(results);
+    const std::map<std::string, Group> references = reference_groups(groups);
+    WorkPrecisionLines lines;
     for (const Group& g : groups) {
         const CaseSpec& spec = g.cases.front()->spec;
         const SuiteScene& entry = suite.scenes[spec.scene_index];
         if (entry.comparison == Comparison::none || spec.reference) continue;
-        const Tolerances& tol = tolerances.at(spec.backend);
-        const Group* ref = reference_group(reference_key(spec));
-        const bool left_out_case = g.cases.front()->status == RunStatus::left_out;
-        const std::vector<std::string> names =
-            check_names(entry.comparison == Comparison::trajectory ? CheckKind::trajectory : CheckKind::statistics);
-        std::string skip;
-        if (left_out_case) skip = "case left out: backend cannot run this scene";
-        else if (!ref) skip = "the reference backend '" + suite.reference + "' is not part of this run";
-        else if (ref->cases.front()->status == RunStatus::left_out)
-            skip = "the reference backend cannot run this scene: " + ref->cases.front()->diagnostic;
-        if (!skip.empty()) {
-            for (const auto& n : names) {
-                CheckResult c = make_check(g, n);
-                c.detail = skip;
-                out.checks.push_back(c);
-            }
+        const auto found = references.find(reference_key(spec));
+        const Group* ref = found == references.end() ? nullptr : &found->second;
+        if (const std::string why = comparison_obstacle(g, ref, suite.reference); !why.empty()) {
+            leave_out_comparison(g, entry.comparison, why, out.checks);
             continue;
         }
-
-        // Work-precision point of this group: its mean run time and mean error.
-        WorkPrecisionPoint point;
-        point.group = g.id;
-        point.dt = g.cases.front()->dt;
-        point.substeps = g.cases.front()->substeps;
-        point.iterations = spec.iterations.value_or(0);
+        const bool trajectory = entry.comparison == Comparison::trajectory;
+        const Tolerances& tol = tolerances.at(spec.backend);
+        WorkPrecisionPoint point = sweep_point(g);
         std::vector<double> seconds, errors;
-
-        if (entry.comparison == Comparison::trajectory) {
+        if (trajectory)
             out.checks.push_back(trajectory_check(g, *ref, tol.trajectory_error, claims_exact_double(declared, spec.backend),
                                                   out.trajectories, seconds, errors));
-        } else {
-            // Stepped rules differ from the exact dynamics by a derived first-order bias: their
-            // statistics are judged against it (statistics_bias_model.h); every other backend
-            // (box2d is not the stepped rule) against equal means.
-            std::function<BiasPrediction(const MeanAndError&)> pressure_model, rate_model;
-            if (declared.at(spec.backend)->stepping_rule()) {
-                const double h = g.cases.front()->dt / std::max(1, g.cases.front()->substeps);
-                pressure_model = [h](const MeanAndError& nu) {
-                    return predicted_pressure_bias(nu.mean, nu.standard_error, h, contact_shell);
-                };
-                rate_model = [h](const MeanAndError& nu) {
-                    return predicted_collision_rate_bias(nu.mean, nu.standard_error, h);
-                };
-            }
-            CheckResult pressure = make_check(g, "pressure");
-            const auto pressure_left_out_why = pressure_left_out(features[spec.scene_index]);
-            const ReplicateMeans z = pressure_left_out_why ? ReplicateMeans{} : replicate_means(g, *ref, mean_compressibility);
-            if (pressure_left_out_why) pressure.detail = *pressure_left_out_why;
-            else z_check(pressure, z, *ref, tol.statistics_z, "Z = P/(rho kT) (contact-shell estimator)", pressure_model);
-            out.checks.push_back(pressure);
-            CheckResult rate = make_check(g, "collision_rate");
-            const ReplicateMeans nu = replicate_means(g, *ref, collision_rate);
-            z_check(rate, nu, *ref, tol.statistics_z, "collisions per disk per time", rate_model);
-            out.checks.push_back(rate);
-            if (pressure.status != CheckStatus::left_out) point.pressure = statistical_difference(z, pressure, tol.statistics_z);
-            if (rate.status != CheckStatus::left_out) point.collision_rate = statistical_difference(nu, rate, tol.statistics_z);
-            CheckResult speed = make_check(g, "speed_distribution");
-            const auto ks = ks_two_sample(pooled_speeds(g), pooled_speeds(*ref));
-            speed.value = ks.p_value;
-            speed.tolerance = tol.speed_ks_p_value;
-            speed.comparison = ">=";
-            speed.status = ks.p_value >= tol.speed_ks_p_value ? CheckStatus::pass : CheckStatus::fail;
-            std::ostringstream s;
-            s << "KS statistic D = " << ks.statistic << ", p = " << ks.p_value;
-            speed.detail = speed.status == CheckStatus::pass ? s.str() : s.str() + " below " + std::to_string(tol.speed_ks_p_value);
-            out.checks.push_back(speed);
-            // The point's error is the difference of the replicate means (what the check
-            // judges and the figures draw), with its combined standard error.
-            if (point.pressure)
-                for (const CaseResult* r : g.cases)
-                    if (r->finished()) seconds.push_back(r->wall_seconds / r->duration);
-        }
-        if (point.pressure && !seconds.empty()) {
-            point.error = std::fabs(point.pressure->relative);
-            point.error_standard_error = point.pressure->relative_standard_error;
-            point.replicates = point.pressure->replicates;
-        } else if (!errors.empty()) {
-            const auto e = mean_and_error(errors);
-            point.error = e.mean;
-            point.error_standard_error = e.standard_error;
-            point.replicates = errors.size();
-        } else {
-            continue;  // nothing measured: no point
-        }
-        point.seconds_per_time_unit = mean_and_error(seconds).mean;
-        const auto key = std::make_pair(spec.scene, spec.backend);
-        if (!lines.count(key)) {
-            line_order.push_back(key);
-            lines[key] = {spec.scene, spec.backend,
-                          entry.comparison == Comparison::trajectory ? "trajectory error / r_min"
-                                                                     : "|Z - Z_ref| / Z_ref",
-                          {}, {}};
-        }
-        lines[key].points.push_back(point);
+        else
+            compare_statistics(g, *ref, features[spec.scene_index], tol, *declared.at(spec.backend), out.checks, point,
+                               seconds);
+        if (measure_point(point, seconds, errors))
+            lines.add(spec.scene, spec.backend, trajectory ? "trajectory error / r_min" : "|Z - Z_ref| / Z_ref", point);
     }
-    for (const auto& key : line_order) {
-        WorkPrecisionLine line = lines[key];
-        std::vector<ErrorPoint> points;
-        // The rule's effective step is dt / substeps (the integrate-first rule sub-steps).
-        for (const auto& p : line.points)
-            points.push_back({p.dt / std::max(1, p.substeps), p.error, p.error_standard_error});
-        line.order = asymptotic_order(points);
-        out.work_precision.push_back(line);
-    }
+    out.work_precision = lines.fitted();
     return out;
 }
 
