@@ -16,6 +16,7 @@
 #include "validation/judge/checks.h"
 #include "validation/judge/exact_limits.h"
 #include "validation/plan/external_solvers.h"
+#include "tests/support/recorded_case.h"
 #include "tests/support/suite_text.h"
 #include "validation/plan/suite.h"
 
@@ -99,21 +100,8 @@ TEST_F(ClassDeclarations, AttributesThatContradictTheSuiteAreRefused) {
 // Runs `backend` on `given` (the scene it is given) and records the case as the suite
 // would, for a case of the scene `declared`.
 CaseResult run_case(const BackendInfo& backend, const Scene& declared, const Scene& given) {
-    const ParticleState<double> initial = generate_initial_state(declared);
-    auto solver = backend.create(BackendOptions{});
-    CaseResult r;
-    RunOptions options;
-    options.on_state = [&](const ParticleState<double>&, const Metrics& m) { r.series.push_back(m); };
-    const RunResult run = run_scene(given, *solver, initial, options);
-    r.spec.id = backend.name;
-    r.spec.backend = backend.name;
-    r.disks = initial.size();
-    r.duration = declared.run.duration;
-    r.dt = declared.run.dt;
-    r.contacts = run.stats.contacts;
-    for (double w : initial.inv_mass) r.total_mass += 1 / w;
-    r.initial.radius = initial.radius;
-    return r;
+    const auto solver = backend.create(BackendOptions{});
+    return test::recorded_case(*solver, declared, given, backend.name, backend.name);
 }
 
 // The checks of `r` judged as a case of `claims`, with the limits the runner derives.
