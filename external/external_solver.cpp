@@ -17,6 +17,7 @@
 #include "core/io/fd_io.h"
 #include "core/io/output_file.h"
 #include "core/io/path_causes.h"
+#include "core/io/temporary_directory.h"
 #include "core/numerics/number_text.h"
 #include "core/numerics/target_time.h"
 #include "core/text/printable.h"
@@ -40,28 +41,10 @@ std::string request_root() {
 }
 
 // A request directory of its own under request_root(), removed with it.
-class RequestDirectory {
-public:
-    RequestDirectory() {
-        if (const std::string problem = request_root_problem(); !problem.empty()) throw std::runtime_error(problem);
-        std::string pattern = (fs::path(request_root()) / "collide-solver-XXXXXX").string();
-        if (!::mkdtemp(pattern.data()))
-            throw std::runtime_error("cannot create a request directory in " + request_root() + " (" +
-                                     std::strerror(errno) + ")");
-        path_ = pattern;
-    }
-    ~RequestDirectory() {
-        std::error_code ignored;
-        fs::remove_all(path_, ignored);
-    }
-    RequestDirectory(const RequestDirectory&) = delete;
-    RequestDirectory& operator=(const RequestDirectory&) = delete;
-    std::string file(const std::string& name) const { return (fs::path(path_) / name).string(); }
-    const std::string& path() const { return path_; }
-
-private:
-    std::string path_;
-};
+TemporaryDirectory request_directory() {
+    if (const std::string problem = request_root_problem(); !problem.empty()) throw std::runtime_error(problem);
+    return TemporaryDirectory(request_root(), "collide-solver", "a request directory");
+}
 
 // At most `limit` bytes of the file: a solver's output may be large, and only its head is read.
 std::string read_text(const std::string& path, std::uintmax_t limit) {
@@ -294,7 +277,7 @@ private:
     }
 
     void call(const std::vector<double>& times) {
-        RequestDirectory dir;
+        const TemporaryDirectory dir = request_directory();
         write_request_file(dir.file("request.txt"), request_text(spec_, scene_, state_.size(), time_, times));
         write_request_file(dir.file("initial.npy"), state_npy(state_));
         write_request_file(dir.file("scene.toml"), scene_.source_text);

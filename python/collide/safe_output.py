@@ -77,6 +77,16 @@ def _directory_of(path):
     return os.path.dirname(os.fspath(path)) or "."
 
 
+def _link_to_nothing(path):
+    return f"it is a symbolic link to nothing ('{os.readlink(path)}' does not exist)"
+
+
+def _check_writable(path, directory, what):
+    """Creating `what` in `directory` needs write and search permission on it (POSIX open(2))."""
+    if not os.access(directory, os.W_OK | os.X_OK):
+        _refuse(path, f"cannot create {what} in directory '{directory}' ({os.strerror(errno.EACCES)})")
+
+
 def _check_directory_of(path, directory):
     try:
         st = os.stat(directory)
@@ -86,8 +96,7 @@ def _check_directory_of(path, directory):
         _refuse(path, _unreachable_directory(directory, e))
     if not stat.S_ISDIR(st.st_mode):
         _refuse(path, f"'{directory}' is not a directory (it is {_kind(st.st_mode)})")
-    if not os.access(directory, os.W_OK | os.X_OK):
-        _refuse(path, f"cannot create a file in directory '{directory}' ({os.strerror(errno.EACCES)})")
+    _check_writable(path, directory, "a file")
 
 
 def _follow_link(path):
@@ -98,10 +107,9 @@ def _follow_link(path):
             _refuse(path, _link_loop("it"))
         if e.errno == errno.ENAMETOOLONG:
             _refuse(path, _too_long())
-        pointee = os.readlink(path)
         if e.errno == errno.ENOENT:
-            _refuse(path, f"it is a symbolic link to nothing ('{pointee}' does not exist)")
-        _refuse(path, f"it is a symbolic link to '{pointee}', which cannot be reached ({e.strerror})")
+            _refuse(path, _link_to_nothing(path))
+        _refuse(path, f"it is a symbolic link to '{os.readlink(path)}', which cannot be reached ({e.strerror})")
 
 
 def _check_existing(path):
@@ -150,14 +158,13 @@ def check_output_directory(path):
         st = os.stat(path)
     except OSError as e:
         if e.errno == errno.ENOENT and os.path.islink(path):
-            _refuse(path, f"it is a symbolic link to nothing ('{os.readlink(path)}' does not exist)")
+            _refuse(path, _link_to_nothing(path))
         if e.errno == errno.ENOENT:
             return
         _refuse(path, _unreachable_directory(path, e))
     if not stat.S_ISDIR(st.st_mode):
         _refuse(path, f"it exists and is not a directory (it is {_kind(st.st_mode)}); expected an output directory")
-    if not os.access(path, os.W_OK | os.X_OK):
-        _refuse(path, f"cannot create files in directory '{path}' ({os.strerror(errno.EACCES)})")
+    _check_writable(path, path, "files")
 
 
 def make_output_directory(path):

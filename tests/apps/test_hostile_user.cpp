@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/text/printable.h"
+#include "tests/support/collide_program.h"
 #include "tests/support/program_runner.h"
 #include "tests/support/scratch_directory.h"
 #include "tests/support/test_scenes.h"
@@ -24,12 +25,8 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::contains;
-using test::ProgramResult;
+using test::run_collide;
 using test::ScratchDirectory;
-
-ProgramResult run_collide(const std::vector<std::string>& args, const ScratchDirectory& dir) {
-    return test::run_program(COLLIDE_EXECUTABLE, args, dir);
-}
 
 // A suite of head_on_equal on `step` (its own reference), one seed; `extra` is appended to the
 // [[scene]] entry, `tables` after it.

@@ -29,6 +29,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/collide_program.h"
 #include "tests/support/program_runner.h"
 #include "tests/support/scratch_directory.h"
 #include "tests/support/test_scenes.h"
@@ -42,10 +43,8 @@ using test::ProgramResult;
 using test::ScratchDirectory;
 
 // `collide ARGS` under a time limit: a writer that opened a FIFO would wait forever.
-ProgramResult run_collide(const std::vector<std::string>& args, const ScratchDirectory& dir) {
-    std::vector<std::string> limited{"60", COLLIDE_EXECUTABLE};
-    limited.insert(limited.end(), args.begin(), args.end());
-    return test::run_program("timeout", limited, dir);
+ProgramResult run_collide_limited(const std::vector<std::string>& args, const ScratchDirectory& dir) {
+    return test::run_collide_within(60, args, dir);
 }
 
 const std::string case_id = "head_on_equal__step__seed1";
@@ -71,7 +70,7 @@ const std::string& run_with_frames() {
     static ScratchDirectory dir;
     static const std::string path = [] {
         const std::string h5 = dir.file("frames.h5");
-        const auto r = run_collide({"run", test::scene_file("head_on_equal.toml"), "--frames", "--out", h5}, dir);
+        const auto r = run_collide_limited({"run", test::scene_file("head_on_equal.toml"), "--frames", "--out", h5}, dir);
         EXPECT_EQ(r.exit_code, 0) << r.err;
         return h5;
     }();
@@ -289,7 +288,7 @@ TEST_P(EveryWriter, RefusesAPlaceThatIsNotARegularFileAndLeavesItAsItWas) {
     std::string skip;
     const std::string given = hostile.make(place, skip);
     if (!skip.empty()) GTEST_SKIP() << skip;
-    const auto result = run_collide(writer.args(given, dir), dir);
+    const auto result = run_collide_limited(writer.args(given, dir), dir);
     EXPECT_NE(result.exit_code, 0) << result.out;
     EXPECT_NE(result.exit_code, -1) << "no crash: " << result.err;
     EXPECT_NE(result.exit_code, 124) << "no hang";
@@ -325,7 +324,7 @@ TEST_P(EveryOutputDirectory, RefusesAPlaceThatIsNotADirectory) {
         const std::vector<std::string> args =
             report ? std::vector<std::string>{"report", results.string()}
                    : std::vector<std::string>{"validate", suite_file(dir), "--out", given};
-        const auto result = run_collide(args, dir);
+        const auto result = run_collide_limited(args, dir);
         EXPECT_NE(result.exit_code, 0) << result.out;
         EXPECT_NE(result.exit_code, -1) << "no crash: " << result.err;
         EXPECT_TRUE(contains(result.err, "'" + given + "'")) << result.err;
@@ -363,7 +362,7 @@ TEST_P(EveryWriterFollowingALink, ReplacesTheFileAndKeepsTheLink) {
     const fs::path real = dir.path() / ("real" + place.extension().string());
     test::write_text_file(real.string(), "old");
     fs::create_symlink(real, place);
-    const auto result = run_collide(writer.args(place, dir), dir);
+    const auto result = run_collide_limited(writer.args(place, dir), dir);
     EXPECT_EQ(result.exit_code, 0) << result.err;
     EXPECT_TRUE(fs::is_symlink(place)) << "the link stays a link";
     EXPECT_NE(test::read_text_file(real.string()), "old") << "the file it points to holds the new output";
@@ -396,7 +395,7 @@ TEST(OutputPaths, LogsAndLocksAreNeverWrittenThroughALink) {
         fs::create_directories(out / "cases");
         test::write_text_file(precious.string(), "keep me");
         fs::create_symlink(precious, out / name);
-        const auto r = run_collide({"validate", suite_file(dir), "--out", out.string()}, dir);
+        const auto r = run_collide_limited({"validate", suite_file(dir), "--out", out.string()}, dir);
         EXPECT_NE(r.exit_code, 0) << name;
         const std::string quoted = std::string("'").append((out / name).string()).append("'");  // GCC 12 warns falsely on "'" + s
         EXPECT_TRUE(contains(r.err, quoted)) << r.err;
@@ -425,7 +424,7 @@ TEST(OutputPaths, OutputIsNotInput) {
         {"run", scene, "--out", scene},
     };
     for (const auto& args : commands) {
-        const auto r = run_collide(args, dir);
+        const auto r = run_collide_limited(args, dir);
         EXPECT_NE(r.exit_code, 0) << args[0] << " " << args[3];
         EXPECT_TRUE(contains(r.err, "it is the input")) << args[0] << ": " << r.err;
     }
@@ -450,7 +449,7 @@ TEST(InputPaths, NonRegularInputsRefused) {
         {"export", fifo, "--out", dir.file("x.xyz")}, {"render", fifo, "--out", dir.file("x.gif")},
         {"report", results}, {"compare", other, results}, {"explain", results, "case"}};
     for (const auto& args : commands) {
-        const auto r = run_collide(args, dir);
+        const auto r = run_collide_limited(args, dir);
         EXPECT_NE(r.exit_code, 0) << args[0];
         EXPECT_NE(r.exit_code, 124) << args[0] << " waited on the FIFO";
         EXPECT_TRUE(contains(r.err, "FIFO")) << args[0] << ": " << r.err;
@@ -484,13 +483,13 @@ TEST(OutputPaths, AFifoPlantedAsACaseLogNeitherHangsNorIgnoresSignals) {
 TEST(OutputPaths, ResumeAndReportRemoveAnInterruptedRunsTemporaries) {
     ScratchDirectory dir;
     const fs::path out = dir.path() / "out";
-    ASSERT_EQ(run_collide({"validate", suite_file(dir), "--out", out.string()}, dir).exit_code, 0);
+    ASSERT_EQ(run_collide_limited({"validate", suite_file(dir), "--out", out.string()}, dir).exit_code, 0);
     const std::string stale = ".summary.json.tmp-" + std::to_string(ended_process()) + "-0";
     for (const char* command : {"validate", "report"}) {
         test::write_text_file((out / stale).string(), "{");
         const auto r = std::string(command) == "validate"
-                           ? run_collide({"validate", suite_file(dir), "--out", out.string(), "--resume"}, dir)
-                           : run_collide({"report", out.string()}, dir);
+                           ? run_collide_limited({"validate", suite_file(dir), "--out", out.string(), "--resume"}, dir)
+                           : run_collide_limited({"report", out.string()}, dir);
         EXPECT_FALSE(fs::exists(out / stale)) << command;
         EXPECT_TRUE(contains(r.out + r.err, stale)) << command << ": " << r.out << r.err;
     }
@@ -510,12 +509,12 @@ TEST(InputPaths, EveryReaderNamesALoopOfLinksAndAPathTooLong) {
         {"validate", a, "--out", dir.file("results")}, {"report", a}, {"export", a, "--out", dir.file("x.xyz")},
         {"explain", a, "case"}};
     for (const auto& args : commands) {
-        const auto r = run_collide(args, dir);
+        const auto r = run_collide_limited(args, dir);
         EXPECT_NE(r.exit_code, 0) << args[0];
         EXPECT_TRUE(test::contains(r.err, "loop of symbolic links")) << args[0] << ": " << r.err;
     }
     for (const char* command : {"run", "view", "validate"}) {
-        const auto r = run_collide({command, too_long}, dir);
+        const auto r = run_collide_limited({command, too_long}, dir);
         EXPECT_TRUE(test::contains(r.err, "too long")) << command << ": " << r.err;
     }
 }

@@ -18,6 +18,7 @@
 #include <thread>
 #include <vector>
 
+#include "tests/support/collide_program.h"
 #include "tests/support/program_runner.h"
 #include "tests/support/scratch_directory.h"
 #include "tests/support/test_scenes.h"
@@ -28,11 +29,8 @@ namespace {
 namespace fs = std::filesystem;
 using test::contains;
 using test::ProgramResult;
+using test::run_collide;
 using test::ScratchDirectory;
-
-ProgramResult run_collide(const std::vector<std::string>& args, const ScratchDirectory& dir) {
-    return test::run_program(COLLIDE_EXECUTABLE, args, dir);
-}
 
 // `collide ARGS` under a file size limit of `kilobytes`, the way a full disk looks to a
 // program (writes fail with EFBIG, "File too large"; SIGXFSZ ignored as a shell may do).

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "tests/support/hdf5_reader.h"
+#include "tests/support/collide_program.h"
 #include "tests/support/program_runner.h"
 #include "tests/support/scratch_directory.h"
 #include "tests/support/test_scenes.h"
@@ -19,13 +20,9 @@ namespace {
 
 using test::Hdf5File;
 using test::contains;
-using test::ProgramResult;
+using test::run_collide;
 using test::run_program;
 using test::ScratchDirectory;
-
-ProgramResult run_collide(const std::vector<std::string>& args, const ScratchDirectory& dir) {
-    return run_program(COLLIDE_EXECUTABLE, args, dir);
-}
 
 const std::string head_on_scene = test::scene_file("head_on_equal.toml");
 

@@ -16,30 +16,19 @@
 #include "validation/judge/checks.h"
 #include "validation/record/exact_limits.h"
 #include "validation/plan/external_solvers.h"
+#include "tests/support/recorded_case.h"
+#include "tests/support/suite_text.h"
 #include "validation/plan/suite.h"
 
 namespace collide::validation {
 namespace {
 
-const std::string scene_entry = "\n[[scene]]\nname = \"head_on_equal\"\n";
-
-Suite parse(const std::string& text) {
-    return parse_suite(text + scene_entry, "s.toml", std::string(COLLIDE_SOURCE_DIR) + "/validation/suites");
-}
-
-std::string refusal(const std::string& text) {
-    try {
-        parse(text);
-    } catch (const SuiteError& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << "accepted: " << text;
-    return "";
-}
+using test::parse_suite_text;
+using test::suite_refusal;
 
 TEST(DeclaredClaims, SuiteKeysDeclareExactAndPrecision) {
-    const Suite s = parse("[solver.mine]\ncommand = \"x\"\nexact = true\nprecision = \"float\"\n"
-                          "[solver.other]\ncommand = \"y\"\n");
+    const Suite s = parse_suite_text("[solver.mine]\ncommand = \"x\"\nexact = true\nprecision = \"float\"\n"
+                                     "[solver.other]\ncommand = \"y\"\n");
     const auto backends = backends_with_solvers(s, {}, {"python3", "runner.py"});
     ASSERT_EQ(backends.size(), 2u);
     EXPECT_TRUE(backends[0].exact);
@@ -52,12 +41,12 @@ TEST(DeclaredClaims, SuiteKeysDeclareExactAndPrecision) {
 }
 
 TEST(DeclaredClaims, AContradictionIsRefusedWithFileAndLine) {
-    const std::string both = refusal("[solver.mine]\ncommand = \"x\"\nrule = \"collide-first\"\nexact = true\n");
+    const std::string both = suite_refusal("[solver.mine]\ncommand = \"x\"\nrule = \"collide-first\"\nexact = true\n");
     EXPECT_NE(both.find("s.toml:4: solver.mine.exact: exact together with rule \"collide-first\""), std::string::npos)
         << both;
-    EXPECT_NE(refusal("[solver.mine]\ncommand = \"x\"\nprecision = \"half\"\n").find("s.toml:3: solver.mine.precision"),
+    EXPECT_NE(suite_refusal("[solver.mine]\ncommand = \"x\"\nprecision = \"half\"\n").find("s.toml:3: solver.mine.precision"),
               std::string::npos);
-    EXPECT_NE(refusal("[solver.mine]\ncommand = \"x\"\nexact = \"yes\"\n").find("s.toml:3: solver.mine.exact: expected true"),
+    EXPECT_NE(suite_refusal("[solver.mine]\ncommand = \"x\"\nexact = \"yes\"\n").find("s.toml:3: solver.mine.exact: expected true"),
               std::string::npos);
 }
 
@@ -75,7 +64,7 @@ protected:
     void TearDown() override { std::filesystem::remove_all(dir_); }
 
     std::vector<BackendInfo> join(const std::string& table) const {
-        Suite s = parse(table);
+        Suite s = parse_suite_text(table);
         for (auto& spec : s.solvers) spec.directory = dir_.string();
         return backends_with_solvers(s, {}, {COLLIDE_PYTHON, std::string(COLLIDE_SOURCE_DIR) + "/python/collide/solver_runner.py"});
     }
@@ -111,21 +100,8 @@ TEST_F(ClassDeclarations, AttributesThatContradictTheSuiteAreRefused) {
 // Runs `backend` on `given` (the scene it is given) and records the case as the suite
 // would, for a case of the scene `declared`.
 CaseResult run_case(const BackendInfo& backend, const Scene& declared, const Scene& given) {
-    const ParticleState<double> initial = generate_initial_state(declared);
-    auto solver = backend.create(BackendOptions{});
-    CaseResult r;
-    RunOptions options;
-    options.on_state = [&](const ParticleState<double>&, const Metrics& m) { r.series.push_back(m); };
-    const RunResult run = run_scene(given, *solver, initial, options);
-    r.spec.id = backend.name;
-    r.spec.backend = backend.name;
-    r.disks = initial.size();
-    r.duration = declared.run.duration;
-    r.dt = declared.run.dt;
-    r.contacts = run.stats.contacts;
-    for (double w : initial.inv_mass) r.total_mass += 1 / w;
-    r.initial.radius = initial.radius;
-    return r;
+    const auto solver = backend.create(BackendOptions{});
+    return test::recorded_case(*solver, declared, given, backend.name, backend.name);
 }
 
 // The checks of `r` judged as a case of `claims`, with the limits the runner derives.

@@ -6,30 +6,18 @@
 
 #include "validation/plan/external_solvers.h"
 #include "validation/models/statistics_bias_model.h"
+#include "tests/support/suite_text.h"
 #include "validation/plan/suite.h"
 
 namespace collide::validation {
 namespace {
 
-const std::string scene = "\n[[scene]]\nname = \"head_on_equal\"\n";
-
-Suite parse(const std::string& text) {
-    return parse_suite(text + scene, "s.toml", std::string(COLLIDE_SOURCE_DIR) + "/validation/suites");
-}
-
-std::string refusal(const std::string& text) {
-    try {
-        parse(text);
-    } catch (const SuiteError& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << "accepted: " << text;
-    return "";
-}
+using test::parse_suite_text;
+using test::suite_refusal;
 
 TEST(SolverTables, ReadCommandPythonAndRule) {
-    const Suite s = parse("backends = [\"event\"]\n[solver.mine]\ncommand = \"./a.out\"\n"
-                          "[solver.py]\npython = \"m.py:C\"\nrule = \"collide-first\"\n");
+    const Suite s = parse_suite_text("backends = [\"event\"]\n[solver.mine]\ncommand = \"./a.out\"\n"
+                                     "[solver.py]\npython = \"m.py:C\"\nrule = \"collide-first\"\n");
     ASSERT_EQ(s.solvers.size(), 2u);
     EXPECT_EQ(s.solvers[0].name, "mine");
     EXPECT_EQ(s.solvers[0].command, "./a.out");
@@ -41,30 +29,30 @@ TEST(SolverTables, ReadCommandPythonAndRule) {
 }
 
 TEST(SolverTables, RefuseEachMistakeWithItsPlace) {
-    EXPECT_NE(refusal("[solver.Mine]\ncommand = \"x\"\n").find("s.toml:1: solver.Mine: expected a solver name"),
+    EXPECT_NE(suite_refusal("[solver.Mine]\ncommand = \"x\"\n").find("s.toml:1: solver.Mine: expected a solver name"),
               std::string::npos);
-    EXPECT_NE(refusal("[solver.mine]\n").find("either command"), std::string::npos);
-    EXPECT_NE(refusal("[solver.mine]\ncommand = \"x\"\npython = \"m:C\"\n").find("not both"), std::string::npos);
-    EXPECT_NE(refusal("[solver.mine]\ncommand = \"x\"\nargs = 1\n").find("solver.mine.args: expected no such key"),
+    EXPECT_NE(suite_refusal("[solver.mine]\n").find("either command"), std::string::npos);
+    EXPECT_NE(suite_refusal("[solver.mine]\ncommand = \"x\"\npython = \"m:C\"\n").find("not both"), std::string::npos);
+    EXPECT_NE(suite_refusal("[solver.mine]\ncommand = \"x\"\nargs = 1\n").find("solver.mine.args: expected no such key"),
               std::string::npos);
-    EXPECT_NE(refusal("[solver.mine]\npython = \"module\"\n").find("\"module:Class\""), std::string::npos);
-    EXPECT_NE(refusal("[solver.mine]\ncommand = \"x\"\nrule = \"rk4\"\n").find("solver.mine.rule"), std::string::npos);
-    EXPECT_NE(refusal("[solver.mine]\ncommand = 3\n").find("a non-empty string"), std::string::npos);
+    EXPECT_NE(suite_refusal("[solver.mine]\npython = \"module\"\n").find("\"module:Class\""), std::string::npos);
+    EXPECT_NE(suite_refusal("[solver.mine]\ncommand = \"x\"\nrule = \"rk4\"\n").find("solver.mine.rule"), std::string::npos);
+    EXPECT_NE(suite_refusal("[solver.mine]\ncommand = 3\n").find("a non-empty string"), std::string::npos);
 }
 
 TEST(SolverTables, ANameTakenTwiceOrByABackendIsRefused) {
-    Suite s = parse("[solver.mine]\ncommand = \"x\"\n");
+    Suite s = parse_suite_text("[solver.mine]\ncommand = \"x\"\n");
     external::ExternalSolverSpec again = s.solvers.at(0);  // the same name once more
     again.origin = std::string("--solver mine=y");
     EXPECT_THROW(add_solvers(s, {again}), SuiteError);
-    Suite t = parse("[solver.step]\ncommand = \"x\"\n");
+    Suite t = parse_suite_text("[solver.step]\ncommand = \"x\"\n");
     BackendInfo step;
     step.name = std::string("step");
     EXPECT_THROW(backends_with_solvers(t, {step}, {}), SuiteError);
 }
 
 TEST(SolverTables, ARuleMakesTheSolverAStepperForTheChecks) {
-    const Suite s = parse("[solver.mine]\ncommand = \"x\"\nrule = \"collide-first\"\n[solver.other]\ncommand = \"y\"\n");
+    const Suite s = parse_suite_text("[solver.mine]\ncommand = \"x\"\nrule = \"collide-first\"\n[solver.other]\ncommand = \"y\"\n");
     const auto backends = backends_with_solvers(s, {}, {"python3", "runner.py"});
     ASSERT_EQ(backends.size(), 2u);
     EXPECT_TRUE(backends[0].stepping_rule());
@@ -85,7 +73,7 @@ std::string tmpdir_refusal(const char* tmpdir) {
     tmpdir ? ::setenv("TMPDIR", tmpdir, 1) : ::unsetenv("TMPDIR");
     std::string why;
     try {
-        backends_with_solvers(parse("[solver.mine]\ncommand = \"x\"\n"), {}, {});
+        backends_with_solvers(parse_suite_text("[solver.mine]\ncommand = \"x\"\n"), {}, {});
     } catch (const SuiteError& e) {
         why = e.what();
     }

@@ -11,6 +11,7 @@
 #include "core/run_driver.h"
 #include "core/scene/scene_loader.h"
 #include "reference/step_solver.h"
+#include "tests/support/recorded_case.h"
 #include "validation/judge/applicability.h"
 #include "validation/judge/checks.h"
 #include "validation/record/tolerances.h"
@@ -31,22 +32,9 @@ Scene gas_scene(double duration = 10.0) {
 
 // Runs `step` on `solver_scene` and judges the run as a case of `declared`.
 CheckResult energy_check_of(const Scene& declared, const Scene& solver_scene) {
-    const ParticleState<double> initial = generate_initial_state(declared);
     StepSolver solver;
-    CaseResult r;
-    RunOptions options;
-    options.on_state = [&](const ParticleState<double>&, const Metrics& m) {
-        r.series.push_back(m);
-    };
-    const RunResult run = run_scene(solver_scene, solver, initial, options);
-    r.spec.id = "energy_gate";
-    r.spec.backend = "step";
-    r.disks = initial.size();
-    r.duration = declared.run.duration;
-    r.dt = declared.run.dt;
-    r.contacts = run.stats.contacts;
-    for (double w : initial.inv_mass) r.total_mass += 1 / w;
-    r.initial.radius = initial.radius;
+    const CaseResult r = test::recorded_case(solver, declared, solver_scene, "energy_gate", "step");
+    const ParticleState<double> initial = generate_initial_state(declared);
     for (const auto& c : case_checks(r, scene_features(declared, initial), default_tolerances(find_backend("step")),
                                       find_backend("step")))
         if (c.check == "energy_drift") {

@@ -1,13 +1,12 @@
 #include "validation/plan/class_declarations.h"
 
-#include <stdlib.h>
-
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "core/text/printable.h"
 #include "core/io/shell_quote.h"
+#include "core/io/temporary_directory.h"
 #include "external/program_call.h"
 
 namespace collide::validation {
@@ -18,24 +17,13 @@ namespace {
 constexpr double load_time_limit = 60;
 
 // A directory of its own for the runner's answer, removed with it.
-class ScratchDirectory {
-public:
-    ScratchDirectory() {
-        std::string pattern = (fs::temp_directory_path() / "collide-declarations-XXXXXX").string();
-        if (!::mkdtemp(pattern.data())) throw SuiteError("cannot create a directory in " + fs::temp_directory_path().string());
-        path_ = pattern;
+TemporaryDirectory answer_directory() {
+    try {
+        return TemporaryDirectory(fs::temp_directory_path(), "collide-declarations", "a directory");
+    } catch (const std::runtime_error& e) {
+        throw SuiteError(e.what());
     }
-    ~ScratchDirectory() {
-        std::error_code ignored;
-        fs::remove_all(path_, ignored);
-    }
-    ScratchDirectory(const ScratchDirectory&) = delete;
-    ScratchDirectory& operator=(const ScratchDirectory&) = delete;
-    std::string file(const std::string& name) const { return (path_ / name).string(); }
-
-private:
-    fs::path path_;
-};
+}
 
 std::string file_text(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
@@ -58,7 +46,7 @@ void merge(std::string& declared, const std::string& by_class, const std::string
 void add_class_declarations(external::ExternalSolverSpec& spec, const PythonRunner& python) {
     if (spec.python_class.empty()) return;
     const std::string where = spec.origin + ": class " + spec.python_class;
-    ScratchDirectory dir;
+    const TemporaryDirectory dir = answer_directory();
     const std::string command =
         shell_quote(python.python) + " " + shell_quote(python.runner) + " --declarations " + shell_quote(spec.python_class);
     const external::ProgramOutcome outcome = external::call_program(
