@@ -8,7 +8,7 @@
 
 #include "core/run_driver.h"
 #include "core/scene/scene_loader.h"
-#include "validation/run/case_result.h"
+#include "validation/record/case_result.h"
 
 namespace collide::test {
 
