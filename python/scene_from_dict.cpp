@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <limits>
 #include <sstream>
 #include <vector>
 
@@ -112,14 +113,16 @@ private:
 };
 
 // Integers must fit TOML's signed 64 bits; a bigger one is refused, never wrapped or rounded.
+// -2^63 is refused too: toml++'s writer negates an integer to print it, and -(-2^63) has no
+// 64-bit form (undefined behaviour, found by UBSan), so the range is symmetric.
 std::unique_ptr<toml::node> Converter::integer(PyObject* value, const std::string& where) {
     int overflow = 0;
     const long long v = PyLong_AsLongLongAndOverflow(value, &overflow);
     if (v == -1 && PyErr_Occurred()) fail_from_python(where, "reading a " + type_name(value));
-    if (overflow != 0) {
+    if (overflow != 0 || v == std::numeric_limits<long long>::min()) {
         const std::size_t bits = _PyLong_NumBits(value);  // str() of a huge int may itself be refused
         const std::string text = bits <= 256 ? "integer " + safe_str(value) : "an integer of " + std::to_string(bits) + " bits";
-        fail(PyExc_ValueError, where, text + " does not fit in 64 bits: expected an integer in [-2^63, 2^63 - 1] "
+        fail(PyExc_ValueError, where, text + " does not fit in 64 bits: expected an integer in [-(2^63 - 1), 2^63 - 1] "
                                              "(TOML's integers)");
     }
     return std::make_unique<toml::value<std::int64_t>>(v);
