@@ -95,11 +95,16 @@ void print_summary(const Scene& scene, const std::string& backend, const RunResu
     if (scene.has_gravity())
         std::printf("          total   %.15g -> %.15g (relative change %.3e)\n", a.total_energy(),
                     b.total_energy(), relative_change(a.total_energy(), b.total_energy()));
-    const double p0 = std::hypot(a.momentum_x, a.momentum_y);
+    // The change relative to sqrt(2 M K), the momentum the moving mass would have at the rms
+    // speed: a periodic Maxwell draw starts at P = 0 to rounding, which is no scale.
+    double mass = 0;
+    for (std::size_t i = 0; i < r.final_state.size(); ++i)
+        if (!r.final_state.is_stone(i)) mass += r.final_state.mass[i];
+    const double scale = std::sqrt(2 * mass * a.kinetic_energy);
     const double dp = std::hypot(b.momentum_x - a.momentum_x, b.momentum_y - a.momentum_y);
     std::printf("momentum  (%.15g, %.15g) -> (%.15g, %.15g), |change| %.3e%s\n", a.momentum_x,
-                a.momentum_y, b.momentum_x, b.momentum_y, p0 > 0 ? dp / p0 : dp,
-                p0 > 0 ? " relative" : " absolute");
+                a.momentum_y, b.momentum_x, b.momentum_y, scale > 0 ? dp / scale : dp,
+                scale > 0 ? " of sqrt(2 M K)" : " absolute");
     std::printf("overlap   final: %lld pairs, max depth %.3e, mean depth %.3e (relative to r_i+r_j)\n",
                 static_cast<long long>(b.overlapping_pairs), b.max_overlap, b.mean_overlap);
     std::printf("walls     final max penetration %.3e (relative to radius)\n", b.max_wall_penetration);

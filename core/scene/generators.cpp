@@ -19,6 +19,7 @@
 #include "core/scene/disk_placement.h"
 #include "core/scene/memory_estimate.h"
 #include "core/scene/scene_loader.h"
+#include "core/thermo/kinetic_temperature.h"
 
 namespace collide {
 namespace {
@@ -66,7 +67,7 @@ std::vector<double> draw_radii(const ParticleGenerator& g, gsl_rng* rng) {
 // Velocities. Maxwell-Boltzmann at temperature kT: in equilibrium each Cartesian component
 // is Gaussian with variance kT/m (equipartition, 1/2 m <v_x^2> = 1/2 kT). Fixed speed: an
 // angle uniform in [0, 2 pi).
-void draw_velocities(const ParticleGenerator& g, gsl_rng* rng, std::vector<Disk>& disks) {
+void draw_raw_velocities(const ParticleGenerator& g, gsl_rng* rng, std::vector<Disk>& disks) {
     for (Disk& d : disks) {
         if (g.velocity_kind == "maxwell") {
             const double sigma = std::sqrt(g.temperature / d.mass);
@@ -78,6 +79,39 @@ void draw_velocities(const ParticleGenerator& g, gsl_rng* rng, std::vector<Disk>
             d.vy = g.speed * std::sin(angle);
         }
     }
+}
+
+// The centre of mass of a periodic box moves freely and for ever: a Maxwell draw leaves it a
+// velocity of order sqrt(kT / M), whose kinetic energy (about kT) no collision can share out,
+// and which an estimator that reads kT from the whole kinetic energy would count as heat.
+// Subtracting the mass-weighted mean velocity V = sum m v / sum m leaves the block no momentum.
+void remove_drift(std::vector<Disk>& disks) {
+    double px = 0, py = 0, m = 0;
+    for (const Disk& d : disks) px += d.mass * d.vx, py += d.mass * d.vy, m += d.mass;
+    for (Disk& d : disks) d.vx -= px / m, d.vy -= py / m;
+}
+
+// Scales every velocity by one factor so that the block's kinetic temperature is exactly kT:
+// K / (N - 1) with the drift removed (N - 1 disks' worth of degrees of freedom in 2-D,
+// core/thermo/kinetic_temperature.h), K / N otherwise.
+void rescale_to_temperature(std::vector<Disk>& disks, double kT, bool drift_removed) {
+    double k = 0;
+    for (const Disk& d : disks) k += 0.5 * d.mass * (d.vx * d.vx + d.vy * d.vy);
+    const double degrees = double(disks.size()) - (drift_removed ? 1 : 0);
+    if (!(k > 0) || degrees <= 0) return;
+    const double factor = std::sqrt(degrees * kT / k);
+    for (Disk& d : disks) d.vx *= factor, d.vy *= factor;
+}
+
+// The velocities of a block: the raw draw, then, for a Maxwell block, the drift removed (by
+// default where momentum is conserved: a periodic box without gravity) and the temperature made
+// exact where the scene asks (docs/scenes.md, `velocity`).
+void draw_velocities(const Scene& scene, const ParticleGenerator& g, gsl_rng* rng, std::vector<Disk>& disks) {
+    draw_raw_velocities(g, rng, disks);
+    if (g.velocity_kind != "maxwell" || disks.empty() || g.stone) return;
+    const bool remove = g.drift.empty() ? momentum_conserved(scene) : g.drift == "removed";
+    if (remove) remove_drift(disks);
+    if (g.exact_temperature) rescale_to_temperature(disks, g.temperature, remove);
 }
 
 double mass_of(const Scene& scene, const ParticleGenerator& g, std::size_t index, double radius) {
@@ -180,7 +214,7 @@ std::vector<Disk> place_gas(const Scene& scene, const ParticleGenerator& g, std:
             break;
         }
     }
-    draw_velocities(g, rng, disks);
+    draw_velocities(scene, g, rng, disks);
     return disks;
 }
 
@@ -217,7 +251,7 @@ std::vector<Disk> place_lattice(const Scene& scene, const ParticleGenerator& g, 
         placed.insert(x, y, g.radius);
         disks.push_back({x, y, 0, 0, g.radius, mass_of(scene, g, index, g.radius)});
     }
-    draw_velocities(g, rng, disks);
+    draw_velocities(scene, g, rng, disks);
     return disks;
 }
 

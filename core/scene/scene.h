@@ -72,6 +72,12 @@ struct ParticleGenerator {
     // velocity: "maxwell" (temperature kT), "fixed_speed" (speed, random direction), "zero"
     std::string velocity_kind = "zero";
     double temperature = 0, speed = 0;
+    // Maxwell only (docs/scenes.md): `drift` "removed" subtracts the block's mass-weighted mean
+    // velocity, "raw" keeps the draw; "" chooses by the box: removed where momentum is conserved
+    // (periodic, no gravity), raw with walls. `exact_temperature` rescales the draw so that the
+    // block's kinetic temperature is exactly kT.
+    std::string drift;
+    bool exact_temperature = false;
 
     // lattice: "hexagonal" or "square", spacing between neighbouring centres
     std::string lattice = "square";

@@ -122,7 +122,8 @@ void read_mass(const TomlFields& block, ParticleGenerator& g) {
     }
 }
 
-// velocity = "zero" | { maxwell = kT } | { speed = v }; default "zero".
+// velocity = "zero" | { maxwell = kT [, drift = "removed" | "raw"] [, exact = bool] } | { speed = v };
+// default "zero".
 void read_velocity(const TomlFields& block, ParticleGenerator& g) {
     const toml::node* n = block.node("velocity");
     const char* expected = "\"zero\", { maxwell = kT } or { speed = v }";
@@ -134,10 +135,12 @@ void read_velocity(const TomlFields& block, ParticleGenerator& g) {
     if (!n->is_table()) block.fail("velocity", expected);
     const TomlFields v = block.table("velocity");
     if (v.has("maxwell")) {
-        v.allow_only({"maxwell"});
+        v.allow_only({"maxwell", "drift", "exact"});
         g.velocity_kind = "maxwell";
         g.temperature = v.number("maxwell");
         v.require(g.temperature >= 0, "maxwell", "a temperature kT >= 0 (energy units)");
+        if (v.has("drift")) g.drift = v.choice("drift", {"removed", "raw"}, "raw");
+        g.exact_temperature = v.boolean("exact", false);
     } else if (v.has("speed")) {
         v.allow_only({"speed"});
         g.velocity_kind = "fixed_speed";

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -10,6 +11,7 @@
 #include "core/metrics.h"
 #include "core/scene/scene_loader.h"
 #include "core/numerics/state_hash.h"
+#include "core/thermo/kinetic_temperature.h"
 #include "tests/support/test_scenes.h"
 
 namespace collide {
@@ -87,6 +89,50 @@ TEST(GasGenerator, MaxwellGasHasItsTemperatureWithinTheStandardError) {
     // Mean velocity component: 0 with standard error sqrt(kT/m) / sqrt(N).
     EXPECT_NEAR(px / double(n), 0.0, 4 * std::sqrt(kT / m / double(n)));
     EXPECT_NEAR(py / double(n), 0.0, 4 * std::sqrt(kT / m / double(n)));
+}
+
+// A Maxwell draw in a periodic box leaves the centre of mass at rest (docs/scenes.md,
+// `velocity`): the total momentum is 0 to rounding, against a raw draw's sqrt(N m kT) ~ 20.
+// Walls keep the raw draw; `drift = "raw"` keeps it in a periodic box too.
+std::array<double, 2> total_momentum(const ParticleState<double>& s) {
+    double px = 0, py = 0;
+    for (std::size_t i = 0; i < s.size(); ++i) px += s.mass[i] * s.vx[i], py += s.mass[i] * s.vy[i];
+    return {px, py};
+}
+
+ParticleGenerator maxwell_block(double kT) {
+    ParticleGenerator g = gas_block(400, 0.5, 2.0);
+    g.velocity_kind = "maxwell";
+    g.temperature = kT;
+    return g;
+}
+
+TEST(GasGenerator, PeriodicMaxwellDrawHasNoTotalMomentumAndWallsKeepTheRawDraw) {
+    const auto periodic = generate_initial_state(scene_with(60, 60, {maxwell_block(1.5)}, Boundary::periodic));
+    const auto [px, py] = total_momentum(periodic);
+    EXPECT_NEAR(px, 0.0, 1e-12);
+    EXPECT_NEAR(py, 0.0, 1e-12);
+
+    ParticleGenerator raw = maxwell_block(1.5);
+    raw.drift = "raw";
+    const auto kept = total_momentum(generate_initial_state(scene_with(60, 60, {raw}, Boundary::periodic)));
+    const auto walls = total_momentum(generate_initial_state(scene_with(60, 60, {maxwell_block(1.5)})));
+    EXPECT_GT(std::hypot(kept[0], kept[1]), 1e-3) << "the raw draw has a momentum of order sqrt(N m kT)";
+    EXPECT_EQ(kept, walls) << "the same draw, left as drawn";
+}
+
+// `exact = true`: the kinetic temperature of the block (core/thermo/kinetic_temperature.h) is kT
+// to rounding: K / (N - 1) with the drift removed, K / N with walls.
+TEST(GasGenerator, ExactTemperatureRescalesToKTOnTheDegreesOfFreedomOfTheBox) {
+    ParticleGenerator g = maxwell_block(1.5);
+    g.exact_temperature = true;
+    for (Boundary boundary : {Boundary::periodic, Boundary::reflect}) {
+        const Scene scene = scene_with(60, 60, {g}, boundary);
+        const KineticTemperature t = kinetic_temperature(scene, generate_initial_state(scene));
+        EXPECT_NEAR(t.kT(), 1.5, 1e-12);
+        EXPECT_EQ(t.degrees_of_freedom, boundary == Boundary::periodic ? 399 : 400);
+        EXPECT_NEAR(t.internal_kinetic_energy, t.kinetic_energy, 1e-9) << "no drift left to remove";
+    }
 }
 
 TEST(GasGenerator, FixedSpeedHasThatSpeedInRandomDirections) {

@@ -294,7 +294,7 @@ TEST(SceneLibrary, GoldenInitialStateHashes) {
     const std::vector<std::pair<std::string, std::uint64_t>> golden = {
         {"head_on_equal.toml", 0xf2b5291f8387f431ull},
         {"box_gas_1000.toml", 0x376445aadd77381cull},
-        {"bidisperse_gas.toml", 0x6ac18eacc0ef90baull},
+        {"bidisperse_gas.toml", 0x3b6830a19dbcf15eull},
         {"hexagonal_crystal.toml", 0x52c546f0b7f9b4full},
         {"stones_and_gas.toml", 0xd9b7307c836ea85cull},
     };

@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <sstream>
 
+#include "core/thermo/pressure_estimator.h"
+#include "core/thermo/velocity_sphere.h"
 #include "validation/judge/checks.h"
 #include "core/scene/scene_loader.h"
 #include "validation/judge/statistics.h"
@@ -45,15 +47,17 @@ double counter(const CaseResult& r, const char* name) {
 
 }  // namespace
 
-// The kinetic energy at the first output time: the conserved energy of an e = 1 gas.
-double initial_kinetic_energy(const CaseResult& r) {
-    return r.series.empty() ? std::nan("") : r.series.front().kinetic_energy;
+KineticTemperature case_temperature(const CaseResult& r, std::size_t moving_disks, bool conserved) {
+    if (r.series.empty()) return {};
+    const Metrics& first = r.series.front();
+    return kinetic_temperature(first.kinetic_energy, first.momentum_x, first.momentum_y, r.total_mass, moving_disks,
+                               conserved);
 }
 
-double virial_compressibility(const CaseResult& r) {
+double virial_compressibility(const CaseResult& r, const KineticTemperature& t) {
     const double dt = r.duration - counter(r, "time_at_half");
     const double dv = counter(r, "virial_sum") - counter(r, "virial_sum_at_half");
-    return 1 + dv / (2 * dt * initial_kinetic_energy(r));
+    return compressibility_factor(dv / (2 * dt), t);
 }
 
 double second_half_collision_rate(const CaseResult& r) {
@@ -61,19 +65,39 @@ double second_half_collision_rate(const CaseResult& r) {
     return 2 * (double(r.contacts) - counter(r, "contacts_at_half")) / (double(r.disks) * dt);
 }
 
-double haff_cooling_time(const CaseResult& r, double t_max) {
+double haff_cooling_time(const CaseResult& r, double t_max, std::size_t moving_disks, bool conserved) {
     std::vector<double> t, y;
-    for (const Metrics& row : r.series)
-        if (row.time <= t_max && row.kinetic_energy > 0) {
+    for (const Metrics& row : r.series) {
+        const double k = kinetic_temperature(row.kinetic_energy, row.momentum_x, row.momentum_y, r.total_mass,
+                                             moving_disks, conserved).internal_kinetic_energy;
+        if (row.time <= t_max && k > 0) {
             t.push_back(row.time);
-            y.push_back(1 / std::sqrt(row.kinetic_energy));  // T^(-1/2) up to a constant
+            y.push_back(1 / std::sqrt(k));  // T^(-1/2) up to a constant
         }
+    }
     if (t.size() < 3) return std::nan("");
     const auto mt = mean_and_error(t).mean, my = mean_and_error(y).mean;
     double sty = 0, stt = 0;
     for (std::size_t i = 0; i < t.size(); ++i) sty += (t[i] - mt) * (y[i] - my), stt += (t[i] - mt) * (t[i] - mt);
     const double slope = sty / stt, intercept = my - slope * mt;
     return intercept / slope;
+}
+
+std::vector<double> scaled_speeds(const Snapshot& s, double mass, bool conserved) {
+    double k = 0, px = 0, py = 0;
+    for (std::size_t i = 0; i < s.vx.size(); ++i) {
+        k += 0.5 * mass * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i]);
+        px += mass * s.vx[i], py += mass * s.vy[i];
+    }
+    const double total_mass = mass * double(s.vx.size());
+    const KineticTemperature t = kinetic_temperature(k, px, py, total_mass, s.vx.size(), conserved);
+    // The centre of mass's velocity where it is a constant of the motion (else the frame stays).
+    const bool rest_frame = t.degrees_of_freedom < double(t.moving_disks);
+    const double ux = rest_frame ? px / total_mass : 0, uy = rest_frame ? py / total_mass : 0;
+    const double scale = std::sqrt(t.kT() / mass);
+    std::vector<double> u;
+    for (std::size_t i = 0; i < s.vx.size(); ++i) u.push_back(std::hypot(s.vx[i] - ux, s.vy[i] - uy) / scale);
+    return u;
 }
 
 ChiSquare maxwell_boltzmann_chi_square(const std::vector<double>& u, int bins) {
@@ -123,6 +147,7 @@ std::vector<Group> physics_groups(const Suite& suite, const std::vector<CaseResu
 struct SceneFacts {
     double area = 0, eta = 0, density = 0, sigma = 0, mass = 1, mass_ratio = 1, restitution = 1;
     std::size_t mobile = 0;
+    bool momentum_conserved = false;  // a periodic box without gravity (kinetic_temperature.h)
 };
 
 SceneFacts facts_of(const Scene& scene) {
@@ -130,6 +155,7 @@ SceneFacts facts_of(const Scene& scene) {
     SceneFacts f;
     f.area = scene.world.width() * scene.world.height();
     f.restitution = scene.physics.restitution;
+    f.momentum_conserved = momentum_conserved(scene);
     double covered = 0, mmin = INFINITY, mmax = 0;
     for (std::size_t i = 0; i < s.size(); ++i) {
         covered += M_PI * s.radius[i] * s.radius[i];
@@ -192,6 +218,13 @@ void judge_ratio(PhysicsRow& row, const std::vector<double>& measured, const std
     row.reference_uncertainty = u * row.reference;
 }
 
+// Enskog's collision rate at the case's kinetic temperature, times the finite-N factor of the
+// velocity sphere (core/thermo/velocity_sphere.h): what N disks with that K_int collide at.
+double predicted_collision_rate(const SceneFacts& f, double g_contact, const KineticTemperature& t) {
+    return enskog_collision_rate(f.density, f.sigma, g_contact, t.kT() / f.mass) *
+           collision_rate_finite_n_factor(t.degrees_of_freedom);
+}
+
 // --- The rows ------------------------------------------------------------------------------
 
 PhysicsRow equation_of_state_row(const Group& g, const SceneFacts& f, const PublishedReference& eos,
@@ -203,7 +236,8 @@ PhysicsRow equation_of_state_row(const Group& g, const SceneFacts& f, const Publ
     row.second_reference = compressibility_factor(second, f.eta), row.second_reference_name = second.name;
     std::vector<double> z;
     for (const CaseResult* r : g.cases)
-        z.push_back(g.exact() ? virial_compressibility(*r) : mean_and_error(r->compressibility).mean);
+        z.push_back(g.exact() ? virial_compressibility(*r, case_temperature(*r, f.mobile, f.momentum_conserved))
+                              : mean_and_error(r->compressibility).mean);
     row.estimator = g.exact() ? "collision virial" : "contact shell (pairs within sigma (1 + 0.05))";
     judge_z(row, z, g.exact());
     row.resolved = std::abs(row.reference - row.second_reference) > 1.96 * row.standard_error;
@@ -219,28 +253,26 @@ PhysicsRow collision_rate_row(const Group& g, const SceneFacts& f, const Publish
     const double g_contact = contact_value(compressibility_factor(eos, f.eta), f.eta);
     std::vector<double> nu, nu_enskog;
     for (const CaseResult* r : g.cases) {
-        const double kt_over_m = initial_kinetic_energy(*r) / (double(f.mobile) * f.mass);  // K = N kT (2-D)
         nu.push_back(second_half_collision_rate(*r));
-        nu_enskog.push_back(enskog_collision_rate(f.density, f.sigma, g_contact, kt_over_m));
+        nu_enskog.push_back(predicted_collision_rate(f, g_contact, case_temperature(*r, f.mobile, f.momentum_conserved)));
     }
     const double u = enskog.numbers.count("relative_uncertainty") ? enskog.number("relative_uncertainty") : 0;
     judge_ratio(row, nu, nu_enskog, u, true);
     std::ostringstream d;
-    d << "g(sigma) = " << g_contact << " from " << eos.name << "; kT from each replicate's conserved energy";
+    d << "g(sigma) = " << g_contact << " from " << eos.name
+      << "; kT from each replicate's conserved energy (K_int / (N - 1) periodic), times the finite-N factor "
+         "Gamma(f) sqrt(f) / Gamma(f + 1/2) of the velocity sphere";
     row.detail = d.str();
     return row;
 }
 
-PhysicsRow speed_distribution_row(const Group& g, const PublishedReference& mb) {
+PhysicsRow speed_distribution_row(const Group& g, const SceneFacts& f, const PublishedReference& mb) {
     PhysicsRow row = row_for(g, "speed_distribution", mb);
-    row.estimator = "Pearson chi-square, equiprobable bins, kT from each replicate's energy";
+    row.estimator = "Pearson chi-square, equiprobable bins, speeds in the centre-of-mass frame, kT from each replicate's energy";
     std::vector<double> u;
     for (const CaseResult* r : g.cases) {
-        const Snapshot& s = r->final_state;
-        double v2 = 0;
-        for (std::size_t i = 0; i < s.vx.size(); ++i) v2 += s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i];
-        const double scale = std::sqrt(v2 / (2 * double(s.vx.size())));  // sqrt(kT/m): <v^2> = 2 kT/m in 2-D
-        for (std::size_t i = 0; i < s.vx.size(); ++i) u.push_back(std::hypot(s.vx[i], s.vy[i]) / scale);
+        const std::vector<double> speeds = scaled_speeds(r->final_state, f.mass, f.momentum_conserved);
+        u.insert(u.end(), speeds.begin(), speeds.end());
     }
     const ChiSquare c = maxwell_boltzmann_chi_square(u, int(mb.number("bins")));
     row.value = c.chi2, row.reference = c.dof;
@@ -281,10 +313,9 @@ PhysicsRow haff_row(const Group& g, const SceneFacts& f, const PublishedReferenc
     const double g_contact = contact_value(compressibility_factor(eos, f.eta), f.eta);
     std::vector<double> tau, tau_haff;
     for (const CaseResult* r : g.cases) {
-        const double t0 = initial_kinetic_energy(*r) / (double(f.mobile) * f.mass);  // kT0 / m
-        const double nu0 = enskog_collision_rate(f.density, f.sigma, g_contact, t0);  // t0 = kT0 / m
+        const double nu0 = predicted_collision_rate(f, g_contact, case_temperature(*r, f.mobile, f.momentum_conserved));
         tau_haff.push_back(4 / ((1 - f.restitution * f.restitution) * nu0));  // 1/tau = (1 - e^2) nu0 / 4 (2-D)
-        tau.push_back(haff_cooling_time(*r, tau_haff.back()));
+        tau.push_back(haff_cooling_time(*r, tau_haff.back(), f.mobile, f.momentum_conserved));
     }
     judge_ratio(row, tau, tau_haff, haff.number("model_uncertainty"), g.exact());
     std::ostringstream d;
@@ -351,7 +382,7 @@ PhysicsComparison compare_with_physics(const Suite& suite, const std::vector<Cas
         for (const std::string& kind : suite.scenes[g.scene_index].physics) {
             if (kind == "equation_of_state") out.rows.push_back(equation_of_state_row(g, f, eos, ref("henderson_1975")));
             else if (kind == "collision_rate" && g.exact()) out.rows.push_back(collision_rate_row(g, f, ref("enskog_collision_rate"), eos));
-            else if (kind == "speed_distribution") out.rows.push_back(speed_distribution_row(g, ref("maxwell_boltzmann")));
+            else if (kind == "speed_distribution") out.rows.push_back(speed_distribution_row(g, f, ref("maxwell_boltzmann")));
             else if (kind == "galperin") out.rows.push_back(galperin_row(g, f, ref("galperin_2003")));
             else if (kind == "haff") out.rows.push_back(haff_row(g, f, ref("haff_1983"), eos));
         }

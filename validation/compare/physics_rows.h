@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/thermo/kinetic_temperature.h"
 #include "validation/record/case_result.h"
 #include "validation/compare/published_reference.h"
 #include "validation/plan/suite.h"
@@ -74,17 +75,28 @@ PhysicsComparison compare_with_physics(const Suite& suite, const std::vector<Cas
 
 // --- The per-case measurements (exposed for tests) ---------------------------------------
 
-// Z = 1 + Delta V / (2 Delta t K0) over the second half of the run, from the collision virial
-// V = sum over collisions of m_i Delta v_i . r_ij that the event-driven solvers count
-// (2-D virial theorem: P A = N kT + V / (2 t); K = N kT in 2-D). kT is that of the conserved
-// energy K0 (the first output), as the e = 1 gas promises: a solver that loses energy reads low.
+// The kinetic temperature of a case from its first output (core/thermo/kinetic_temperature.h,
+// the one definition): K_int / (N - 1) where momentum is conserved, K / N with walls. From the
+// recorded totals K, P (series) and M (total_mass) of the N moving disks.
+KineticTemperature case_temperature(const CaseResult& r, std::size_t moving_disks, bool momentum_conserved);
+
+// Z = 1 + ((N - 1) / N) W / K_int over the second half of the run (core/thermo/pressure_estimator.h),
+// W = Delta V / (2 Delta t) the rate of the collision virial V = sum over collisions of
+// m_i Delta v_i . r_ij that the event-driven solvers count. K_int is that of the conserved
+// energy (the first output), as the e = 1 gas promises: a solver that loses energy reads low.
 // NaN without the counters.
-double virial_compressibility(const CaseResult& r);
+double virial_compressibility(const CaseResult& r, const KineticTemperature& t);
 // Collisions per disk per time unit over the second half (each collision involves 2 disks).
 double second_half_collision_rate(const CaseResult& r);
 // Haff's cooling time tau from a least-squares line through T(t)^(-1/2) = T0^(-1/2) (1 + t/tau)
-// over the output times t <= t_max: tau = intercept / slope. NaN with fewer than 3 points.
-double haff_cooling_time(const CaseResult& r, double t_max);
+// over the output times t <= t_max: tau = intercept / slope, T the kinetic temperature of each
+// output (the centre of mass's energy left out where momentum is conserved). NaN with fewer
+// than 3 points.
+double haff_cooling_time(const CaseResult& r, double t_max, std::size_t moving_disks, bool momentum_conserved);
+// The speeds of a state's disks (equal masses m) in the frame of the centre of mass where
+// momentum is conserved, scaled by sqrt(kT / m) with the same kT: what the Rayleigh
+// distribution describes.
+std::vector<double> scaled_speeds(const Snapshot& s, double mass, bool momentum_conserved);
 // Pearson's chi-square of speeds scaled by sqrt(kT/m) against the 2-D Maxwell-Boltzmann
 // (Rayleigh) distribution over `bins` equiprobable bins; returns {chi2, degrees of freedom, p}.
 struct ChiSquare { double chi2 = 0; int dof = 0; double p_value = 1; };
