@@ -48,6 +48,7 @@ std::optional<std::string> pressure_record_refusal(const Scene& scene, const Par
     if (scene.physics.restitution != 1) return "restitution below 1: a cooling gas has no stationary pressure";
     if (scene.has_friction() || scene.has_damping()) return "friction or damping: energy is not conserved";
     if (!equal_moving_disks(initial)) return "not a system of equal moving disks (one radius, one mass, no stones)";
+    if (!(kinetic_temperature(scene, initial).kT() > 0)) return "no thermal motion: beta P is undefined at kT = 0";
     return std::nullopt;
 }
 

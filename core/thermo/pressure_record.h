@@ -44,7 +44,8 @@ std::map<std::string, double> pressure_counters(const PressureSeries& series);
 // Why a scene gets no pressure record, or nullopt when it gets one: a periodic box (walls
 // make the pressure depend on the wall, and the virial has wall terms), no gravity, e = 1 (a
 // cooling gas has no stationary pressure), no friction or damping, equal moving disks (the
-// finite-N estimator and beta P d^2 with one d are stated for them), no stones.
+// finite-N estimator and beta P d^2 with one d are stated for them), no stones, and a
+// temperature above 0 (a gas at rest in its centre-of-mass frame has no beta P).
 std::optional<std::string> pressure_record_refusal(const Scene& scene, const ParticleState<double>& initial);
 
 // Windows of one entry each into which an event-driven run cuts every output interval: enough

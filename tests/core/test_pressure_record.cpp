@@ -90,7 +90,7 @@ TEST(PressureRecord, ErrorMatchesTheScatterBetweenSeeds) {
     EXPECT_LT(spread, 2 * mean_error);
 }
 
-TEST(PressureRecord, WalledOrCoolingScenesRecordNone) {
+TEST(PressureRecord, WalledCoolingOrColdScenesRecordNone) {
     const Gas walls = periodic_gas(100, 0.3, 1, Boundary::reflect);
     EXPECT_FALSE(event_run(walls).counters.count("beta_pressure"));
     EXPECT_TRUE(pressure_record_refusal(walls.scene, walls.initial));
@@ -98,6 +98,10 @@ TEST(PressureRecord, WalledOrCoolingScenesRecordNone) {
     cooling.scene.physics.restitution = 0.9;
     EXPECT_TRUE(pressure_record_refusal(cooling.scene, cooling.initial));
     EXPECT_FALSE(event_run(cooling).counters.count("beta_pressure"));
+    Gas at_rest = periodic_gas(100, 0.3, 1);  // every disk moving with the centre of mass
+    for (std::size_t i = 0; i < at_rest.initial.size(); ++i) at_rest.initial.vx[i] = 1, at_rest.initial.vy[i] = 0;
+    EXPECT_TRUE(pressure_record_refusal(at_rest.scene, at_rest.initial));
+    EXPECT_FALSE(event_run(at_rest).counters.count("beta_pressure"));
 }
 
 TEST(PressureRecord, WindowsGiveAtLeastAThousandEntries) {
