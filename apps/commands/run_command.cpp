@@ -81,6 +81,17 @@ double relative_change(double initial, double final_value) {
     return scale > 0 ? (final_value - initial) / scale : final_value - initial;
 }
 
+// The pressure record of a periodic gas of equal elastic disks (core/thermo/pressure_record.h),
+// where the run has one.
+void print_pressure(const std::map<std::string, double>& c) {
+    if (!c.count("beta_pressure")) return;
+    std::printf("pressure  beta P d^2 = %.7g +- %.2g (batch means: %g batches, tau_int %.3g, equilibration cut %g; "
+                "psi6 traversals %g%s)\n",
+                c.at("beta_pressure"), c.at("beta_pressure_error"), c.at("beta_pressure_batches"),
+                c.at("beta_pressure_correlation_time"), c.at("beta_pressure_equilibration"), c.at("psi6_traversals"),
+                c.at("psi6_mixed") ? "" : ", NOT MIXED");
+}
+
 void print_summary(const Scene& scene, const std::string& backend, const RunResult& r) {
     const Metrics& a = r.series.front();
     const Metrics& b = r.series.back();
@@ -108,6 +119,7 @@ void print_summary(const Scene& scene, const std::string& backend, const RunResu
     std::printf("overlap   final: %lld pairs, max depth %.3e, mean depth %.3e (relative to r_i+r_j)\n",
                 static_cast<long long>(b.overlapping_pairs), b.max_overlap, b.mean_overlap);
     std::printf("walls     final max penetration %.3e (relative to radius)\n", b.max_wall_penetration);
+    print_pressure(r.stats.counters);
 }
 
 // Every check that can fail fast comes before the simulation: the backend name (no file read

@@ -140,6 +140,26 @@ TEST(RunCommand, H5dumpShowsMetricsAndProvenance) {
         EXPECT_TRUE(contains(dump.out, name)) << "h5dump -H output lacks " << name;
 }
 
+// The pressure of a periodic gas of equal elastic disks is in /stats and in the summary; a
+// scene with walls has none (core/thermo/pressure_record.h).
+TEST(RunCommand, EventRunOfAPeriodicGasRecordsItsPressure) {
+    ScratchDirectory dir;
+    const std::string out = dir.file("gas.h5");
+    const auto result = run_collide({"run", test::scene_file("periodic_gas.toml"), "--backend", "event", "--out", out,
+                                     "--set", "run.duration=2"}, dir);
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    EXPECT_TRUE(contains(result.out, "pressure  beta P d^2 = ")) << result.out;
+    Hdf5File file(out);
+    for (const char* name : {"beta_pressure", "beta_pressure_error", "beta_pressure_correlation_time",
+                             "beta_pressure_equilibration", "beta_pressure_batches", "psi6_traversals", "psi6_mixed"})
+        EXPECT_TRUE(file.has_attribute("/stats/counters", name)) << name;
+    EXPECT_GT(file.double_attribute("/stats/counters", "beta_pressure"), 0);
+
+    const std::string walls = dir.file("walls.h5");
+    ASSERT_EQ(run_collide({"run", head_on_scene, "--backend", "event", "--out", walls}, dir).exit_code, 0);
+    EXPECT_FALSE(Hdf5File(walls).has_attribute("/stats/counters", "beta_pressure"));
+}
+
 // Box2D's version is recorded once, as box2d_version: the installed package's version
 // (cmake/build_info.cmake reads it from pkg-config or dpkg at configure time), because Box2D
 // 2.4.1's library calls itself 2.4.0 and the build's Find module can tell only 2.4.

@@ -1,0 +1,78 @@
+#include "core/structure/orientational_order.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "core/uniform_grid.h"
+#include "physics/stepping_laws.h"
+
+namespace collide {
+namespace {
+
+// The separation from disk j to disk k, minimum image along periodic axes.
+std::complex<double> bond(const World& world, const ParticleState<double>& s, std::size_t j, std::size_t k) {
+    double dx = s.x[k] - s.x[j], dy = s.y[k] - s.y[j];
+    if (world.boundary == Boundary::periodic) {
+        dx = WallLaw<double>::minimum_image(dx, world.width());
+        dy = WallLaw<double>::minimum_image(dy, world.height());
+    }
+    return {dx, dy};
+}
+
+// (1/n_j) sum_k exp(6 i theta_jk) over j's neighbours within the cutoff; 0 without neighbours.
+// exp(6 i theta) = (b / |b|)^6, so no angle is computed.
+std::complex<double> local_psi6(const World& world, const ParticleState<double>& s, const UniformGrid<double>& grid,
+                                std::size_t j, double cutoff) {
+    std::complex<double> sum = 0;
+    std::size_t neighbours = 0;
+    grid.for_each_candidate(s.x[j], s.y[j], [&](std::uint32_t k) {
+        if (k == j) return;
+        const std::complex<double> b = bond(world, s, j, k);
+        const double length = std::abs(b);
+        if (length >= cutoff || length == 0) return;
+        const std::complex<double> u = b / length, u2 = u * u;
+        sum += u2 * u2 * u2;
+        ++neighbours;
+    });
+    return neighbours ? sum / double(neighbours) : sum;
+}
+
+double wrapped(double d) { return d - 2 * std::numbers::pi * std::round(d / (2 * std::numbers::pi)); }
+
+}  // namespace
+
+std::complex<double> global_psi6(const World& world, const ParticleState<double>& state, double cutoff) {
+    const std::size_t n = state.size();
+    if (n == 0) return 0;
+    UniformGrid<double> grid;  // cells at least `cutoff` wide: the 3x3 cells hold every neighbour
+    grid.configure(world, cutoff);
+    grid.build(state.x.data(), state.y.data(), n);
+    std::complex<double> sum = 0;
+    for (std::size_t j = 0; j < n; ++j) sum += local_psi6(world, state, grid, j, cutoff);
+    return sum / double(n);
+}
+
+std::complex<double> global_psi6(const World& world, const ParticleState<double>& state) {
+    double diameters = 0;
+    for (double r : state.radius) diameters += 2 * r;
+    const double mean_diameter = state.size() ? diameters / double(state.size()) : 0;
+    if (!(mean_diameter > 0)) return 0;
+    return global_psi6(world, state, psi6_cutoff_diameters * mean_diameter);
+}
+
+std::size_t phase_traversals(const std::vector<double>& phases) {
+    std::size_t traversals = 0;
+    double unwrapped = 0, low = 0, high = 0;  // the unwrapped phase, and its span since the last traversal
+    for (std::size_t i = 1; i < phases.size(); ++i) {
+        unwrapped += wrapped(phases[i] - phases[i - 1]);
+        low = std::min(low, unwrapped), high = std::max(high, unwrapped);
+        if (high - low >= 2 * std::numbers::pi) {
+            ++traversals;
+            low = high = unwrapped;
+        }
+    }
+    return traversals;
+}
+
+}  // namespace collide
