@@ -17,6 +17,7 @@
 #include <sstream>
 
 #include "core/scene/disk_placement.h"
+#include "core/scene/filled_lattice.h"
 #include "core/scene/memory_estimate.h"
 #include "core/scene/scene_loader.h"
 #include "core/thermo/kinetic_temperature.h"
@@ -221,8 +222,32 @@ std::vector<Disk> place_gas(const Scene& scene, const ParticleGenerator& g, std:
 // Lattice: `columns` disks per row, rows of `spacing`; a hexagonal lattice shifts every
 // other row by spacing/2 and packs rows at spacing * sqrt(3)/2 (each disk then has six
 // neighbours at distance `spacing`). The block of centres is centred in the region.
+// A lattice that fills the periodic box (core/scene/filled_lattice.h; the loader has checked that
+// its nearest distance holds two radii).
+std::vector<Disk> fill_box_with_lattice(const Scene& scene, const ParticleGenerator& g, std::size_t index,
+                                        DiskPlacement& placed) {
+    const World& w = scene.world;
+    const FilledLattice l = filled_lattice(w.width(), w.height(), g.columns, g.count / g.columns, g.lattice == "hexagonal");
+    std::vector<Disk> disks;
+    for (std::int64_t k = 0; k < g.count; ++k) {
+        const double x = w.xmin + l.x(k), y = w.ymin + l.y(k);
+        if (placed.find_overlap(x, y, g.radius) >= 0)
+            throw SceneError(block_location(scene, g, index) + "lattice disk " + std::to_string(k + 1) +
+                             " overlaps a disk placed before it: expected a radius of at most " +
+                             std::to_string(l.nearest_distance() / 2) + " and no other block in the filled box");
+        placed.insert(x, y, g.radius);
+        disks.push_back({x, y, 0, 0, g.radius, mass_of(scene, g, index, g.radius)});
+    }
+    return disks;
+}
+
 std::vector<Disk> place_lattice(const Scene& scene, const ParticleGenerator& g, std::size_t index, gsl_rng* rng,
                                 DiskPlacement& placed) {
+    if (g.fill_box) {
+        std::vector<Disk> disks = fill_box_with_lattice(scene, g, index, placed);
+        draw_velocities(g, rng, disks);
+        return disks;
+    }
     const bool hex = g.lattice == "hexagonal";
     const std::int64_t columns = std::min(g.columns, g.count);
     const std::int64_t rows = (g.count + columns - 1) / columns;

@@ -83,6 +83,9 @@ struct ParticleGenerator {
     std::string lattice = "square";
     double spacing = 0;
     std::int64_t columns = 0;  // lattice columns (rows follow from count)
+    // lattice: columns x rows fill the periodic box exactly, spacings from the box and no
+    // `spacing` key (core/scene/filled_lattice.h)
+    bool fill_box = false;
 
     bool stone = false;        // every disk of this block is a kinematic stone
     int source_line = 0;       // line in the scene file, for error messages

@@ -7,9 +7,11 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "core/scene/backend_table.h"
 #include "core/scene/disk_placement.h"
+#include "core/scene/filled_lattice.h"
 #include "core/io/input_file.h"
 #include "core/scene/toml_fields.h"
 
@@ -198,16 +200,37 @@ void read_gas(const TomlFields& block, const World& world, ParticleGenerator& g)
     g.stone = block.boolean("stone", false);
 }
 
+// `fill_box = true`: the lattice fills the periodic box (core/scene/filled_lattice.h), so the
+// box sets the spacings and N must make whole rows; its nearest distance must hold two radii.
+void read_filled_lattice(const TomlFields& block, const World& world, ParticleGenerator& g) {
+    block.require(world.boundary == Boundary::periodic, "fill_box", "false unless the boundary is \"periodic\" (a lattice "
+                                                                     "fills a box exactly only across periodic walls)");
+    block.require(!block.has("spacing"), "spacing", "no spacing with fill_box = true (the box and columns set it)");
+    block.require(!block.has("region"), "region", "no region with fill_box = true (the lattice fills the whole box)");
+    block.require(g.count % g.columns == 0, "count", "a whole number of rows of `columns` disks with fill_box = true");
+    const FilledLattice l = filled_lattice(world.width(), world.height(), g.columns, g.count / g.columns, g.lattice == "hexagonal");
+    if (l.nearest_distance() < 2 * g.radius) {
+        std::ostringstream msg;
+        msg << "a radius of at most " << l.nearest_distance() / 2 << " (the " << g.columns << " x " << l.rows
+            << " lattice that fills the box has neighbours " << l.nearest_distance() << " apart)";
+        block.fail("radius", msg.str());
+    }
+}
+
 void read_lattice(const TomlFields& block, const World& world, ParticleGenerator& g) {
     block.allow_only({"kind", "lattice", "count", "columns", "spacing", "radius", "mass", "density", "velocity",
-                      "region", "stone"});
+                      "region", "stone", "fill_box"});
     g.lattice = block.choice("lattice", {"hexagonal", "square"}, "");
     g.count = read_count(block);
     g.columns = block.integer("columns");
     block.require(g.columns >= 1, "columns", "an integer >= 1");
     read_radius(block, g, true);
-    g.spacing = block.number("spacing");
-    block.require(g.spacing >= 2 * g.radius, "spacing", "a centre-to-centre distance >= 2 radius (disks must not overlap)");
+    g.fill_box = block.boolean("fill_box", false);
+    if (g.fill_box) read_filled_lattice(block, world, g);
+    else {
+        g.spacing = block.number("spacing");
+        block.require(g.spacing >= 2 * g.radius, "spacing", "a centre-to-centre distance >= 2 radius (disks must not overlap)");
+    }
     read_mass(block, g);
     read_velocity(block, g);
     read_region(block, world, g);

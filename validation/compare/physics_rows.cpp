@@ -9,6 +9,7 @@
 
 #include "core/thermo/pressure_estimator.h"
 #include "core/thermo/velocity_sphere.h"
+#include "validation/compare/published_rows.h"
 #include "validation/judge/checks.h"
 #include "core/scene/scene_loader.h"
 #include "validation/judge/statistics.h"
@@ -22,7 +23,9 @@ const std::vector<PhysicsRowKind>& physics_row_kinds() {
         {"speed_distribution", "maxwell_boltzmann", "speed distribution of the final states"},
         {"galperin", "galperin_2003", "collisions (disk-disk and disk-wall) until the disks separate"},
         {"haff", "haff_1983", "cooling time tau of T(t) = T0 / (1 + t / tau)^2"},
-        // Not a [[scene]] key: made from the rows above wherever two exact solvers ran a case.
+        // Not [[scene]] keys: a scene's `published = "KEY:ID"` makes this row (published_rows.h),
+        {"published_finite_n", "li_2022", "pressure beta P d^2 at the published N and box shape"},
+        // and this one is made from the rows above wherever two exact solvers ran a case.
         {"exact_agreement", "", "difference between two exact solvers' values of the same row"},
     };
     return kinds;
@@ -368,6 +371,7 @@ ReferenceCurve sampled_curve(const PublishedReference& eos) {
 PhysicsComparison compare_with_physics(const Suite& suite, const std::vector<CaseResult>& results,
                                        const std::function<const Scene&(const CaseSpec&)>& scene_of) {
     PhysicsComparison out;
+    out.rows = published_finite_n_rows(suite, results, scene_of);
     const std::vector<Group> groups = physics_groups(suite, results);
     if (groups.empty()) return out;
     std::map<std::string, PublishedReference> refs;

@@ -52,6 +52,12 @@ struct PhysicsRow {
     bool resolved = true;            // the error bar tells the two published values apart
     PhysicsVerdict verdict = PhysicsVerdict::shown;
     std::string detail;
+    // Rows of published finite-N points (published_rows.h): the row they are held to ("KEY:ID"),
+    // the box ("9 : 8 sqrt(3)/2 periodic") and the facts of the estimate: "disks",
+    // "equilibration" and "correlation_time" (the run's time unit), "batches", "relative_error",
+    // "psi6_traversals", "mixed" (1 or 0), "replicate_chi2".
+    std::string published, box;
+    std::map<std::string, double> facts;
 };
 
 // A curve of a published equation of state, sampled for the report's figure.

@@ -1,6 +1,7 @@
 #include "validation/compare/published_reference.h"
 #include "core/io/input_file.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -60,7 +61,72 @@ void read_points(const toml::array& points, const std::string& file, PublishedRe
     }
 }
 
+// One [[rows]] table of a beta_pressure_d2 file: every key required (method optional), each of
+// its type and range, no other key; errors name the file, the line and rows[K].key.
+FiniteNPoint read_finite_n_point(const toml::table& t, const std::string& file, std::size_t k) {
+    const std::string where = "rows[" + std::to_string(k) + "].";
+    for (const auto& [key, node] : t) {
+        static const char* known[] = {"id", "method", "disks", "box", "aspect_ratio", "boundary", "eta",
+                                      "beta_pressure_d2", "standard_error"};
+        if (std::none_of(std::begin(known), std::end(known), [&](const char* n) { return key.str() == n; }))
+            fail(file, &node, where + std::string(key.str()) + ": not a key of a row (expected id, method, disks, box, "
+                                                                "aspect_ratio, boundary, eta, beta_pressure_d2, standard_error)");
+    }
+    auto text = [&](const char* key) {
+        const toml::node* n = t.get(key);
+        if (!n || !n->is_string() || n->value<std::string>()->empty())
+            fail(file, n ? n : &t, where + key + ": expected a non-empty string");
+        return *n->value<std::string>();
+    };
+    auto positive = [&](const char* key) {
+        const toml::node* n = t.get(key);
+        if (!n) fail(file, &t, where + key + ": expected a positive number (missing)");
+        const double v = finite_number(*n, file, where + key);
+        if (!(v > 0)) fail(file, n, where + key + ": expected a positive number");
+        return v;
+    };
+    FiniteNPoint p;
+    p.id = text("id");
+    if (t.get("method")) p.method = text("method");
+    const toml::node* disks = t.get("disks");
+    if (!disks || !disks->is_integer() || *disks->value<std::int64_t>() < 1)
+        fail(file, disks ? disks : &t, where + "disks: expected an integer N >= 1");
+    p.disks = *disks->value<std::int64_t>();
+    p.box = text("box");
+    p.aspect_ratio = positive("aspect_ratio");
+    p.boundary = text("boundary");
+    if (p.boundary != "periodic" && p.boundary != "reflect")
+        fail(file, t.get("boundary"), where + "boundary: expected \"periodic\" or \"reflect\"");
+    p.eta = positive("eta");
+    if (p.eta >= M_PI / (2 * std::sqrt(3.0)))  // above close packing no configuration exists
+        fail(file, t.get("eta"), where + "eta: expected an area fraction below close packing pi / (2 sqrt 3)");
+    p.beta_pressure_d2 = positive("beta_pressure_d2");
+    p.standard_error = positive("standard_error");
+    p.line = int(t.source().begin.line);
+    return p;
+}
+
+void read_finite_n_rows(const toml::array& rows, const std::string& file, PublishedReference& ref) {
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+        const toml::table* t = rows[k].as_table();
+        if (!t) fail(file, &rows[k], "rows[" + std::to_string(k) + "]: expected a [[rows]] table");
+        FiniteNPoint p = read_finite_n_point(*t, file, k);
+        for (const FiniteNPoint& q : ref.finite_n)
+            if (q.id == p.id) fail(file, t, "rows[" + std::to_string(k) + "].id: \"" + p.id + "\" is also the id of the row at line " + std::to_string(q.line));
+        ref.finite_n.push_back(std::move(p));
+    }
+}
+
 }  // namespace
+
+const FiniteNPoint& PublishedReference::finite_n_point(const std::string& id) const {
+    std::string ids;
+    for (const FiniteNPoint& p : finite_n) {
+        if (p.id == id) return p;
+        ids += (ids.empty() ? "" : ", ") + p.id;
+    }
+    throw std::runtime_error(source_path + ": no row with id \"" + id + "\" (the rows: " + (ids.empty() ? "none" : ids) + ")");
+}
 
 double PublishedReference::number(const std::string& n) const {
     const auto it = numbers.find(n);
@@ -99,13 +165,15 @@ PublishedReference load_reference(const std::string& directory, const std::strin
         const std::string name(k.str());
         if (name == "terms" && node.is_array()) read_terms(*node.as_array(), file, ref);
         else if (name == "points" && node.is_array()) read_points(*node.as_array(), file, ref);
+        else if (name == "rows" && node.is_array()) read_finite_n_rows(*node.as_array(), file, ref);
         else if (node.is_number()) ref.numbers[name] = finite_number(node, file, name);
         else if (node.is_string()) ref.texts[name] = *node.value<std::string>();
-        else fail(file, &node, name + ": expected a number, a string, `terms` or `points`");
+        else fail(file, &node, name + ": expected a number, a string, `terms`, `points` or `[[rows]]`");
     }
     if (ref.numbers.count("valid_below")) ref.valid_below = ref.numbers.at("valid_below");
     if (ref.quantity == "compressibility_factor" && ref.terms.empty()) fail(file, nullptr, "terms: expected at least one term");
     if (ref.quantity == "collision_count" && ref.counts.empty()) fail(file, nullptr, "points: expected at least one point");
+    if (ref.quantity == "beta_pressure_d2" && ref.finite_n.empty()) fail(file, nullptr, "rows: expected at least one [[rows]] table");
     return ref;
 }
 

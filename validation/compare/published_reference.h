@@ -19,6 +19,21 @@ struct EquationOfStateTerm {
     int one_minus_eta_power = 0;
 };
 
+// One published pressure at finite N (quantity "beta_pressure_d2": li_2022.toml, engel_2013.toml):
+// at this N, in this box, the pressure beta P d^2 (d the diameter) and its standard error. The
+// box matters at 1e-5: the same N and eta in another box shape is another number.
+struct FiniteNPoint {
+    std::string id;             // what a suite's `published = "KEY:ID"` names
+    std::string method;         // the row's own method where the file mixes them ("" otherwise)
+    long long disks = 0;        // N
+    std::string box;            // width : height as the paper writes it, "9 : 8 sqrt(3)/2"
+    double aspect_ratio = 0;    // height / width
+    std::string boundary;       // "periodic"
+    double eta = 0;             // area fraction N pi r^2 / A
+    double beta_pressure_d2 = 0, standard_error = 0;
+    int line = 0;               // in the reference file
+};
+
 struct PublishedReference {
     std::string key;       // the file's stem, e.g. "kolafa_rottner_2006"
     std::string name;      // "Kolafa & Rottner (2006)"
@@ -30,9 +45,12 @@ struct PublishedReference {
     std::map<double, long long> counts;                // collision_count: parameter -> count
     std::map<std::string, double> numbers;             // other constants (bins, uncertainties)
     std::map<std::string, std::string> texts;          // other strings (equation_of_state)
+    std::vector<FiniteNPoint> finite_n;                // beta_pressure_d2: the [[rows]]
 
     double number(const std::string& name) const;      // throws naming the file when missing
     std::string text(const std::string& name) const;
+    // The [[rows]] entry with this id; throws naming the file, the id and the ids there are.
+    const FiniteNPoint& finite_n_point(const std::string& id) const;
 };
 
 // Reads data/references/KEY.toml from `directory`; throws std::runtime_error naming the file,

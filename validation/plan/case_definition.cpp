@@ -64,7 +64,8 @@ std::string scene_text(const Scene& s) {
                                                                  g.radius_large, g.fraction_large, g.temperature,
                                                                  g.speed, g.spacing}) +
                field_text(g.mass) + field_text(g.density) + field_text(g.velocity_kind) + field_text(g.lattice) +
-               field_text(g.columns) + field_text(g.stone);
+               field_text(g.columns) + field_text(g.stone) +
+               (g.fill_box ? "fill_box" : "");  // only when set: older definitions keep their hash
     return out;
 }
 

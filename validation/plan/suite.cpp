@@ -14,6 +14,7 @@
 #include "validation/plan/external_solvers.h"
 #include "validation/plan/solver_tables.h"
 #include "validation/compare/physics_rows.h"
+#include "validation/compare/published_reference.h"
 
 namespace collide::validation {
 
@@ -244,11 +245,33 @@ std::vector<std::string> read_physics_rows(const TomlFields& r) {
     return rows;
 }
 
+// `published = "KEY:ID"`: a row of data/references/KEY.toml whose quantity is beta_pressure_d2,
+// checked here so that a misspelt id stops the suite before it runs.
+std::string read_published_row(const TomlFields& r, const std::string& reference_dir) {
+    const auto value = optional_string(r, "published");
+    if (!value) return "";
+    const auto colon = value->find(':');
+    if (colon == std::string::npos || colon == 0 || colon + 1 == value->size())
+        r.fail("published", "\"KEY:ID\", a reference file's stem and the id of one of its [[rows]] (not \"" + *value + "\")");
+    std::string problem;
+    try {
+        const PublishedReference ref = load_reference(reference_dir, value->substr(0, colon));
+        if (ref.quantity != "beta_pressure_d2")
+            problem = ref.source_path + " holds \"" + ref.quantity + "\", not beta_pressure_d2 rows";
+        else
+            ref.finite_n_point(value->substr(colon + 1));
+    } catch (const std::runtime_error& e) {
+        problem = e.what();
+    }
+    if (!problem.empty()) r.fail("published", "a published finite-N row (" + problem + ")");
+    return *value;
+}
+
 SuiteScene read_scene(const toml::table& t, const std::string& file, int index, const std::string& dir,
-                      const std::string& scene_dir) {
+                      const std::string& scene_dir, const std::string& reference_dir) {
     const TomlFields r(t, "[[scene]] #" + std::to_string(index), file);
     r.allow_only({"name", "path", "compare", "dt", "substeps", "iterations", "seeds", "duration", "output_interval", "set",
-            "frames", "physics", "backends"});
+            "frames", "physics", "backends", "published"});
     SuiteScene s;
     const auto name = optional_string(r, "name");
     const auto path = optional_string(r, "path");
@@ -276,6 +299,7 @@ SuiteScene read_scene(const toml::table& t, const std::string& file, int index, 
     refuse_set_beside_run_setting(t, s, file, "[[scene]] #" + std::to_string(index));
     s.physics = read_physics_rows(r);
     s.backends = strings(r, "backends", "an array of backend names");
+    s.published = read_published_row(r, reference_dir);
     // Where the run settings a case may break are set (checked against the scene later).
     s.line = int(t.source().begin.line);
     for (const char* key : {"output_interval", "duration", "dt"})
@@ -352,7 +376,7 @@ Suite read_suite(const toml::table& root, const std::string& file, const std::st
         r.fail("scene", "one or more [[scene]] tables");
     int index = 0;
     for (const auto& node : *scenes->as_array())
-        suite.scenes.push_back(read_scene(*node.as_table(), file, ++index, dir, scene_dir));
+        suite.scenes.push_back(read_scene(*node.as_table(), file, ++index, dir, scene_dir, suite.reference_dir));
     return suite;
 }
 

@@ -54,6 +54,9 @@ struct SuiteScene {
     int line = 0;                     // in the suite file: of dt (or the overrides), else [[scene]]
     std::vector<std::string> physics; // rows of "Reference against physics" it feeds (physics_rows.h)
     std::vector<std::string> backends;// only these backends run it (empty: the suite's backends)
+    // A published finite-N pressure this scene is held to, "KEY:ID" (data/references/KEY.toml,
+    // its [[rows]] entry ID; validation/compare/published_rows.h); "" when none.
+    std::string published;
 };
 
 // One backend run with settings of its own, reported as a backend of its own: the suite's

@@ -6,6 +6,8 @@ module only lays them out and draws the equation-of-state figure.
 """
 import io
 
+import finite_n
+
 import matplotlib
 
 matplotlib.use("Agg")
@@ -17,6 +19,7 @@ ROW_TITLES = {
     "speed_distribution": "Speed distribution (Maxwell–Boltzmann)",
     "galperin": "Galperin's billiard (digits of π)",
     "haff": "Haff's law (granular cooling)",
+    "published_finite_n": "Pressure at finite N (published)",
     "exact_agreement": "Two exact solvers agree",
 }
 
@@ -148,7 +151,7 @@ def section(summary):
     if not rows(summary):
         return None
     return {"lines": summary_lines(summary), "table": table(summary), "citations": citations(summary),
-            "figure": eos_figure(summary)}
+            "figure": eos_figure(summary), "finite_n": finite_n.section(summary)}
 
 
 def markdown(summary):

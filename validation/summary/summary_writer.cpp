@@ -345,6 +345,11 @@ Json physics_row_json(const PhysicsRow& r) {
         .text("second_reference_name", r.second_reference_name).text("statistic", r.statistic)
         .number("score", r.score).boolean("resolved", r.resolved).text("verdict", to_string(r.verdict))
         .text("detail", r.detail);
+    if (!r.published.empty()) {  // a published finite-N row (published_rows.h)
+        Object facts;
+        for (const auto& [name, value] : r.facts) facts.field(name, nullable(value));
+        o.text("published", r.published).text("box", r.box).field("facts", facts.json());
+    }
     return o.json();
 }
 

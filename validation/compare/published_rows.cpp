@@ -1,0 +1,200 @@
+#include "validation/compare/published_rows.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include "core/scene/scene_loader.h"
+
+namespace collide::validation {
+
+PooledEstimate pool_inverse_variance(const std::vector<Estimate>& replicates) {
+    PooledEstimate p;
+    double weights = 0, weighted = 0;
+    for (const Estimate& e : replicates) {
+        const double w = 1 / (e.standard_error * e.standard_error);
+        weights += w, weighted += w * e.value;
+    }
+    p.count = replicates.size();
+    if (p.count == 0 || !(weights > 0) || !std::isfinite(weights)) {
+        p.mean = p.standard_error = std::nan("");
+        return p;
+    }
+    p.mean = weighted / weights;
+    p.standard_error = 1 / std::sqrt(weights);
+    for (const Estimate& e : replicates) p.chi2 += std::pow((e.value - p.mean) / e.standard_error, 2);
+    return p;
+}
+
+namespace {
+
+// The counters a pressure-recording run leaves (docs/validation.md, "Published finite-N rows").
+double counter(const CaseResult& r, const char* name) {
+    const auto it = r.counters.find(name);
+    return it == r.counters.end() ? std::nan("") : it->second;
+}
+
+// Mixed unless the run says it is not: the check applies at eta >= 0.69 only, and a run below
+// that records psi6_mixed = 1 or nothing.
+bool mixed(const CaseResult& r) { return !(counter(r, "psi6_mixed") == 0); }
+
+struct PublishedGroup {
+    std::size_t scene_index = 0;
+    std::string scene, backend, group;
+    std::vector<const CaseResult*> cases;  // finished replicates only
+};
+
+std::vector<PublishedGroup> published_groups(const Suite& suite, const std::vector<CaseResult>& results) {
+    std::vector<PublishedGroup> groups;
+    std::map<std::string, std::size_t> index;
+    for (const CaseResult& r : results) {
+        if (suite.scenes[r.spec.scene_index].published.empty() || !r.finished()) continue;
+        const std::string id = group_id(r.spec);
+        auto [it, inserted] = index.emplace(id, groups.size());
+        if (inserted) groups.push_back({r.spec.scene_index, r.spec.scene, r.spec.backend, id, {}});
+        groups[it->second].cases.push_back(&r);
+    }
+    return groups;
+}
+
+// What the scene simulates, to hold against what the published row simulated.
+struct SystemFacts {
+    long long disks = 0;
+    double aspect_ratio = 0, eta = 0;
+    std::string boundary;
+};
+
+SystemFacts system_of(const Scene& scene) {
+    const ParticleState<double> s = generate_initial_state(scene);
+    SystemFacts f;
+    f.disks = (long long)s.size();
+    f.aspect_ratio = scene.world.height() / scene.world.width();
+    double covered = 0;
+    for (std::size_t i = 0; i < s.size(); ++i) covered += M_PI * s.radius[i] * s.radius[i];
+    f.eta = covered / (scene.world.width() * scene.world.height());
+    f.boundary = scene.world.boundary == Boundary::periodic ? "periodic" : "reflect";
+    return f;
+}
+
+// "" when the scene is the published system; else what differs. The area fraction must agree
+// to 1e-9: near eta = 0.7, d(beta P d^2)/d eta is about 50, so 1e-6 in eta would already shift
+// the pressure by a published error bar.
+std::string system_mismatch(const SystemFacts& f, const FiniteNPoint& p) {
+    std::ostringstream d;
+    d.precision(10);
+    if (f.disks != p.disks) d << "the scene has N = " << f.disks << ", the published row N = " << p.disks << "; ";
+    if (std::abs(f.aspect_ratio - p.aspect_ratio) > 1e-9 * p.aspect_ratio)
+        d << "the scene's box has height / width " << f.aspect_ratio << ", the published " << p.aspect_ratio << " (" << p.box
+          << "); ";
+    if (std::abs(f.eta - p.eta) > 1e-9 * p.eta)
+        d << "the scene's area fraction is " << f.eta << ", the published " << p.eta << "; ";
+    if (f.boundary != p.boundary) d << "the scene's boundary is " << f.boundary << ", the published " << p.boundary << "; ";
+    return d.str();
+}
+
+double mean_of(const std::vector<const CaseResult*>& cases, const char* name) {
+    double sum = 0;
+    for (const CaseResult* r : cases) sum += counter(*r, name);
+    return sum / double(cases.size());
+}
+
+// The facts of the estimate the report shows beside the value (means over the replicates).
+void record_facts(PhysicsRow& row, const PublishedGroup& g, const SystemFacts& f, const PooledEstimate& pooled) {
+    double traversals = INFINITY, batches = 0;
+    for (const CaseResult* r : g.cases)
+        traversals = std::min(traversals, counter(*r, "psi6_traversals")), batches += counter(*r, "beta_pressure_batches");
+    row.facts = {{"disks", double(f.disks)},
+                 {"equilibration", mean_of(g.cases, "beta_pressure_equilibration")},
+                 {"correlation_time", mean_of(g.cases, "beta_pressure_correlation_time")},
+                 {"batches", batches},
+                 {"relative_error", pooled.standard_error / std::abs(pooled.mean)},
+                 {"psi6_traversals", std::isfinite(traversals) ? traversals : std::nan("")},
+                 {"mixed", std::all_of(g.cases.begin(), g.cases.end(), [](const CaseResult* r) { return mixed(*r); }) ? 1.0 : 0.0},
+                 {"replicate_chi2", pooled.chi2}};
+}
+
+// The verdict: fail when a case lacks the counters or the scene is not the published system;
+// shown when psi6 has not mixed; else pass iff |z| <= 3 and the relative error <= 2e-4.
+void judge(PhysicsRow& row, const std::string& mismatch, std::size_t without_counters) {
+    std::ostringstream d;
+    const double relative = row.facts.at("relative_error");
+    if (without_counters > 0) {
+        row.verdict = PhysicsVerdict::fail;
+        d << without_counters << " of " << row.replicates
+          << " finished cases recorded no beta_pressure / beta_pressure_error: this backend does not measure the pressure";
+    } else if (!mismatch.empty()) {
+        row.verdict = PhysicsVerdict::fail;
+        d << "not the published system: " << mismatch;
+    } else if (row.facts.at("mixed") == 0) {
+        row.verdict = PhysicsVerdict::shown;
+        d << "not mixed: the phase of psi6 crossed its full range " << row.facts.at("psi6_traversals")
+          << " times in the sampled run (3 needed), so the run has not sampled the states the published value averages";
+    } else {
+        const bool close = row.score <= physics_z_max, precise = relative <= published_relative_error_max;
+        row.verdict = close && precise ? PhysicsVerdict::pass : PhysicsVerdict::fail;
+        if (!close) d << "|z| > " << physics_z_max << "; ";
+        if (!precise) d << "relative error " << relative << " > " << published_relative_error_max << ": run longer; ";
+    }
+    d << "pooled over " << row.replicates << " replicates by inverse-variance weights (chi2 "
+      << row.facts.at("replicate_chi2") << " on " << (row.replicates > 0 ? row.replicates - 1 : 0) << " d.o.f.)";
+    row.detail = d.str();
+}
+
+// Strings made once (GCC 12 warns falsely, -Wrestrict, on assigning a short literal to a
+// std::string member at -O3; physics_rows.cpp does the same).
+const std::string& text(const char* which) {
+    static const std::map<std::string, std::string> texts = {
+        {"kind", "published_finite_n"}, {"z", "z"}, {"area fraction", "area fraction"},
+        {"estimator", "collision virial in the rest frame, Z = 1 + ((N - 1)/N) W / K_int; batch means"}};
+    return texts.at(which);
+}
+
+PhysicsRow published_row(const PublishedGroup& g, const Scene& scene, const PublishedReference& ref,
+                         const FiniteNPoint& point) {
+    PhysicsRow row;
+    row.row = text("kind");
+    row.scene = g.scene, row.backend = g.backend, row.group = g.group;
+    row.published = ref.key + ":" + point.id;
+    row.box = point.box + " " + point.boundary;
+    row.measured = "pressure beta P d^2 (d the diameter) at N = " + std::to_string(point.disks);
+    row.estimator = text("estimator");
+    row.reference_name = ref.name + (point.method.empty() ? "" : " " + point.method);
+    row.citation = ref.citation;
+    row.reference = point.beta_pressure_d2, row.reference_uncertainty = point.standard_error;
+    row.statistic = text("z");
+    std::vector<Estimate> estimates;
+    std::size_t without_counters = 0;
+    for (const CaseResult* r : g.cases) {
+        const Estimate e{counter(*r, "beta_pressure"), counter(*r, "beta_pressure_error")};
+        if (std::isfinite(e.value) && e.standard_error > 0) estimates.push_back(e);
+        else ++without_counters;
+    }
+    const PooledEstimate pooled = pool_inverse_variance(estimates);
+    row.replicates = g.cases.size();
+    row.value = pooled.mean, row.standard_error = pooled.standard_error;
+    row.score = std::abs(row.value - row.reference) / std::hypot(row.standard_error, row.reference_uncertainty);
+    const SystemFacts f = system_of(scene);
+    row.parameter_name = text("area fraction"), row.parameter = f.eta;
+    record_facts(row, g, f, pooled);
+    judge(row, system_mismatch(f, point), without_counters);
+    return row;
+}
+
+}  // namespace
+
+std::vector<PhysicsRow> published_finite_n_rows(const Suite& suite, const std::vector<CaseResult>& results,
+                                                const std::function<const Scene&(const CaseSpec&)>& scene_of) {
+    std::vector<PhysicsRow> rows;
+    std::map<std::string, PublishedReference> refs;
+    for (const PublishedGroup& g : published_groups(suite, results)) {
+        const std::string& name = suite.scenes[g.scene_index].published;
+        const std::string key = name.substr(0, name.find(':')), id = name.substr(name.find(':') + 1);
+        if (!refs.count(key)) refs.emplace(key, load_reference(suite.reference_dir, key));
+        const PublishedReference& ref = refs.at(key);
+        rows.push_back(published_row(g, scene_of(g.cases.front()->spec), ref, ref.finite_n_point(id)));
+    }
+    return rows;
+}
+
+}  // namespace collide::validation

@@ -1,0 +1,40 @@
+// Rows of "Reference against physics" that hold a run to a pressure published at finite N: the
+// pressure beta P d^2 (d the diameter) that Li et al. (2022) measured with event-chain Monte
+// Carlo at N = 72 and 870, or Engel et al. (2013) at N = 256^2 ... 1024^2, at the same N, in the
+// same box shape, at the same area fraction (data/references/li_2022.toml, engel_2013.toml).
+// A suite's [[scene]] names its row, `published = "li_2022:N72_crystal_0.670"`; the row reads the
+// pressure counters every finished case recorded (beta_pressure, beta_pressure_error, ...,
+// psi6_mixed: docs/validation.md, "Published finite-N rows") and judges
+//   z = |P - P_published| / sqrt(se^2 + se_published^2) <= 3   and   se / P <= 2e-4,
+// unless a case's orientational order psi6 did not mix (then "not mixed": shown, not judged).
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "validation/compare/physics_rows.h"
+
+namespace collide::validation {
+
+// The largest relative standard error a judged row may have: the precision the published
+// values are held to (issue 47; Li et al.'s errors at N = 72 are 6e-6 to 1e-4 relative).
+inline constexpr double published_relative_error_max = 2e-4;
+
+// The weighted mean of replicates that each carry their own standard error (each run's batch
+// means): weights 1 / se_k^2, mean = sum w_k P_k / sum w_k, se = 1 / sqrt(sum w_k); chi2 of the
+// replicates about the mean (k - 1 degrees of freedom; near k - 1 when the error bars are right).
+struct PooledEstimate {
+    double mean = 0, standard_error = 0, chi2 = 0;
+    std::size_t count = 0;
+};
+struct Estimate {
+    double value = 0, standard_error = 0;
+};
+PooledEstimate pool_inverse_variance(const std::vector<Estimate>& replicates);
+
+// One row per [[scene]] with a `published` key and per backend that ran it (finished cases only).
+// Throws std::runtime_error naming the reference file when a `published` row cannot be read.
+std::vector<PhysicsRow> published_finite_n_rows(const Suite& suite, const std::vector<CaseResult>& results,
+                                                const std::function<const Scene&(const CaseSpec&)>& scene_of);
+
+}  // namespace collide::validation

@@ -1,0 +1,89 @@
+"""The physics section's published finite-N rows: `event` against pressures published at the N
+and in the box shape that were simulated (Li et al. 2022, ECMC; data/references/li_2022.toml).
+
+Every number comes from summary.json's physics rows of kind "published_finite_n"
+(validation/compare/published_rows.cpp computes and judges them); this module lays out one table
+row per published point (N, box, estimator, equilibration cut, correlation time, error bar, z)
+and draws beta P d^2 against the area fraction for each N with the published points.
+"""
+import io
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+KIND = "published_finite_n"
+
+
+def rows(summary):
+    return [r for r in (summary.get("physics") or {}).get("rows", []) if r["row"] == KIND]
+
+
+def _num(value, digits):
+    return "n/a" if value is None else f"{value:.{digits}g}"
+
+
+def _fact(r, name, digits=3):
+    return _num((r.get("facts") or {}).get(name), digits)
+
+
+def _verdict(r):
+    if (r.get("facts") or {}).get("mixed") == 0:
+        return "not mixed (shown, not judged)"
+    return {"pass": "pass", "fail": "FAIL", "shown": "shown, not judged"}[r["verdict"]]
+
+
+def table(summary):
+    """One dictionary of cell texts per published row."""
+    out = []
+    for r in rows(summary):
+        out.append({
+            "published": r["published"], "backend": r["backend"], "disks": _fact(r, "disks", 9),
+            "box": r["box"], "eta": _num(r["parameter"], 4), "estimator": r["estimator"],
+            "equilibration": _fact(r, "equilibration"), "correlation_time": _fact(r, "correlation_time"),
+            "value": f"{_num(r['value'], 7)} ± {_num(r['standard_error'], 2)}",
+            "relative_error": _fact(r, "relative_error", 2), "replicates": r["replicates"],
+            "reference": f"{_num(r['reference'], 7)} ± {_num(r['reference_uncertainty'], 2)}",
+            "z": _num(r["score"], 3), "verdict": _verdict(r), "detail": r["detail"],
+            "class": {"pass": "pass", "fail": "fail"}.get(r["verdict"], "lo")})
+    return out
+
+
+def figure(summary):
+    """beta P d^2 against the area fraction, one panel per N: the published points (open, with
+    their error bars) and the measured ones (filled); a row that has not mixed is drawn grey."""
+    points = [r for r in rows(summary) if r["value"] is not None]
+    if not points:
+        return None
+    sizes = sorted({int(r["facts"]["disks"]) for r in points})
+    fig, axes = plt.subplots(1, len(sizes), figsize=(4.2 * len(sizes), 3.6), squeeze=False)
+    for ax, n in zip(axes[0], sizes):
+        mine = [r for r in points if int(r["facts"]["disks"]) == n]
+        for box in sorted({r["box"] for r in mine}):
+            at = [r for r in mine if r["box"] == box]
+            line = ax.errorbar([r["parameter"] for r in at], [r["reference"] for r in at],
+                               yerr=[r["reference_uncertainty"] for r in at], marker="o", markerfacecolor="white",
+                               linestyle="none", label=f"{box}: {at[0]['reference_name']}")
+            colour = line[0].get_color()
+            for r in at:
+                mixed = (r.get("facts") or {}).get("mixed") != 0
+                ax.errorbar([r["parameter"]], [r["value"]], yerr=[r["standard_error"]], marker="x", linestyle="none",
+                            color=colour if mixed else "grey")
+        ax.plot([], [], marker="x", linestyle="none", color="black", label="measured (± 1 SE)")
+        ax.set_title(f"N = {n}")
+        ax.set_xlabel("area fraction η = Nπr²/A")
+        ax.set_ylabel("βPd² (d the diameter)")
+        ax.legend(fontsize=6, loc="upper left")
+    fig.tight_layout()
+    buffer = io.BytesIO()
+    fig.savefig(buffer, format="png", dpi=80)
+    plt.close(fig)
+    return buffer.getvalue()
+
+
+def section(summary):
+    """The data of templates/finite_n.html.j2, or None when the suite has no published rows."""
+    if not rows(summary):
+        return None
+    return {"table": table(summary), "figure": figure(summary)}
