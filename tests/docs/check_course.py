@@ -343,15 +343,31 @@ def check_lab():
             done = subprocess.run(["/usr/bin/python3", str(lab), "check", name, str(right)], capture_output=True, text=True)
         if done.returncode != 0 or f"{name}: right" not in done.stdout:
             failures.append(f"{page.name}: the worked solution of '{name}' is not accepted:\n{done.stdout}{done.stderr}")
-        wrong = wrong_dir / f"{name}.py"
-        if not wrong.exists():
+        if not (wrong_dir / f"{name}.py").exists():
             failures.append(f"'{name}' has no wrong answer in {wrong_dir} to prove its checker rejects one")
-            continue
-        done = subprocess.run(["/usr/bin/python3", str(lab), "check", name, str(wrong)], capture_output=True, text=True)
-        if done.returncode != 1 or f"{name}: wrong" not in done.stdout:
-            failures.append(f"the checker of '{name}' accepts the wrong answer {wrong.name}:\n{done.stdout}{done.stderr}")
-        print(f"{name}: solution accepted, wrong answer rejected ({done.stdout.strip()[:90]})")
+        for wrong in answers(wrong_dir, name):
+            failures += judged(lab, name, wrong, "wrong", 1)
+        for right in answers(ROOT / "tests/docs/right_answers", name):
+            failures += judged(lab, name, right, "right", 0)
+        print(f"{name}: solution and {len(answers(ROOT / 'tests/docs/right_answers', name))} other right answers "
+              f"accepted, {len(answers(wrong_dir, name))} wrong answers rejected")
     return failures
+
+
+def answers(folder, name):
+    """NAME.py and NAME--WHAT.py: the answers to exercise NAME in folder."""
+    return sorted(p for p in folder.glob(f"{name}*.py") if p.stem == name or p.stem.startswith(f"{name}--"))
+
+
+def judged(lab, name, answer, verdict, status):
+    """The checker's verdict on answer must be `verdict`, and its message must hold the answer's
+    `# hint: TEXT` line if it has one (a rejection that names the wrong slip misleads)."""
+    done = subprocess.run(["/usr/bin/python3", str(lab), "check", name, str(answer)], capture_output=True, text=True)
+    if done.returncode != status or f"{name}: {verdict}" not in done.stdout:
+        return [f"the checker of '{name}' does not find {answer.name} {verdict}:\n{done.stdout}{done.stderr}"]
+    hints = re.findall(r"(?m)^# hint: (.*)$", answer.read_text())
+    return [f"the checker of '{name}' rejects {answer.name} without naming its slip ({hint!r}):\n{done.stdout}"
+            for hint in hints if hint not in done.stdout]
 
 
 def main():
