@@ -317,12 +317,123 @@ def fact_slope():
     return failures
 
 
+def fact_reunion(collide, scratch):
+    """Chapter 2: when the periodic head_on_equal pair meets a second time, from a run to t = 6
+    (frames every 0.05; each contact time from the centre distance before it, closing at speed 2)."""
+    page = (COURSE / "2-many-disks-exactly.md").read_text()
+    said = re.search(r"meet again\s+only at t = ([\d.]+)", page)
+    if not said:
+        return ["2-many-disks-exactly.md: the worked virial example says not when the pair meets again"]
+    text = (ROOT / "data/scenes/head_on_equal.toml").read_text().replace('"reflect"', '"periodic"')
+    text = set_key(set_key(text, "duration", "6.0"), "output_interval", "0.05")
+    f = run(collide, text, "event", scratch, "reunion")
+    t, x, v = f["frames/time"][:], f["frames/position"][:, :, 0], f["frames/velocity"][:, :, 0]
+    changed = np.flatnonzero(v[1:, 0] != v[:-1, 0])
+    gap = np.abs(x[:, 0] - x[:, 1])
+    gap = np.minimum(gap, 10.0 - gap)  # the nearer image across the periodic box of width 10
+    meetings = [t[k] + (gap[k] - 1.0) / 2.0 for k in changed]
+    if len(meetings) < 2:
+        return [f"periodic head_on_equal: {len(meetings)} collision(s) up to t = 6, two expected"]
+    if not close(float(said.group(1)), meetings[1], 1e-6):
+        return [f"2-many-disks-exactly.md: the pair meets again at t = {said.group(1)} says the page, "
+                f"at t = {meetings[1]:.6g} says the run"]
+    return []
+
+
+def fact_root_rounding():
+    """Chapter 2, the stable root: its numbers on the checker's second pair (a gap of 1e-10), for the
+    stable and the textbook forms, against the exact root and the root of the rounded coefficients."""
+    sys.path.insert(0, str(COURSE))
+    import lab_check
+    page = re.sub(r"\s+", " ", (COURSE / "2-many-disks-exactly.md").read_text())
+    case = lab_check.root_cases()[1]
+    exact, rounded = lab_check.exact_contact_time(*case), lab_check.rounded_coefficient_root(*case)
+    dx, dy, ux, uy, sigma = case
+    b, c, uu = dx * ux + dy * uy, dx * dx + dy * dy - sigma * sigma, ux * ux + uy * uy
+    textbook = (-b - np.sqrt(b * b - uu * c)) / uu
+    stable = 0.0
+    for q in lab_check.root_cases():
+        root = lab_check.rounded_coefficient_root(*q)
+        if root is not None:
+            qb, qc, qu = q[0] * q[2] + q[1] * q[3], q[0] ** 2 + q[1] ** 2 - q[4] ** 2, q[2] ** 2 + q[3] ** 2
+            stable = max(stable, abs(qc / (-qb + np.sqrt(qb * qb - qu * qc)) - root) / root)
+    wanted = {"stable form's largest error": (r"within ([\d.]+e−\d+) of the root of the rounded coefficients",
+                                              max(stable, 1.1e-16)),
+              "c's rounding": (r"\(([\d.]+e−\d+) on the second pair", abs(rounded - exact) / exact),
+              "textbook from the rounded-coefficient root": (r"textbook form is off by ([\d.]+e−\d+) from that root",
+                                                             abs(textbook - rounded) / rounded),
+              "textbook from the exact root": (r"and ([\d.]+e−\d+) from the exact one", abs(textbook - exact) / exact)}
+    failures = []
+    for what, (pattern, measured) in wanted.items():
+        said = re.search(pattern, page)
+        if not said:
+            failures.append(f"2-many-disks-exactly.md: the stable root's section states no {what}")
+        elif not 0.5 <= float(said.group(1).replace("−", "-")) / measured <= 1.5:
+            failures.append(f"2-many-disks-exactly.md: {what} is {said.group(1)} on the page, {measured:.1e} computed")
+    return failures
+
+
+def fact_step_boundary(collide, scratch):
+    """Chapter 3, exercise 3.3: at which dt `step` finds head_on_equal's collision (t = 1.5, on a
+    step boundary) on time and at which a full step late, read from runs against `event`."""
+    page = re.sub(r"\s+", " ", (COURSE / "3-many-disks-stepped.md").read_text())
+    said = re.search(r"`step` is a full step late at dt = (.*?) and on time at dt = (.*?)\. [A-Z]", page)
+    if not said:
+        return ["3-many-disks-stepped.md: exercise 3.3 does not say at which dt `step` is a full step late "
+                "and at which on time"]
+    text = (SCENES / "head_on_equal.toml").read_text()
+    exact = run(collide, text, "event", scratch, "boundary_event")["frames/position"][-1]
+    failures = []
+    for verdict, listed in zip(("late", "on time"), said.groups()):
+        for dt in re.findall(r"[\d.]+e-\d+", listed):
+            error = np.max(np.linalg.norm(run(collide, set_key(text, "dt", dt), "step", scratch, f"b{dt}")
+                                          ["frames/position"][-1] - exact, axis=1))
+            measured = "late" if abs(error - float(dt)) < 1e-3 * float(dt) else "on time" if error < 1e-9 else "?"
+            if measured != verdict:
+                failures.append(f"3-many-disks-stepped.md: at dt = {dt} the page says `step` is {verdict}, the run's "
+                                f"error is {error:.3e} ({measured})")
+    return failures
+
+
+def fact_multi_contact(collide, scratch):
+    """Chapter 3, exercise 3.5: how far the counted multi-contact disk-steps lie from the
+    independent-collision guess, in Poisson standard deviations, from a run."""
+    page = re.sub(r"\s+", " ", (COURSE / "3-many-disks-stepped.md").read_text())
+    said = re.search(r"([\d.]+) Poisson standard deviations \(√([\d.]+)", page)
+    if not said:
+        return ["3-many-disks-stepped.md: exercise 3.5 does not say how many standard deviations the count "
+                "lies from the independent guess"]
+    f = run(collide, (SCENES / "box_gas_1000.toml").read_text(), "step", scratch, "multi", frames=False)
+    counted = float(f["stats/counters"].attrs["multi_contact_disks"])
+    nu = 2.6002  # exercise 2.2's measured collision rate, checked there
+    guess = nu ** 2 * 1e-3 * 10 * 1000 / 2
+    z = (guess - counted) / np.sqrt(guess)
+    failures = []
+    if abs(float(said.group(1)) - z) > 0.05 or not close(float(said.group(2)), guess, 0.01):
+        failures.append(f"3-many-disks-stepped.md: the page puts the count {said.group(1)} standard deviations "
+                        f"(sqrt {said.group(2)}) below the guess; the run's {counted:g} is {z:.2f} below {guess:.1f}")
+    if "include this very scene" not in page:
+        failures.append("3-many-disks-stepped.md: exercise 3.5 compares with a fit without saying the fit "
+                        "includes this scene")
+    return failures
+
+
+def fact_wording():
+    """Statements that are false as worded, found by earlier reviews."""
+    wrong = {"1-one-collision.md": ["The second law fixes J"]}
+    return [f"{name}: \"{phrase}\" (the contact law, here restitution, fixes J; Newton's laws leave it free)"
+            for name, phrases in wrong.items() for phrase in phrases
+            if phrase in re.sub(r"\s+", " ", (COURSE / name).read_text())]
+
+
 def check_facts(collide):
     with tempfile.TemporaryDirectory(prefix="collide-facts-") as scratch:
         scratch = pathlib.Path(scratch)
         failures = (fact_virial(collide, scratch) + fact_galperin(collide, scratch)
-                    + fact_cradle(collide, scratch) + fact_slope())
-    print("4 statements of the text measured")
+                    + fact_cradle(collide, scratch) + fact_slope() + fact_reunion(collide, scratch)
+                    + fact_root_rounding() + fact_step_boundary(collide, scratch)
+                    + fact_multi_contact(collide, scratch) + fact_wording())
+    print("9 statements of the text measured")
     return failures
 
 
