@@ -418,10 +418,47 @@ def fact_multi_contact(collide, scratch):
     return failures
 
 
+GOLDEN = (np.sqrt(5) - 1) / 2
+
+
+def phase_errors(collide, scratch, backend, dt):
+    """The suite's trajectory error of `backend` on head_on_equal at each of six replicate phases:
+    replicate k starts frac(k phi) dt along the free flight (validation/compare/phase_shift.h);
+    the largest position error over the output times, relative to r_min = 0.5."""
+    errors = []
+    for k in range(1, 7):
+        shift = (k * GOLDEN) % 1.0 * dt
+        text = set_key((SCENES / "head_on_equal.toml").read_text(), "dt", repr(dt))
+        text = text.replace("x = 3.0,", f"x = {3.0 + shift!r},").replace("x = 7.0,", f"x = {7.0 - shift!r},")
+        exact = run(collide, text, "event", scratch, f"phase{k}_event")["frames/position"][:]
+        stepped = run(collide, text, backend, scratch, f"phase{k}_{backend}")["frames/position"][:]
+        errors.append(np.max(np.linalg.norm(stepped - exact, axis=2)) / 0.5)
+    return np.array(errors)
+
+
+def fact_pairing(collide, scratch):
+    """Chapter 4: the correlation r of `step`'s and `cpu`'s per-phase errors that the page states
+    (it decides whether pairing narrows or widens the error of their difference), from runs."""
+    page = re.sub(r"\s+", " ", (COURSE / "4-validating-a-solver.md").read_text())
+    said = set(re.findall(r"r = (−?[\d.]+) at dt = ([\d.]+e-\d+)", page))
+    if not said:
+        return ["4-validating-a-solver.md: no measured correlation (\"r = ... at dt = ...\") behind the "
+                "advice on paired differences"]
+    failures = []
+    for r, dt in sorted(said):
+        measured = np.corrcoef(phase_errors(collide, scratch, "step", float(dt)),
+                               phase_errors(collide, scratch, "cpu", float(dt)))[0, 1]
+        if abs(float(r.replace("−", "-")) - measured) > 0.02:
+            failures.append(f"4-validating-a-solver.md: r = {r} at dt = {dt} on the page, {measured:.3f} in the runs")
+    return failures
+
+
 def fact_wording():
     """Statements that are false as worded, found by earlier reviews."""
-    wrong = {"1-one-collision.md": ["The second law fixes J"]}
-    return [f"{name}: \"{phrase}\" (the contact law, here restitution, fixes J; Newton's laws leave it free)"
+    wrong = {"1-one-collision.md": ["The second law fixes J"],  # the contact law (restitution) fixes J
+             # the golden-ratio phases are fixed, not a random sample: their spread does not shrink
+             "4-validating-a-solver.md": ["shrink the standard errors as 1/√n"]}
+    return [f"{name}: \"{phrase}\" is false as worded"
             for name, phrases in wrong.items() for phrase in phrases
             if phrase in re.sub(r"\s+", " ", (COURSE / name).read_text())]
 
@@ -432,8 +469,8 @@ def check_facts(collide):
         failures = (fact_virial(collide, scratch) + fact_galperin(collide, scratch)
                     + fact_cradle(collide, scratch) + fact_slope() + fact_reunion(collide, scratch)
                     + fact_root_rounding() + fact_step_boundary(collide, scratch)
-                    + fact_multi_contact(collide, scratch) + fact_wording())
-    print("9 statements of the text measured")
+                    + fact_multi_contact(collide, scratch) + fact_pairing(collide, scratch) + fact_wording())
+    print("10 statements of the text measured")
     return failures
 
 
