@@ -453,6 +453,30 @@ def fact_pairing(collide, scratch):
     return failures
 
 
+def fact_correlated_series(collide, scratch):
+    """Chapter 4: the lag-1 correlation of the stationary series the block-averaging rule cites
+    (exercise 4.4's kinetic energy of ten disks), and that the series levels off (block 50 within
+    10 % of block 100 and above twice block 1) where the stepped gas's random walk did not."""
+    page = re.sub(r"\s+", " ", (COURSE / "4-validating-a-solver.md").read_text())
+    said = re.search(r"lag-1 correlation ([\d.]+) in exercise 4\.4", page)
+    if not said:
+        return ["4-validating-a-solver.md: the block-averaging rule cites no measured correlated series"]
+    text = (SCENES / "periodic_gas.toml").read_text().replace("count = 1000", "count = 200")
+    text = set_key(text.replace("box = [0.0, 0.0, 60.0, 60.0]", "box = [0.0, 0.0, 26.8, 26.8]"), "duration", "200.0")
+    v = run(collide, text, "event", scratch, "ten")["frames/velocity"][:]
+    k = (v[:, :10] ** 2).sum(axis=(1, 2)) / 2
+    sys.path.insert(0, str(COURSE))
+    import lab_check
+    se = {b: lab_check.reference_block_error(k, b) for b in (1, 50, 100)}
+    failures = []
+    if abs(float(said.group(1)) - np.corrcoef(k[:-1], k[1:])[0, 1]) > 0.01:
+        failures.append(f"4-validating-a-solver.md: lag-1 correlation {said.group(1)} on the page, "
+                        f"{np.corrcoef(k[:-1], k[1:])[0, 1]:.2f} in the run")
+    if not (abs(se[50] / se[100] - 1) < 0.1 and se[100] > 2 * se[1]):
+        failures.append(f"exercise 4.4's series has no plateau: block standard errors {se}")
+    return failures
+
+
 def fact_wording():
     """Statements that are false as worded, found by earlier reviews."""
     wrong = {"1-one-collision.md": ["The second law fixes J"],  # the contact law (restitution) fixes J
@@ -469,8 +493,9 @@ def check_facts(collide):
         failures = (fact_virial(collide, scratch) + fact_galperin(collide, scratch)
                     + fact_cradle(collide, scratch) + fact_slope() + fact_reunion(collide, scratch)
                     + fact_root_rounding() + fact_step_boundary(collide, scratch)
-                    + fact_multi_contact(collide, scratch) + fact_pairing(collide, scratch) + fact_wording())
-    print("10 statements of the text measured")
+                    + fact_multi_contact(collide, scratch) + fact_pairing(collide, scratch)
+                    + fact_correlated_series(collide, scratch) + fact_wording())
+    print("11 statements of the text measured")
     return failures
 
 
