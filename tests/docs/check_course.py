@@ -477,6 +477,26 @@ def fact_correlated_series(collide, scratch):
     return failures
 
 
+def fact_lyapunov():
+    """Chapter 2.5: the Lyapunov exponent the page states, against one seed of the same
+    tangent-dynamics measurement (docs/tools/lyapunov.py): within three of its per-seed spreads."""
+    page = re.sub(r"\s+", " ", (COURSE / "2-many-disks-exactly.md").read_text())
+    said = re.search(r"--disks (\d+) --seeds (\d+) --time ([\d.]+) --transient ([\d.]+) N = \d+, rho = ([\d.]+), "
+                     r"kT = 1: lambda = ([\d.]+) \+- ([\d.]+) per time unit", page)
+    if not said:
+        return ["2-many-disks-exactly.md: section 2.5 states no Lyapunov exponent measured by tangent dynamics "
+                "with its error (docs/tools/lyapunov.py)"]
+    sys.path.insert(0, str(ROOT / "docs" / "tools"))
+    import lyapunov
+    disks, seeds, duration, transient, rho, lam, se = (float(g) for g in said.groups())
+    one, _ = lyapunov.exponent(int(disks), rho, duration, transient, seed=1)
+    spread = se * np.sqrt(seeds)
+    if abs(one - lam) > 3 * spread:
+        return [f"2-many-disks-exactly.md: lambda = {lam} +- {se} on the page; seed 1 of the same measurement "
+                f"gives {one:.3f}, more than three per-seed spreads ({spread:.3f}) away"]
+    return []
+
+
 def fact_wording():
     """Statements that are false as worded, found by earlier reviews."""
     wrong = {"1-one-collision.md": ["The second law fixes J"],  # the contact law (restitution) fixes J
@@ -494,8 +514,8 @@ def check_facts(collide):
                     + fact_cradle(collide, scratch) + fact_slope() + fact_reunion(collide, scratch)
                     + fact_root_rounding() + fact_step_boundary(collide, scratch)
                     + fact_multi_contact(collide, scratch) + fact_pairing(collide, scratch)
-                    + fact_correlated_series(collide, scratch) + fact_wording())
-    print("11 statements of the text measured")
+                    + fact_correlated_series(collide, scratch) + fact_lyapunov() + fact_wording())
+    print("12 statements of the text measured")
     return failures
 
 
