@@ -4,7 +4,8 @@ Each exercise asks for one function in a file of the student's own. Its checker 
 file, calls the function on cases whose answer it knows independently (an exact computation,
 a published reference of data/references, or a brute-force enumeration), and prints either
 "EXERCISE: right" or "EXERCISE: wrong: " with the first case that fails. The course's worked
-solutions pass and a typical wrong answer of each is rejected (tests/docs/test_lab_check.py).
+solutions pass, typical wrong answers are rejected with a hint that names their slip, and
+other right answers (an exact root, an exact count) pass (tests/docs/check_course.py lab).
 """
 import decimal
 import importlib.util

@@ -9,10 +9,15 @@
                                         every axis of every figure is labelled with a unit, >= 150 dpi
     check_course.py lab                 every coding exercise's worked solution passes
                                         `lab.py check` and a typical wrong answer
-                                        (tests/docs/wrong_answers/) is rejected
+                                        (tests/docs/wrong_answers/NAME[--WHAT].py) is rejected,
+                                        naming its slip (its "# hint:" line); other right answers
+                                        (tests/docs/right_answers/) are accepted
     check_course.py facts COLLIDE       statements of the text measured against runs: the collision
-                                        virial, Galperin's circle, the Newton's-cradle lag, and what
-                                        a slope in log-log gives
+                                        virial, Galperin's circle, the Newton's-cradle lag, what
+                                        a slope in log-log gives, the pair's second meeting, the
+                                        stable root's errors, step on a step boundary, multi-contact
+                                        steps, paired differences, a correlated series, the
+                                        Lyapunov exponent, and wording found false
 
 An exercise is a "### Exercise" section of a chapter (docs/course/[1-9]-*.md): its first ```sh
 block is the command a student runs, with `collide` meaning the built program, in a scratch
