@@ -451,7 +451,7 @@ def energy_crowd(lab, out):
         label = backend if backend == "event" else f"{backend}, dt = {dt}"
         ax.plot(t, (k - k[0]) / k[0], label=label)
     finish(fig, ax, out, "ch3_energy_crowd", TIME, r"$(K - K_0)/K_0$ (dimensionless)",
-           "box_gas_1000 at e = 1: energy lost in multi-contact steps")
+           "box_gas_1000 at e = 1: energy lost or gained in multi-contact steps")
 
 
 # --- Chapter 4: validating a solver -------------------------------------------------------
