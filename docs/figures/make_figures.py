@@ -393,12 +393,13 @@ def phase_mean_error(lab, name, striker, backend, dt, phases=6):
 
     A stepped rule finds a collision at the first step that ends in overlap, so its error
     depends on where the exact collision time falls inside a step. As the validation suite
-    does (validation/compare/phase_shift.h), replicate k starts the striker frac(k phi) dt further along
-    its path (phi the golden ratio), and the error is averaged over the replicates.
+    does (validation/compare/phase_shift.h), replicate k = 1, 2, ... starts the striker frac(k phi) dt
+    further along its path (phi the golden ratio; none at phase 0, where a round collision time
+    sits on a step boundary), and the error is averaged over the replicates.
     """
     errors, seconds = [], []
     x0, vx = striker
-    for k in range(phases):
+    for k in range(1, phases + 1):
         shift = (k * GOLDEN) % 1.0 * dt
         text = f"x = {x0 + vx * shift!r}, y"
         scene = lab.scene(name, dt=f"{dt:g}")
@@ -450,7 +451,7 @@ def energy_crowd(lab, out):
         label = backend if backend == "event" else f"{backend}, dt = {dt}"
         ax.plot(t, (k - k[0]) / k[0], label=label)
     finish(fig, ax, out, "ch3_energy_crowd", TIME, r"$(K - K_0)/K_0$ (dimensionless)",
-           "box_gas_1000 at e = 1: energy lost in multi-contact steps")
+           "box_gas_1000 at e = 1: energy lost or gained in multi-contact steps")
 
 
 # --- Chapter 4: validating a solver -------------------------------------------------------

@@ -9,10 +9,15 @@
                                         every axis of every figure is labelled with a unit, >= 150 dpi
     check_course.py lab                 every coding exercise's worked solution passes
                                         `lab.py check` and a typical wrong answer
-                                        (tests/docs/wrong_answers/) is rejected
+                                        (tests/docs/wrong_answers/NAME[--WHAT].py) is rejected,
+                                        naming its slip (its "# hint:" line); other right answers
+                                        (tests/docs/right_answers/) are accepted
     check_course.py facts COLLIDE       statements of the text measured against runs: the collision
-                                        virial, Galperin's circle, the Newton's-cradle lag, and what
-                                        a slope in log-log gives
+                                        virial, Galperin's circle, the Newton's-cradle lag, what
+                                        a slope in log-log gives, the pair's second meeting, the
+                                        stable root's errors, step on a step boundary, multi-contact
+                                        steps, paired differences, a correlated series, the
+                                        Lyapunov exponent, and wording found false
 
 An exercise is a "### Exercise" section of a chapter (docs/course/[1-9]-*.md): its first ```sh
 block is the command a student runs, with `collide` meaning the built program, in a scratch
@@ -317,12 +322,205 @@ def fact_slope():
     return failures
 
 
+def fact_reunion(collide, scratch):
+    """Chapter 2: when the periodic head_on_equal pair meets a second time, from a run to t = 6
+    (frames every 0.05; each contact time from the centre distance before it, closing at speed 2)."""
+    page = (COURSE / "2-many-disks-exactly.md").read_text()
+    said = re.search(r"meet again\s+only at t = ([\d.]+)", page)
+    if not said:
+        return ["2-many-disks-exactly.md: the worked virial example says not when the pair meets again"]
+    text = (ROOT / "data/scenes/head_on_equal.toml").read_text().replace('"reflect"', '"periodic"')
+    text = set_key(set_key(text, "duration", "6.0"), "output_interval", "0.05")
+    f = run(collide, text, "event", scratch, "reunion")
+    t, x, v = f["frames/time"][:], f["frames/position"][:, :, 0], f["frames/velocity"][:, :, 0]
+    changed = np.flatnonzero(v[1:, 0] != v[:-1, 0])
+    gap = np.abs(x[:, 0] - x[:, 1])
+    gap = np.minimum(gap, 10.0 - gap)  # the nearer image across the periodic box of width 10
+    meetings = [t[k] + (gap[k] - 1.0) / 2.0 for k in changed]
+    if len(meetings) < 2:
+        return [f"periodic head_on_equal: {len(meetings)} collision(s) up to t = 6, two expected"]
+    if not close(float(said.group(1)), meetings[1], 1e-6):
+        return [f"2-many-disks-exactly.md: the pair meets again at t = {said.group(1)} says the page, "
+                f"at t = {meetings[1]:.6g} says the run"]
+    return []
+
+
+def fact_root_rounding():
+    """Chapter 2, the stable root: its numbers on the checker's second pair (a gap of 1e-10), for the
+    stable and the textbook forms, against the exact root and the root of the rounded coefficients."""
+    sys.path.insert(0, str(COURSE))
+    import lab_check
+    page = re.sub(r"\s+", " ", (COURSE / "2-many-disks-exactly.md").read_text())
+    case = lab_check.root_cases()[1]
+    exact, rounded = lab_check.exact_contact_time(*case), lab_check.rounded_coefficient_root(*case)
+    dx, dy, ux, uy, sigma = case
+    b, c, uu = dx * ux + dy * uy, dx * dx + dy * dy - sigma * sigma, ux * ux + uy * uy
+    textbook = (-b - np.sqrt(b * b - uu * c)) / uu
+    stable = 0.0
+    for q in lab_check.root_cases():
+        root = lab_check.rounded_coefficient_root(*q)
+        if root is not None:
+            qb, qc, qu = q[0] * q[2] + q[1] * q[3], q[0] ** 2 + q[1] ** 2 - q[4] ** 2, q[2] ** 2 + q[3] ** 2
+            stable = max(stable, abs(qc / (-qb + np.sqrt(qb * qb - qu * qc)) - root) / root)
+    wanted = {"stable form's largest error": (r"within ([\d.]+e−\d+) of the root of the rounded coefficients",
+                                              max(stable, 1.1e-16)),
+              "c's rounding": (r"\(([\d.]+e−\d+) on the second pair", abs(rounded - exact) / exact),
+              "textbook from the rounded-coefficient root": (r"textbook form is off by ([\d.]+e−\d+) from that root",
+                                                             abs(textbook - rounded) / rounded),
+              "textbook from the exact root": (r"and ([\d.]+e−\d+) from the exact one", abs(textbook - exact) / exact)}
+    failures = []
+    for what, (pattern, measured) in wanted.items():
+        said = re.search(pattern, page)
+        if not said:
+            failures.append(f"2-many-disks-exactly.md: the stable root's section states no {what}")
+        elif not 0.5 <= float(said.group(1).replace("−", "-")) / measured <= 1.5:
+            failures.append(f"2-many-disks-exactly.md: {what} is {said.group(1)} on the page, {measured:.1e} computed")
+    return failures
+
+
+def fact_step_boundary(collide, scratch):
+    """Chapter 3, exercise 3.3: at which dt `step` finds head_on_equal's collision (t = 1.5, on a
+    step boundary) on time and at which a full step late, read from runs against `event`."""
+    page = re.sub(r"\s+", " ", (COURSE / "3-many-disks-stepped.md").read_text())
+    said = re.search(r"`step` is a full step late at dt = (.*?) and on time at dt = (.*?)\. [A-Z]", page)
+    if not said:
+        return ["3-many-disks-stepped.md: exercise 3.3 does not say at which dt `step` is a full step late "
+                "and at which on time"]
+    text = (SCENES / "head_on_equal.toml").read_text()
+    exact = run(collide, text, "event", scratch, "boundary_event")["frames/position"][-1]
+    failures = []
+    for verdict, listed in zip(("late", "on time"), said.groups()):
+        for dt in re.findall(r"[\d.]+e-\d+", listed):
+            error = np.max(np.linalg.norm(run(collide, set_key(text, "dt", dt), "step", scratch, f"b{dt}")
+                                          ["frames/position"][-1] - exact, axis=1))
+            measured = "late" if abs(error - float(dt)) < 1e-3 * float(dt) else "on time" if error < 1e-9 else "?"
+            if measured != verdict:
+                failures.append(f"3-many-disks-stepped.md: at dt = {dt} the page says `step` is {verdict}, the run's "
+                                f"error is {error:.3e} ({measured})")
+    return failures
+
+
+def fact_multi_contact(collide, scratch):
+    """Chapter 3, exercise 3.5: how far the counted multi-contact disk-steps lie from the
+    independent-collision guess, in Poisson standard deviations, from a run."""
+    page = re.sub(r"\s+", " ", (COURSE / "3-many-disks-stepped.md").read_text())
+    said = re.search(r"([\d.]+) Poisson standard deviations \(√([\d.]+)", page)
+    if not said:
+        return ["3-many-disks-stepped.md: exercise 3.5 does not say how many standard deviations the count "
+                "lies from the independent guess"]
+    f = run(collide, (SCENES / "box_gas_1000.toml").read_text(), "step", scratch, "multi", frames=False)
+    counted = float(f["stats/counters"].attrs["multi_contact_disks"])
+    nu = 2.6002  # exercise 2.2's measured collision rate, checked there
+    guess = nu ** 2 * 1e-3 * 10 * 1000 / 2
+    z = (guess - counted) / np.sqrt(guess)
+    failures = []
+    if abs(float(said.group(1)) - z) > 0.05 or not close(float(said.group(2)), guess, 0.01):
+        failures.append(f"3-many-disks-stepped.md: the page puts the count {said.group(1)} standard deviations "
+                        f"(sqrt {said.group(2)}) below the guess; the run's {counted:g} is {z:.2f} below {guess:.1f}")
+    if "include this very scene" not in page:
+        failures.append("3-many-disks-stepped.md: exercise 3.5 compares with a fit without saying the fit "
+                        "includes this scene")
+    return failures
+
+
+GOLDEN = (np.sqrt(5) - 1) / 2
+
+
+def phase_errors(collide, scratch, backend, dt):
+    """The suite's trajectory error of `backend` on head_on_equal at each of six replicate phases:
+    replicate k starts frac(k phi) dt along the free flight (validation/compare/phase_shift.h);
+    the largest position error over the output times, relative to r_min = 0.5."""
+    errors = []
+    for k in range(1, 7):
+        shift = (k * GOLDEN) % 1.0 * dt
+        text = set_key((SCENES / "head_on_equal.toml").read_text(), "dt", repr(dt))
+        text = text.replace("x = 3.0,", f"x = {3.0 + shift!r},").replace("x = 7.0,", f"x = {7.0 - shift!r},")
+        exact = run(collide, text, "event", scratch, f"phase{k}_event")["frames/position"][:]
+        stepped = run(collide, text, backend, scratch, f"phase{k}_{backend}")["frames/position"][:]
+        errors.append(np.max(np.linalg.norm(stepped - exact, axis=2)) / 0.5)
+    return np.array(errors)
+
+
+def fact_pairing(collide, scratch):
+    """Chapter 4: the correlation r of `step`'s and `cpu`'s per-phase errors that the page states
+    (it decides whether pairing narrows or widens the error of their difference), from runs."""
+    page = re.sub(r"\s+", " ", (COURSE / "4-validating-a-solver.md").read_text())
+    said = set(re.findall(r"r = (−?[\d.]+) at dt = ([\d.]+e-\d+)", page))
+    if not said:
+        return ["4-validating-a-solver.md: no measured correlation (\"r = ... at dt = ...\") behind the "
+                "advice on paired differences"]
+    failures = []
+    for r, dt in sorted(said):
+        measured = np.corrcoef(phase_errors(collide, scratch, "step", float(dt)),
+                               phase_errors(collide, scratch, "cpu", float(dt)))[0, 1]
+        if abs(float(r.replace("−", "-")) - measured) > 0.02:
+            failures.append(f"4-validating-a-solver.md: r = {r} at dt = {dt} on the page, {measured:.3f} in the runs")
+    return failures
+
+
+def fact_correlated_series(collide, scratch):
+    """Chapter 4: the lag-1 correlation of the stationary series the block-averaging rule cites
+    (exercise 4.4's kinetic energy of ten disks), and that the series levels off (block 50 within
+    10 % of block 100 and above twice block 1) where the stepped gas's random walk did not."""
+    page = re.sub(r"\s+", " ", (COURSE / "4-validating-a-solver.md").read_text())
+    said = re.search(r"lag-1 correlation ([\d.]+) in exercise 4\.4", page)
+    if not said:
+        return ["4-validating-a-solver.md: the block-averaging rule cites no measured correlated series"]
+    text = (SCENES / "periodic_gas.toml").read_text().replace("count = 1000", "count = 200")
+    text = set_key(text.replace("box = [0.0, 0.0, 60.0, 60.0]", "box = [0.0, 0.0, 26.8, 26.8]"), "duration", "200.0")
+    v = run(collide, text, "event", scratch, "ten")["frames/velocity"][:]
+    k = (v[:, :10] ** 2).sum(axis=(1, 2)) / 2
+    sys.path.insert(0, str(COURSE))
+    import lab_check
+    se = {b: lab_check.reference_block_error(k, b) for b in (1, 50, 100)}
+    failures = []
+    if abs(float(said.group(1)) - np.corrcoef(k[:-1], k[1:])[0, 1]) > 0.01:
+        failures.append(f"4-validating-a-solver.md: lag-1 correlation {said.group(1)} on the page, "
+                        f"{np.corrcoef(k[:-1], k[1:])[0, 1]:.2f} in the run")
+    if not (abs(se[50] / se[100] - 1) < 0.1 and se[100] > 2 * se[1]):
+        failures.append(f"exercise 4.4's series has no plateau: block standard errors {se}")
+    return failures
+
+
+def fact_lyapunov():
+    """Chapter 2.5: the Lyapunov exponent the page states, against one seed of the same
+    tangent-dynamics measurement (docs/tools/lyapunov.py): within three of its per-seed spreads."""
+    page = re.sub(r"\s+", " ", (COURSE / "2-many-disks-exactly.md").read_text())
+    said = re.search(r"--disks (\d+) --seeds (\d+) --time ([\d.]+) --transient ([\d.]+) N = \d+, rho = ([\d.]+), "
+                     r"kT = 1: lambda = ([\d.]+) \+- ([\d.]+) per time unit", page)
+    if not said:
+        return ["2-many-disks-exactly.md: section 2.5 states no Lyapunov exponent measured by tangent dynamics "
+                "with its error (docs/tools/lyapunov.py)"]
+    sys.path.insert(0, str(ROOT / "docs" / "tools"))
+    import lyapunov
+    disks, seeds, duration, transient, rho, lam, se = (float(g) for g in said.groups())
+    one, _ = lyapunov.exponent(int(disks), rho, duration, transient, seed=1)
+    spread = se * np.sqrt(seeds)
+    if abs(one - lam) > 3 * spread:
+        return [f"2-many-disks-exactly.md: lambda = {lam} +- {se} on the page; seed 1 of the same measurement "
+                f"gives {one:.3f}, more than three per-seed spreads ({spread:.3f}) away"]
+    return []
+
+
+def fact_wording():
+    """Statements that are false as worded, found by earlier reviews."""
+    wrong = {"1-one-collision.md": ["The second law fixes J"],  # the contact law (restitution) fixes J
+             # the golden-ratio phases are fixed, not a random sample: their spread does not shrink
+             "4-validating-a-solver.md": ["shrink the standard errors as 1/√n"]}
+    return [f"{name}: \"{phrase}\" is false as worded"
+            for name, phrases in wrong.items() for phrase in phrases
+            if phrase in re.sub(r"\s+", " ", (COURSE / name).read_text())]
+
+
 def check_facts(collide):
     with tempfile.TemporaryDirectory(prefix="collide-facts-") as scratch:
         scratch = pathlib.Path(scratch)
         failures = (fact_virial(collide, scratch) + fact_galperin(collide, scratch)
-                    + fact_cradle(collide, scratch) + fact_slope())
-    print("4 statements of the text measured")
+                    + fact_cradle(collide, scratch) + fact_slope() + fact_reunion(collide, scratch)
+                    + fact_root_rounding() + fact_step_boundary(collide, scratch)
+                    + fact_multi_contact(collide, scratch) + fact_pairing(collide, scratch)
+                    + fact_correlated_series(collide, scratch) + fact_lyapunov() + fact_wording())
+    print("12 statements of the text measured")
     return failures
 
 
@@ -343,15 +541,31 @@ def check_lab():
             done = subprocess.run(["/usr/bin/python3", str(lab), "check", name, str(right)], capture_output=True, text=True)
         if done.returncode != 0 or f"{name}: right" not in done.stdout:
             failures.append(f"{page.name}: the worked solution of '{name}' is not accepted:\n{done.stdout}{done.stderr}")
-        wrong = wrong_dir / f"{name}.py"
-        if not wrong.exists():
+        if not (wrong_dir / f"{name}.py").exists():
             failures.append(f"'{name}' has no wrong answer in {wrong_dir} to prove its checker rejects one")
-            continue
-        done = subprocess.run(["/usr/bin/python3", str(lab), "check", name, str(wrong)], capture_output=True, text=True)
-        if done.returncode != 1 or f"{name}: wrong" not in done.stdout:
-            failures.append(f"the checker of '{name}' accepts the wrong answer {wrong.name}:\n{done.stdout}{done.stderr}")
-        print(f"{name}: solution accepted, wrong answer rejected ({done.stdout.strip()[:90]})")
+        for wrong in answers(wrong_dir, name):
+            failures += judged(lab, name, wrong, "wrong", 1)
+        for right in answers(ROOT / "tests/docs/right_answers", name):
+            failures += judged(lab, name, right, "right", 0)
+        print(f"{name}: solution and {len(answers(ROOT / 'tests/docs/right_answers', name))} other right answers "
+              f"accepted, {len(answers(wrong_dir, name))} wrong answers rejected")
     return failures
+
+
+def answers(folder, name):
+    """NAME.py and NAME--WHAT.py: the answers to exercise NAME in folder."""
+    return sorted(p for p in folder.glob(f"{name}*.py") if p.stem == name or p.stem.startswith(f"{name}--"))
+
+
+def judged(lab, name, answer, verdict, status):
+    """The checker's verdict on answer must be `verdict`, and its message must hold the answer's
+    `# hint: TEXT` line if it has one (a rejection that names the wrong slip misleads)."""
+    done = subprocess.run(["/usr/bin/python3", str(lab), "check", name, str(answer)], capture_output=True, text=True)
+    if done.returncode != status or f"{name}: {verdict}" not in done.stdout:
+        return [f"the checker of '{name}' does not find {answer.name} {verdict}:\n{done.stdout}{done.stderr}"]
+    hints = re.findall(r"(?m)^# hint: (.*)$", answer.read_text())
+    return [f"the checker of '{name}' rejects {answer.name} without naming its slip ({hint!r}):\n{done.stdout}"
+            for hint in hints if hint not in done.stdout]
 
 
 def main():

@@ -6,7 +6,7 @@ namespace collide::validation {
 
 double phase_shift(std::uint64_t seed, double dt) {
     const double phi = 0.5 * (std::sqrt(5.0) - 1.0);
-    const double k = double(seed > 0 ? seed - 1 : 0);
+    const double k = double(seed);
     return (k * phi - std::floor(k * phi)) * dt;
 }
 

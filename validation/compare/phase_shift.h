@@ -7,10 +7,12 @@
 // boundary: the error drops to rounding for that dt and a fitted convergence order is
 // meaningless. Replicates therefore start the same scene at different phases: replicate k
 // of a case with step dt advances the initial state by free flight for
-//     delta_k = frac((k - 1) * phi) * dt,     phi = (sqrt 5 - 1)/2 (golden ratio),
-// so its collision phase is shifted by frac((k - 1) phi), the most evenly spread sequence of
+//     delta_k = frac(k * phi) * dt,     phi = (sqrt 5 - 1)/2 (golden ratio),
+// so its collision phase is shifted by frac(k phi), the most evenly spread sequence of
 // fractions for any number of replicates (Weyl's equidistribution with the golden ratio).
-// Replicate 1 is the scene unchanged. The reference backend runs once per (seed, dt) from the
+// Every replicate is shifted, the first included (by 0.618 dt): a shift of 0 would keep the
+// scene's round collision time, on a step boundary for some dt, the very case the phases are
+// there to avoid. frac(k phi) is never 0 for k >= 1 since phi is irrational. The reference backend runs once per (seed, dt) from the
 // same shifted state, so every comparison is exact-vs-rule on the same initial condition, and
 // the error of each sweep point is a mean over phases with its standard error.
 #pragma once
