@@ -81,6 +81,18 @@ double relative_change(double initial, double final_value) {
     return scale > 0 ? (final_value - initial) / scale : final_value - initial;
 }
 
+// beta P d^2 with its batch-means error, where the backend recorded it (the counters of
+// docs/validation.md, "Error bars": event, event-plain, ecmc, metropolis).
+void print_pressure(const SolverStats& stats) {
+    const auto& c = stats.counters;
+    const auto value = c.find("beta_pressure"), error = c.find("beta_pressure_error");
+    if (value == c.end() || error == c.end()) return;
+    auto counter = [&c](const char* name) { const auto it = c.find(name); return it == c.end() ? 0.0 : it->second; };
+    std::printf("pressure  beta P d^2 = %.9g +- %.3g (correlation time %.4g, equilibration cut %.4g, %g batches)\n",
+                value->second, error->second, counter("beta_pressure_correlation_time"),
+                counter("beta_pressure_equilibration"), counter("beta_pressure_batches"));
+}
+
 void print_summary(const Scene& scene, const std::string& backend, const RunResult& r) {
     const Metrics& a = r.series.front();
     const Metrics& b = r.series.back();
@@ -90,6 +102,14 @@ void print_summary(const Scene& scene, const std::string& backend, const RunResu
     std::printf("backend   %s, %lld steps, %lld contacts, %.3f s wall time\n", backend.c_str(),
                 static_cast<long long>(r.stats.steps), static_cast<long long>(r.stats.contacts),
                 r.wall_seconds);
+    print_pressure(r.stats);
+    if (const BackendInfo* info = backend_if_built(backend); info && info->sampler) {
+        // No velocities: the energy and momentum lines would read zeros.
+        std::printf("dynamics  none (%s)\n", info->sampler_left_out().c_str());
+        std::printf("overlap   final: %lld pairs, max depth %.3e, mean depth %.3e (relative to r_i+r_j)\n",
+                    static_cast<long long>(b.overlapping_pairs), b.max_overlap, b.mean_overlap);
+        return;
+    }
     std::printf("energy    kinetic %.15g -> %.15g (relative change %.3e)\n", a.kinetic_energy,
                 b.kinetic_energy, relative_change(a.kinetic_energy, b.kinetic_energy));
     if (scene.has_gravity())
