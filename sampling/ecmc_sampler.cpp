@@ -43,7 +43,7 @@ void EcmcSampler::load(const Scene& scene, const ParticleState<double>& initial)
     pos_[1] = initial.y;
     const double origin[2] = {scene.world.xmin, scene.world.ymin}, length[2] = {scene.world.width(), scene.world.height()};
     for (int a = 0; a < 2; ++a)
-        for (double& p : pos_[a]) p = origin[a] + std::fmod(std::fmod(p - origin[a], length[a]) + length[a], length[a]);
+        for (double& p : pos_[a]) p = wrap_into_box(p, origin[a], length[a]);
     try {
         cells_.configure(origin, length, sigma_);
     } catch (const std::runtime_error& e) {

@@ -62,11 +62,7 @@ void MetropolisSampler::load(const Scene& scene, const ParticleState<double>& in
 }
 
 double MetropolisSampler::wrap(int axis, double p) const {
-    if (!periodic_) return p;
-    const double o = cells_.origin(axis), l = cells_.length(axis);
-    p = o + std::fmod(p - o, l);
-    if (p < o) p += l;
-    return p >= o + l ? o : p;
+    return periodic_ ? wrap_into_box(p, cells_.origin(axis), cells_.length(axis)) : p;
 }
 
 void MetropolisSampler::advance_to(double t) {

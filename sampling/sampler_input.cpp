@@ -66,8 +66,8 @@ void check_sampler_start(const std::string& who, const Scene& scene, const Parti
         // The overlap search bins positions into the box's cells: wrap them in first.
         ParticleState<double> wrapped = start;
         for (std::size_t i = 0; i < start.size(); ++i) {
-            wrapped.x[i] = scene.world.xmin + std::fmod(std::fmod(start.x[i] - scene.world.xmin, scene.world.width()) + scene.world.width(), scene.world.width());
-            wrapped.y[i] = scene.world.ymin + std::fmod(std::fmod(start.y[i] - scene.world.ymin, scene.world.height()) + scene.world.height(), scene.world.height());
+            wrapped.x[i] = wrap_into_box(start.x[i], scene.world.xmin, scene.world.width());
+            wrapped.y[i] = wrap_into_box(start.y[i], scene.world.ymin, scene.world.height());
         }
         reject_overlapping_disks(who, scene, wrapped);
     } else {

@@ -4,6 +4,7 @@
 // refused with the reason, as other backends refuse what they do not model.
 #pragma once
 
+#include <cmath>
 #include <optional>
 #include <string>
 
@@ -25,6 +26,15 @@ std::optional<std::string> outside_sampler_model(const Scene& scene, const Sampl
 // std::runtime_error whose message starts with `who`.
 void check_sampler_start(const std::string& who, const Scene& scene, const ParticleState<double>& start,
                          const SamplerLimits& limits);
+
+// p moved into [origin, origin + length) by whole box lengths; a p already inside is returned
+// unchanged (to the bit: a start configuration is sampled as given).
+inline double wrap_into_box(double p, double origin, double length) {
+    if (p >= origin && p < origin + length) return p;
+    double q = origin + std::fmod(p - origin, length);
+    if (q < origin) q += length;
+    return q >= origin + length ? origin : q;
+}
 
 // The number of sampler steps (chains, sweeps) done at output time t of a run of `total`:
 // round(total t / duration), so the output times divide the run as they divide a dynamics run.
