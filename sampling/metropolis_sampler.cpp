@@ -56,7 +56,7 @@ void MetropolisSampler::load(const Scene& scene, const ParticleState<double>& in
     }
     rng_.reset(gsl_rng_alloc(gsl_rng_mt19937));
     gsl_rng_set(rng_.get(), (unsigned long)(scene.seed ^ 0x4d455452u));  // a stream of its own ("METR")
-    sweeps_done_ = trials_ = accepted_ = 0;
+    sweeps_done_ = trials_ = accepted_ = tuning_accepted_ = tuning_trials_ = 0;
     now_ = 0;
     pressure_series_.clear();
 }
@@ -76,7 +76,7 @@ void MetropolisSampler::sweep() {
     std::int64_t accepted = 0;
     for (std::size_t k = 0; k < n; ++k) accepted += try_move(std::uint32_t(gsl_rng_uniform_int(rng_.get(), n)));
     if (sweeps_done_++ < tuning_sweeps_) {
-        tune_step(accepted);
+        tune_step(accepted, std::int64_t(n));
         return;
     }
     trials_ += std::int64_t(n);
@@ -84,10 +84,15 @@ void MetropolisSampler::sweep() {
     record_pressure();
 }
 
-// Scales delta by the ratio of the sweep's acceptance to the target (within a factor 2 per
-// sweep), and keeps it below half the box's shorter side.
-void MetropolisSampler::tune_step(std::int64_t accepted) {
-    const double acceptance = double(accepted) / double(pos_[0].size());
+// Scales delta by the ratio of the acceptance to the target (within a factor 2), once per block
+// of at least tuning_block_trials trials (a sweep of 4 disks is too few to measure it), and keeps
+// delta below half the box's shorter side.
+void MetropolisSampler::tune_step(std::int64_t accepted, std::int64_t trials) {
+    tuning_accepted_ += accepted;
+    tuning_trials_ += trials;
+    if (tuning_trials_ < tuning_block_trials) return;
+    const double acceptance = double(tuning_accepted_) / double(tuning_trials_);
+    tuning_accepted_ = tuning_trials_ = 0;
     delta_ *= std::clamp(acceptance / target_acceptance_, 0.5, 2.0);
     delta_ = std::min(delta_, 0.5 * std::min(cells_.length(0), cells_.length(1)));
 }

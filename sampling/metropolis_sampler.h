@@ -5,7 +5,7 @@
 // [-delta, delta]; the move is rejected if the disk would overlap another one or cross a wall,
 // and accepted otherwise (the uniform measure: every legal configuration equally likely, so the
 // Metropolis ratio is 1 or 0). A sweep is N trial moves. During the first tenth of the run
-// (the tuning sweeps) delta is adjusted after each sweep towards the target acceptance
+// (the tuning sweeps) delta is adjusted every 400 trials towards the target acceptance
 // (default 0.5); then it is fixed, so the sampled part obeys detailed balance.
 //
 // Pressure, after each sampled sweep, from the density of separations at contact, extrapolated
@@ -36,6 +36,7 @@ namespace collide {
 inline constexpr double default_metropolis_acceptance = 0.5;
 inline constexpr double contact_window_diameters = 0.05;  // the fit window, in diameters
 inline constexpr int contact_bins = 10;
+inline constexpr std::int64_t tuning_block_trials = 400;  // trials per adjustment of delta
 
 class MetropolisSampler : public Solver {
 public:
@@ -75,7 +76,7 @@ private:
     void for_each_neighbour(std::uint32_t i, F&& f) const {
         for_each_near(pos_[0][i], pos_[1][i], [&](std::uint32_t j, double r2) { if (j != i) f(j, r2); });
     }
-    void tune_step(std::int64_t accepted);
+    void tune_step(std::int64_t accepted, std::int64_t trials);
     void record_pressure();
     double wrap(int axis, double p) const;
 
@@ -94,6 +95,7 @@ private:
     double delta_ = 0, target_acceptance_ = default_metropolis_acceptance;
     std::int64_t sweeps_total_ = 0, sweeps_done_ = 0, tuning_sweeps_ = 0;
     std::int64_t trials_ = 0, accepted_ = 0;  // in the sampled (tuned) part
+    std::int64_t tuning_trials_ = 0, tuning_accepted_ = 0;  // in the current tuning block
     double now_ = 0;
     std::vector<double> pressure_series_;  // beta P d^2, one per sampled sweep
 };
