@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/numerics/target_time.h"
 #include "core/scene/option_reader.h"
 #include "sampling/sampler_input.h"
 #include "sampling/sampler_pressure.h"
@@ -74,6 +75,7 @@ void EcmcSampler::place_in_cells() {
 // ---------------------------------------------------------------------------------------
 
 void EcmcSampler::advance_to(double t) {
+    check_target_time("ecmc", t, now_, scene_.run.dt, false);  // NaN, infinity, the past: refused
     const std::int64_t target = sampler_steps_at(t, scene_, chains_total_);
     while (chains_done_ < target) {
         if (chains_done_ % 2 == 0) run_chain<0>();

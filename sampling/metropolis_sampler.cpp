@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/numerics/target_time.h"
 #include "core/scene/option_reader.h"
 #include "sampling/sampler_input.h"
 #include "sampling/sampler_pressure.h"
@@ -66,6 +67,7 @@ double MetropolisSampler::wrap(int axis, double p) const {
 }
 
 void MetropolisSampler::advance_to(double t) {
+    check_target_time("metropolis", t, now_, scene_.run.dt, false);  // NaN, infinity, the past: refused
     const std::int64_t target = sampler_steps_at(t, scene_, sweeps_total_);
     while (sweeps_done_ < target) sweep();
     now_ = t;
