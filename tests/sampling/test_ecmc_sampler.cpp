@@ -109,6 +109,12 @@ TEST(EcmcSampler, RunsTheScenesChainsOrOnesFromTheDuration) {
     EXPECT_EQ(r.stats.steps, 10);
     const Scene loaded = parse_scene("description = \"d\"\n[world]\nbox = [0, 0, 10, 10]\nboundary = \"periodic\"\n[run]\nchains = 12\n[[particles]]\nkind = \"list\"\ndisks = [{ x = 1, y = 1, vx = 0, vy = 0, radius = 0.5, mass = 1 }]\n", "chains.toml");
     EXPECT_EQ(loaded.run.chains, 12);
+    try {
+        parse_scene("description = \"d\"\n[world]\nbox = [0, 0, 10, 10]\n[run]\nchains = -3\n", "bad.toml");
+        ADD_FAILURE() << "a negative chain count was read";
+    } catch (const std::exception& e) {
+        EXPECT_NE(std::string(e.what()).find("chains"), std::string::npos) << e.what();
+    }
 }
 
 }  // namespace
