@@ -7,6 +7,8 @@
 #include "reference/event/event_solver.h"
 #include "reference/plain_event_solver.h"
 #include "reference/step_solver.h"
+#include "sampling/ecmc_sampler.h"
+#include "sampling/metropolis_sampler.h"
 
 #include <stdexcept>
 
@@ -51,6 +53,18 @@ const std::vector<BackendInfo>& all_backends() {
          .sweeps_iterations = true,
          .limits = {{"momentum_drift", 1e-4}, {"energy_drift", 5e-2}, {"max_overlap", 0.25}, {"mean_overlap", 0.05},
                     {"overlapping_pairs_per_disk", 1.0}, {"wall_penetration", 0.25}, {"trajectory_error", 1.0}}},
+        // Samplers: configurations from the equilibrium measure, no time, no velocities
+        // (docs/monte-carlo.md). Not in "all": the default suite keeps its time.
+        {.name = "ecmc", .precision = "double",
+         .description = "straight event-chain Monte Carlo (Bernard, Krauth, Wilson 2009), periodic, equal disks: a sampler",
+         .supports = &EcmcSampler::supports,
+         .create = [](const BackendOptions& o) -> std::unique_ptr<Solver> { return std::make_unique<EcmcSampler>(o); },
+         .in_all = false, .sampler = true},
+        {.name = "metropolis", .precision = "double",
+         .description = "plain local Monte Carlo (one disk, uniform trial step, reject on overlap), walls or periodic: a sampler",
+         .supports = &MetropolisSampler::supports,
+         .create = [](const BackendOptions& o) -> std::unique_ptr<Solver> { return std::make_unique<MetropolisSampler>(o); },
+         .in_all = false, .sampler = true},
     };
     return backends;
 }

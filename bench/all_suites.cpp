@@ -4,6 +4,7 @@
 namespace collide::bench {
 
 BenchSuite event_bench_suite();  // event_bench.cpp
+BenchSuite ecmc_bench_suite();   // ecmc_bench.cpp
 void run_throughput_suite(const BenchArgs& args, BenchReport& report);  // throughput_suite.cpp
 void run_features_suite(const BenchArgs& args, BenchReport& report);    // features_suite.cpp
 void run_bandwidth_suite(const BenchArgs& args, BenchReport& report);   // bandwidth_suite.cpp
@@ -15,6 +16,7 @@ BenchSuite opencl_bench_suite();  // opencl_suite.cpp
 const std::vector<BenchSuite>& all_bench_suites() {
     static const std::vector<BenchSuite> suites = {
         event_bench_suite(),
+        ecmc_bench_suite(),
         opencl_bench_suite(),
         {"throughput", "particle-steps/s and time per phase, N = 1e3..1e6, every stepped backend", run_throughput_suite},
         {"features", "cpu: cost of each feature, saving of specialised loops, reorder by cell", run_features_suite},

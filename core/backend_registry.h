@@ -53,11 +53,23 @@ struct BackendInfo {
     // for its method (tolerance key -> value; box2d: docs/validation.md). Empty: the loose
     // limits of a solver that claims nothing (tolerances.cpp).
     std::vector<std::pair<std::string, double>> limits = {};
+    // A sampler (sampling/: `ecmc`, `metropolis`) draws configurations from the equilibrium
+    // measure: it has no time and no velocities. The validation planner leaves out its energy,
+    // momentum and trajectory checks with that reason (sampler_left_out), holds every sampled
+    // configuration's overlaps to the rounding limits of an exact solver (exact_limits.h: a
+    // lift leaves a pair touching to rounding), and its length is the scene's [run] chains or
+    // sweeps. Samplers are not in a suite's "all" (in_all = false): suites name them.
+    bool sampler = false;
     // Whether its cases should use its device one at a time when replayed side by side
     // (an OpenCL device: `collide report` explaining energy jumps).
     bool one_device = false;
 
     bool stepping_rule() const { return !rule.empty(); }
+    // Why a check that reads time or velocities (energy, momentum, trajectories) does not
+    // apply to this backend, or "" when it does.
+    std::string sampler_left_out() const {
+        return sampler ? "a sampler has no dynamics (no time, no velocities): " + name + " samples configurations" : "";
+    }
     bool claims_to_conserve(const std::string& quantity) const {
         return std::find(conserves.begin(), conserves.end(), quantity) != conserves.end();
     }

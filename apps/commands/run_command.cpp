@@ -81,15 +81,20 @@ double relative_change(double initial, double final_value) {
     return scale > 0 ? (final_value - initial) / scale : final_value - initial;
 }
 
-// The pressure record of a periodic gas of equal elastic disks (core/thermo/pressure_record.h),
-// where the run has one.
-void print_pressure(const std::map<std::string, double>& c) {
-    if (!c.count("beta_pressure")) return;
-    std::printf("pressure  beta P d^2 = %.7g +- %.2g (batch means: %g batches, tau_int %.3g, equilibration cut %g; "
-                "psi6 traversals %g%s)\n",
-                c.at("beta_pressure"), c.at("beta_pressure_error"), c.at("beta_pressure_batches"),
-                c.at("beta_pressure_correlation_time"), c.at("beta_pressure_equilibration"), c.at("psi6_traversals"),
-                c.at("psi6_mixed") ? "" : ", NOT MIXED");
+// beta P d^2 with its batch-means error, where the backend recorded it (the pressure record of
+// docs/validation.md, "Error bars and mixing": event, event-plain, ecmc, metropolis).
+void print_pressure(const SolverStats& stats) {
+    const auto& c = stats.counters;
+    const auto value = c.find("beta_pressure"), error = c.find("beta_pressure_error");
+    if (value == c.end() || error == c.end()) return;
+    auto counter = [&c](const char* name) { const auto it = c.find(name); return it == c.end() ? 0.0 : it->second; };
+    std::printf("pressure  beta P d^2 = %.9g +- %.3g (batch means: %g batches, tau_int %.4g, equilibration cut %.4g",
+                value->second, error->second, counter("beta_pressure_batches"),
+                counter("beta_pressure_correlation_time"), counter("beta_pressure_equilibration"));
+    if (c.count("psi6_traversals"))
+        std::printf("; psi6 traversals %g%s", counter("psi6_traversals"), counter("psi6_mixed") != 0 ? "" : ", NOT MIXED");
+    std::printf(")
+");
 }
 
 void print_summary(const Scene& scene, const std::string& backend, const RunResult& r) {
@@ -101,6 +106,14 @@ void print_summary(const Scene& scene, const std::string& backend, const RunResu
     std::printf("backend   %s, %lld steps, %lld contacts, %.3f s wall time\n", backend.c_str(),
                 static_cast<long long>(r.stats.steps), static_cast<long long>(r.stats.contacts),
                 r.wall_seconds);
+    print_pressure(r.stats);
+    if (const BackendInfo* info = backend_if_built(backend); info && info->sampler) {
+        // No velocities: the energy and momentum lines would read zeros.
+        std::printf("dynamics  none (%s)\n", info->sampler_left_out().c_str());
+        std::printf("overlap   final: %lld pairs, max depth %.3e, mean depth %.3e (relative to r_i+r_j)\n",
+                    static_cast<long long>(b.overlapping_pairs), b.max_overlap, b.mean_overlap);
+        return;
+    }
     std::printf("energy    kinetic %.15g -> %.15g (relative change %.3e)\n", a.kinetic_energy,
                 b.kinetic_energy, relative_change(a.kinetic_energy, b.kinetic_energy));
     if (scene.has_gravity())
@@ -119,7 +132,6 @@ void print_summary(const Scene& scene, const std::string& backend, const RunResu
     std::printf("overlap   final: %lld pairs, max depth %.3e, mean depth %.3e (relative to r_i+r_j)\n",
                 static_cast<long long>(b.overlapping_pairs), b.max_overlap, b.mean_overlap);
     std::printf("walls     final max penetration %.3e (relative to radius)\n", b.max_wall_penetration);
-    print_pressure(r.stats.counters);
 }
 
 // Every check that can fail fast comes before the simulation: the backend name (no file read

@@ -245,7 +245,7 @@ std::vector<Disk> place_lattice(const Scene& scene, const ParticleGenerator& g, 
                                 DiskPlacement& placed) {
     if (g.fill_box) {
         std::vector<Disk> disks = fill_box_with_lattice(scene, g, index, placed);
-        draw_velocities(g, rng, disks);
+        draw_velocities(scene, g, rng, disks);
         return disks;
     }
     const bool hex = g.lattice == "hexagonal";

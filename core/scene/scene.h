@@ -41,7 +41,16 @@ struct RunSettings {
     double dt = 1e-3;               // time step of the stepped backends
     int substeps = 1;               // sub-steps per dt (integrate-first rule)
     StepOrder order = StepOrder::collide_first;
+    // The length of a sampler's run (sampling/: no time, no velocities): event chains (`ecmc`)
+    // or sweeps of N trial moves (`metropolis`); 0: the default derived from `duration`
+    // (docs/monte-carlo.md, "How long a sampler runs"). The output times still divide the run:
+    // a sampler has done the fraction t / duration of its chains at output time t.
+    std::int64_t chains = 0;
+    std::int64_t sweeps = 0;
 };
+
+// The longest sampler run a scene may ask for (chains or sweeps).
+constexpr std::int64_t max_sampler_length = 1'000'000'000'000'000;
 
 // One generator block ([[particles]] in the file). Which fields matter depends on `kind`;
 // docs/scenes.md lists them. The loader validates them; generators.cpp turns them into disks.

@@ -59,7 +59,7 @@ std::string steps_problem(double t, double dt) {
 }
 
 RunSettings read_run(const TomlFields& run) {
-    run.allow_only({"duration", "output_interval", "dt", "substeps", "order"});
+    run.allow_only({"duration", "output_interval", "dt", "substeps", "order", "chains", "sweeps"});
     RunSettings r;
     r.dt = run.number("dt", r.dt);
     run.require(r.dt > 0, "dt", "a time step > 0");
@@ -77,6 +77,12 @@ RunSettings read_run(const TomlFields& run) {
     r.order = run.choice("order", {"collide-first", "integrate-first"}, "collide-first") == "integrate-first"
                   ? StepOrder::integrate_first
                   : StepOrder::collide_first;
+    // A sampler's length (sampling/): event chains for `ecmc`, sweeps for `metropolis`; 0 takes
+    // the default each sampler derives from the duration (docs/monte-carlo.md).
+    r.chains = run.integer("chains", 0);
+    run.require(r.chains >= 0 && r.chains <= max_sampler_length, "chains", "an integer in [0, 1e15] (0: from the duration)");
+    r.sweeps = run.integer("sweeps", 0);
+    run.require(r.sweeps >= 0 && r.sweeps <= max_sampler_length, "sweeps", "an integer in [0, 1e15] (0: from the duration)");
     return r;
 }
 

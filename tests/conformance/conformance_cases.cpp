@@ -15,6 +15,10 @@ double conformance_tolerance(const std::string& backend) {
 bool is_exact(const std::string& backend) { return find_backend(backend).exact; }
 
 bool Conformance::skip_unless_supported(const Scene& scene) const {
+    if (backend().sampler) {  // the conformance cases are dynamics: bounces, times, invariants
+        GTEST_LOG_(INFO) << GetParam() << " leaves this case out: " << backend().sampler_left_out();
+        return true;
+    }
     if (auto reason = backend().supports(scene)) {
         GTEST_LOG_(INFO) << GetParam() << " leaves this case out: " << *reason;
         return true;

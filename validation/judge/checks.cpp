@@ -153,10 +153,12 @@ std::vector<CheckResult> case_checks(const CaseResult& r, const SceneFeatures& f
     if (nonfinite.empty()) c.at_most("run", 0, 0, "run");
     else c.fail("run", "the metric " + nonfinite + " holds NaN/Inf");
 
-    if (auto why = momentum_left_out(f)) c.left_out("momentum_drift", *why);
+    const std::string no_dynamics = backend.sampler_left_out();
+    if (!no_dynamics.empty()) c.left_out("momentum_drift", no_dynamics);
+    else if (auto why = momentum_left_out(f)) c.left_out("momentum_drift", *why);
     else c.at_most("momentum_drift", momentum_drift(r), tol.momentum_drift, "relative momentum drift");
 
-    const EnergyCheck energy = energy_check(f);
+    const EnergyCheck energy = no_dynamics.empty() ? energy_check(f) : EnergyCheck{EnergyKind::none, no_dynamics};
     if (energy.kind == EnergyKind::none) c.left_out("energy_drift", energy.reason);
     else if (energy.kind == EnergyKind::kinetic && backend.stepping_rule() && r.duration > 0 && r.disks > 0) {
         // The stepped rules lose or gain energy when one disk takes two impulses from one

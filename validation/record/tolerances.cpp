@@ -36,9 +36,10 @@ double tolerance_value(const Tolerances& t, const std::string& key) {
 // Each number is derived in docs/validation.md; the comments give the one-line reason.
 Tolerances default_tolerances(const BackendInfo& backend, const RoundingScale& scale) {
     Tolerances t;
-    if (backend.exact) {
+    if (backend.exact || backend.sampler) {
         // Exact dynamics: conserved sums move by rounding at each collision and disks touch at
-        // contact up to the rounding of their positions (exact_limits.h).
+        // contact up to the rounding of their positions (exact_limits.h). A sampler's lift
+        // leaves a pair touching to the same rounding; its conservation checks are left out.
         apply_exact_limits(t, machine_epsilon(backend.single_precision()), scale);
         t.overlapping_pairs_per_disk = 0.05;  // pairs caught exactly at contact, depth ~1e-16
         return t;

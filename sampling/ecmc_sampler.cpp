@@ -1,0 +1,205 @@
+#include "sampling/ecmc_sampler.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/numerics/target_time.h"
+#include "core/scene/option_reader.h"
+#include "sampling/sampler_input.h"
+#include "sampling/sampler_pressure.h"
+
+namespace collide {
+
+std::optional<std::string> EcmcSampler::supports(const Scene& scene) { return outside_sampler_model(scene, SamplerLimits{}); }
+
+// ---------------------------------------------------------------------------------------
+// Loading
+// ---------------------------------------------------------------------------------------
+
+void EcmcSampler::load(const Scene& scene, const ParticleState<double>& initial) {
+    check_sampler_start("ecmc", scene, initial, SamplerLimits{});
+    scene_ = scene;
+    start_ = initial;
+    const std::size_t n = initial.size();
+    sigma_ = 2 * initial.radius[0];
+    sigma2_ = sigma_ * sigma_;
+    const double area = scene.world.width() * scene.world.height();
+    density_d2_ = double(n) * sigma2_ / area;
+
+    OptionReader options("ecmc", &scene, options_.extra);
+    chain_length_ = sigma_ * options.get_double("chain_length", default_chain_length_diameters, 0,
+                                                "a chain length > 0, in disk diameters", true);
+    options.refuse_unknown();
+
+    // The run's length: [run] chains, or by default as many chains as move the disks, all
+    // together, N x duration length units (docs/monte-carlo.md, "How long a sampler runs").
+    chains_total_ = scene.run.chains > 0
+                        ? scene.run.chains
+                        : std::max<std::int64_t>(1, std::llround(std::ceil(double(n) * scene.run.duration / chain_length_)));
+    // An entry of the pressure series moves the disks by one diameter each, on average.
+    chains_per_entry_ = std::max<std::int64_t>(1, std::llround(double(n) * sigma_ / chain_length_));
+
+    pos_[0] = initial.x;
+    pos_[1] = initial.y;
+    const double origin[2] = {scene.world.xmin, scene.world.ymin}, length[2] = {scene.world.width(), scene.world.height()};
+    for (int a = 0; a < 2; ++a)
+        for (double& p : pos_[a]) p = wrap_into_box(p, origin[a], length[a]);
+    try {
+        cells_.configure(origin, length, sigma_);
+    } catch (const std::runtime_error& e) {
+        throw std::runtime_error("ecmc: scene '" + scene.name + "': " + e.what());
+    }
+    place_in_cells();
+
+    rng_.reset(gsl_rng_alloc(gsl_rng_mt19937));
+    gsl_rng_set(rng_.get(), (unsigned long)(scene.seed ^ 0x45434d43u));  // a stream of its own ("ECMC")
+    chains_done_ = lifts_ = entry_chains_ = 0;
+    entry_sum_ = now_ = 0;
+    pressure_series_.clear();
+}
+
+void EcmcSampler::place_in_cells() {
+    const std::size_t n = pos_[0].size();
+    for (int a = 0; a < 2; ++a) cell_[a].resize(n);
+    slot_.resize(n);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        cell_[0][i] = cells_.coordinate_of(0, pos_[0][i]);
+        cell_[1][i] = cells_.coordinate_of(1, pos_[1][i]);
+        slot_[i] = cells_.insert(cells_.index(cell_[0][i], cell_[1][i]), i);
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// The chains
+// ---------------------------------------------------------------------------------------
+
+void EcmcSampler::advance_to(double t) {
+    check_target_time("ecmc", t, now_, scene_.run.dt, false);  // NaN, infinity, the past: refused
+    const std::int64_t target = sampler_steps_at(t, scene_, chains_total_);
+    while (chains_done_ < target) {
+        if (chains_done_ % 2 == 0) run_chain<0>();
+        else run_chain<1>();
+        ++chains_done_;
+    }
+    now_ = t;
+}
+
+template <int A>
+void EcmcSampler::cross_edge(std::uint32_t i) {
+    const int column = cell_[A][i], row = cell_[1 - A][i];
+    const int old_cell = A == 0 ? cells_.index(column, row) : cells_.index(row, column);
+    const std::uint32_t moved = cells_.erase(old_cell, slot_[i]);
+    slot_[moved] = slot_[i];
+    int next = column + 1;
+    double edge = cells_.origin(A) + next * cells_.side(A);
+    if (next == cells_.count(A)) {  // across the periodic boundary: the same point, one box back
+        next = 0;
+        edge = cells_.origin(A);
+    }
+    pos_[A][i] = edge;
+    cell_[A][i] = next;
+    slot_[i] = cells_.insert(A == 0 ? cells_.index(next, row) : cells_.index(row, next), i);
+}
+
+// The active disk moves along axis A by the least of: the chain's remaining length, the
+// distance to its cell's far edge (beyond it the 6 cells scanned no longer hold every disk it
+// could meet), and the distance to the first disk in its way, du - sqrt(sigma^2 - dw^2) for a
+// disk ahead (du > 0) within sigma across (|dw| < sigma). Meeting a disk lifts the chain to it.
+template <int A>
+void EcmcSampler::run_chain() {
+    constexpr int B = 1 - A;
+    const int columns = cells_.count(A), rows = cells_.count(B);
+    const double box_a = cells_.length(A), box_b = cells_.length(B);
+    std::uint32_t active = std::uint32_t(gsl_rng_uniform_int(rng_.get(), pos_[0].size()));
+    double budget = chain_length_, lift_sum = 0;
+    for (;;) {
+        const int ca = cell_[A][active], cb = cell_[B][active];
+        const double u = pos_[A][active], w = pos_[B][active];
+        const double to_edge = cells_.origin(A) + (ca + 1) * cells_.side(A) - u;
+        const bool edge_first = to_edge < budget;
+        double step = edge_first ? to_edge : budget, reach = 0;
+        std::int64_t blocker = -1;
+        for (int da = 0; da < 2; ++da) {
+            int column = ca + da;
+            double shift_a = 0;  // the periodic image of the next column past the box's edge
+            if (column == columns) column = 0, shift_a = box_a;
+            for (int db = -1; db <= 1; ++db) {
+                int row = cb + db;
+                double shift_b = 0;
+                if (row < 0) row = rows - 1, shift_b = -box_b;
+                else if (row == rows) row = 0, shift_b = box_b;
+                const int cell = A == 0 ? cells_.index(column, row) : cells_.index(row, column);
+                const std::uint32_t* members = cells_.members(cell);
+                for (int k = 0, m = cells_.occupancy(cell); k < m; ++k) {
+                    const std::uint32_t j = members[k];
+                    const double du = pos_[A][j] + shift_a - u;
+                    if (du <= 0 || j == active) continue;  // behind: never in the way
+                    const double dw = pos_[B][j] + shift_b - w, dw2 = dw * dw;
+                    if (dw2 >= sigma2_) continue;  // passes beside
+                    const double gap = du - std::sqrt(sigma2_ - dw2);
+                    if (gap < step) {
+                        step = gap > 0 ? gap : 0;  // a pair touching to rounding: lift at once
+                        blocker = j;
+                        reach = du - step;  // x_ij at contact
+                    }
+                }
+            }
+        }
+        budget -= step;
+        if (blocker >= 0) {
+            pos_[A][active] = u + step;
+            lift_sum += reach;
+            ++lifts_;
+            active = std::uint32_t(blocker);
+        } else if (edge_first) {
+            cross_edge<A>(active);
+        } else {
+            pos_[A][active] = u + step;
+            break;
+        }
+    }
+    record_chain(lift_sum);
+}
+
+// beta P / rho = 1 + (sum of x_ij) / l for this chain (Michel, Kapfer, Krauth 2014), averaged
+// over an entry's chains and stored as beta P d^2 = (beta P / rho) rho sigma^2.
+void EcmcSampler::record_chain(double lift_sum) {
+    entry_sum_ += 1 + lift_sum / chain_length_;
+    if (++entry_chains_ < chains_per_entry_) return;
+    pressure_series_.push_back(entry_sum_ / double(entry_chains_) * density_d2_);
+    entry_sum_ = 0;
+    entry_chains_ = 0;
+}
+
+// ---------------------------------------------------------------------------------------
+// Output
+// ---------------------------------------------------------------------------------------
+
+void EcmcSampler::read_state(ParticleState<double>& out) const {
+    out = start_;
+    out.x = pos_[0];
+    out.y = pos_[1];
+    const World& w = scene_.world;
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        // A disk moved onto the box's far edge is at the near edge of the next image.
+        if (out.x[i] >= w.xmax) out.x[i] -= w.width();
+        if (out.y[i] >= w.ymax) out.y[i] -= w.height();
+        out.vx[i] = out.vy[i] = 0;  // a sampler has no velocities
+    }
+}
+
+SolverStats EcmcSampler::stats() const {
+    SolverStats s;
+    s.steps = chains_done_;
+    s.contacts = lifts_;
+    auto& c = s.counters;
+    c["chains"] = double(chains_done_);
+    c["lifts"] = double(lifts_);
+    c["chain_length"] = chain_length_;
+    c["chains_per_entry"] = double(chains_per_entry_);
+    record_beta_pressure(pressure_series_, double(chains_per_entry_), c);
+    return s;
+}
+
+}  // namespace collide

@@ -1,0 +1,121 @@
+// `ecmc` (sampling/ecmc_sampler.h): legal configurations, the chain's bookkeeping, its pressure
+// against the virial series, determinism, the scene's run length and the scenes it refuses.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "core/backend_registry.h"
+#include "core/numerics/state_hash.h"
+#include "core/run_driver.h"
+#include "core/scene/gas_scene.h"
+#include "core/scene/scene_loader.h"
+#include "sampling/ecmc_sampler.h"
+#include "tests/support/test_scenes.h"
+
+namespace collide::test {
+namespace {
+
+// N disks of radius 0.5 at area fraction phi in a periodic square, from a jittered square
+// lattice (legal at any phi below pi/4).
+GasCase periodic_gas(std::int64_t n, double phi, std::uint64_t seed = 3) {
+    GasSceneSpec spec;
+    spec.count = n;
+    spec.area_fraction = phi;
+    spec.boundary = Boundary::periodic;
+    spec.placement = GasPlacement::lattice;
+    spec.jitter = true;
+    spec.seed = seed;
+    GasCase gas = make_gas(spec);
+    gas.scene.seed = seed;
+    gas.scene.name = "periodic_gas";
+    return gas;
+}
+
+RunResult sample(GasCase gas, std::int64_t chains, double chain_length_diameters = default_chain_length_diameters) {
+    gas.scene.run.chains = chains;
+    gas.scene.backend_options["ecmc"]["chain_length"] = std::to_string(chain_length_diameters);
+    EcmcSampler sampler;
+    return run_scene(gas.scene, sampler, gas.initial);
+}
+
+TEST(EcmcSampler, LeavesNoOverlapInADenseBox) {
+    const GasCase gas = periodic_gas(400, 0.70);
+    const RunResult r = sample(gas, 2000);
+    EXPECT_EQ(brute_force_overlapping_pairs(gas.scene, r.final_state), 0);
+    for (const Metrics& m : r.series) EXPECT_LT(m.max_overlap, 1e-12) << "t = " << m.time;
+    EXPECT_GT(r.stats.contacts, 2000) << "a dense box lifts many times per chain";
+}
+
+// Every move of a chain goes along its axis and they add up to the chain length: the centre
+// of mass moves by exactly l / N along x after one +x chain, and not at all along y.
+TEST(EcmcSampler, OneChainMovesTheDisksByItsLengthAlongItsAxis) {
+    const GasCase gas = periodic_gas(100, 0.6);
+    const double length_diameters = 3.5;
+    const RunResult r = sample(gas, 1, length_diameters);
+    ASSERT_GT(r.stats.contacts, 0);
+    double along = 0, across = 0;
+    const double lx = gas.scene.world.width(), ly = gas.scene.world.height();
+    for (std::size_t i = 0; i < gas.initial.size(); ++i) {
+        const double dx = r.final_state.x[i] - gas.initial.x[i], dy = r.final_state.y[i] - gas.initial.y[i];
+        along += dx - lx * std::round(dx / lx);
+        across += dy - ly * std::round(dy / ly);
+    }
+    EXPECT_NEAR(along, length_diameters * 1.0, 1e-9);
+    EXPECT_EQ(across, 0.0);
+}
+
+// At low density beta P / rho follows the virial series of hard disks, Z = 1 + sum_k c_k eta^(k-1)
+// with c_k = 2^(k-1) B_k / B_2^(k-1) and B_k / B_2^(k-1) = 1, 0.782004, 0.532231, 0.333556,
+// 0.198869, 0.114447 for k = 2..7 (Clisby & McCoy, J. Stat. Phys. 122, 15 (2006)); at eta = 0.15
+// the rest is below 1e-5. Held to 4 error bars plus 2e-3 for the finite N (about (Z - 1) / N).
+TEST(EcmcSampler, PressureAtLowDensityFollowsTheVirialSeries) {
+    const double eta = 0.15;
+    const GasCase gas = periodic_gas(256, eta);
+    const RunResult r = sample(gas, 60000, 8);
+    const double rho_d2 = 4 * eta / M_PI;
+    const double z = r.stats.counters.at("beta_pressure") / rho_d2;
+    const double error = r.stats.counters.at("beta_pressure_error") / rho_d2;
+    const double ratios[] = {1, 0.782004, 0.532231, 0.333556, 0.198869, 0.114447};
+    double series = 1, power = 1;  // power = (2 eta)^(k-1)
+    for (double ratio : ratios) series += ratio * (power *= 2 * eta);
+    EXPECT_NEAR(series, 1.38802, 1e-5) << "the series itself";
+    ASSERT_GT(error, 0);
+    EXPECT_LT(error, 2e-3);
+    EXPECT_NEAR(z, series, 4 * error + 2e-3) << "error " << error;
+    EXPECT_GT(r.stats.counters.at("beta_pressure_batches"), 1);
+    EXPECT_GT(r.stats.counters.at("beta_pressure_correlation_time"), 0);
+}
+
+// Same scene and seed: the same bits; another seed: other bits. The pinned hash changes with
+// any change to the chains' arithmetic, their order or the draws (state_hash.h).
+TEST(EcmcSampler, SameSeedSameBitsAndThePinnedHash) {
+    const std::uint64_t first = state_hash(sample(periodic_gas(200, 0.65), 500).final_state);
+    EXPECT_EQ(first, state_hash(sample(periodic_gas(200, 0.65), 500).final_state));
+    GasCase other = periodic_gas(200, 0.65);
+    other.scene.seed = 4;
+    EXPECT_NE(first, state_hash(sample(other, 500).final_state));
+    EXPECT_EQ(first, 0x9c032a48f3092b64ull) << "0x" << std::hex << first;
+}
+
+TEST(EcmcSampler, RunsTheScenesChainsOrOnesFromTheDuration) {
+    GasCase gas = periodic_gas(100, 0.5);
+    EXPECT_EQ(sample(gas, 7).stats.steps, 7);
+    gas.scene.run.duration = 2;
+    gas.scene.run.output_interval = 1;
+    EcmcSampler sampler;
+    const RunResult r = run_scene(gas.scene, sampler, gas.initial);
+    // N x duration length units of moves in chains of 20 diameters: ceil(100 x 2 / 20).
+    EXPECT_EQ(r.stats.steps, 10);
+    const Scene loaded = parse_scene("description = \"d\"\n[world]\nbox = [0, 0, 10, 10]\nboundary = \"periodic\"\n[run]\nchains = 12\n[[particles]]\nkind = \"list\"\ndisks = [{ x = 1, y = 1, vx = 0, vy = 0, radius = 0.5, mass = 1 }]\n", "chains.toml");
+    EXPECT_EQ(loaded.run.chains, 12);
+    try {
+        parse_scene("description = \"d\"\n[world]\nbox = [0, 0, 10, 10]\n[run]\nchains = -3\n", "bad.toml");
+        ADD_FAILURE() << "a negative chain count was read";
+    } catch (const std::exception& e) {
+        EXPECT_NE(std::string(e.what()).find("chains"), std::string::npos) << e.what();
+    }
+}
+
+}  // namespace
+}  // namespace collide::test
