@@ -110,7 +110,7 @@ public:
 
     std::map<std::string, std::string> provenance() const override {
         const DeviceEntry& d = session_.device;
-        return {{"opencl_platform", d.platform_name}, {"opencl_device", d.device_name},
+        return {{"opencl_platform", d.platform_name}, {"opencl_device", d.device_name}, {"opencl_device_type", d.type},
                 {"opencl_device_version", d.device_version}, {"opencl_driver", d.driver_version},
                 {"opencl_build_options", session_.build_options}, {"grid", grid_mode_},
                 {"sort_interval", std::to_string(sort_interval_)}, {"real", sizeof(Real) == 8 ? "double" : "float"}};

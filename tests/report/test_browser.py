@@ -93,8 +93,61 @@ class FirstScreen(unittest.TestCase):
         for row in rows:
             cells = [c.text for c in row.find_elements(By.TAG_NAME, "td")]
             self.assertTrue(cells[1], f"no verdict for {cells[0]}")
-            self.assertRegex(cells[4], r"×|s per time unit", f"no cost for {cells[0]}")
+            self.assertRegex(cells[5], r"×|s per time unit", f"no cost for {cells[0]}")
             self.assertTrue(row.is_displayed())
+
+    def digest_row(self, backend):
+        from selenium.webdriver.common.by import By
+        for row in self.driver.find_elements(By.CSS_SELECTOR, "#digest tr[id^='verdict-']"):
+            cells = row.find_elements(By.TAG_NAME, "td")
+            if cells and cells[0].text.split("\n")[0] == backend:
+                return cells
+        self.fail(f"no digest row for {backend}")
+
+    def test_not_for_names_a_measured_bias_for_step(self):
+        """Issue 48: the stepped rules' measured error is on the first screen, with its SE."""
+        if self.stability_suite():
+            self.skipTest("a stability suite opens with its first failures")
+        not_for = self.digest_row("step")[3]
+        self.assertRegex(not_for.text, r"(Z [-+]\d[\d.e-]* % ± [\d.e-]+ %|[\d.e-]+ ± [\d.e-]+ r_min)",
+                         "step's 'not for' names no measured error with its SE")
+        self.assertLessEqual(self.driver.execute_script("return arguments[0].getBoundingClientRect().top;", not_for),
+                             HEIGHT, "step's 'not for' is below the first screen")
+
+    def test_a_shipped_preset_is_not_shown_passing_elastic_physics(self):
+        from selenium.webdriver.common.by import By
+        names = [r.find_elements(By.TAG_NAME, "td")[0].text.split("\n")[0]
+                 for r in self.driver.find_elements(By.CSS_SELECTOR, "#digest tr[id^='verdict-']")]
+        variants = [n for n in names if "[" in n]
+        if not variants:
+            self.skipTest("no preset variant in this suite")
+        for name in variants:
+            verdict = self.digest_row(name)[1]
+            self.assertIn("fail", verdict.get_attribute("class"), f"{name} is shown green")
+            self.assertRegex(verdict.text, r"FAILS the physical model: \d+ of its \d+ checks fail under the limits of")
+
+    def test_cost_at_accuracy_column_on_first_screen(self):
+        if self.stability_suite():
+            self.skipTest("a stability suite opens with its first failures")
+        top, bottom, left, right = self.rect("#cost-at-accuracy")
+        self.assertLessEqual(bottom, HEIGHT)
+        self.assertLessEqual(right, WIDTH)
+        self.assertRegex(self.digest_row("step")[6].text, r"×|not reached")
+
+    def test_headline_text_at_least_10_px(self):
+        """The headline PNG records its smallest text in PNG pixels (figures.smallest_text_px);
+        scaled by the displayed width over the natural width it must reach 10 px."""
+        if self.stability_suite():
+            self.skipTest("a stability suite has no work-precision figure")
+        import base64
+        import io
+        from PIL import Image
+        src, shown, natural = self.driver.execute_script(
+            "const i = document.querySelector('figure#headline img'); return [i.src, i.clientWidth, i.naturalWidth];")
+        with Image.open(io.BytesIO(base64.b64decode(src.split(",", 1)[1]))) as png:
+            smallest = float(png.info["smallest-text-px"])
+        self.assertGreaterEqual(smallest * shown / natural, 10, f"headline text {smallest:.1f} px in the PNG, "
+                                f"shown at {shown} of {natural} px")
 
     def test_no_text_overlaps_on_first_screen(self):
         overlaps = self.driver.execute_script("""

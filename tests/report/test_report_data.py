@@ -57,10 +57,10 @@ class DigestMatchesSummary(unittest.TestCase):
             ran = [c for c in self.summary["cases"] if c["backend"] == r["backend"] and c["status"] != "left_out"]
             self.assertEqual(r["cases"], len(ran))
 
-    def test_worst_margin_is_the_largest_unquantised(self):
+    def test_worst_margin_is_the_largest_quantised_included(self):
         for r in self.rows:
             margins = [c["margin"] for c in self.summary["checks"] if c["backend"] == r["backend"]
-                       and c.get("margin") is not None and not c["quantised"]]
+                       and c.get("margin") is not None]
             if margins:
                 self.assertEqual(r["worst"][0], max(margins))
                 self.assertEqual(r["ties"], margins.count(max(margins)))
@@ -409,6 +409,66 @@ class PhysicsSectionDrawsTheSummary(unittest.TestCase):
         self.assertIsNone(physics.section({"physics": {"rows": [], "curves": []}}))
         self.assertEqual(physics.markdown({}), [])
 
+NUM = r"[-+−]?\d+(?:\.\d*)?(?:e[-+]?\d+)?"
+
+
+def _f(text):
+    return float(text.replace("−", "-"))
+
+
+def recompute_every_z(test, html):
+    """Every z printed on a page, recomputed from the numbers printed beside it; returns how many.
+    Two forms: a difference with its SE, '+0.0115 ± 0.00217 (z = +5.30', z = Δ / SE; and a
+    score with its inputs, 'z = -0.29 from 0.998 ± 0.0068 against 1 ± 0.0002', z = (v − r) / √(se² + u²).
+    A 'z = ' in neither form is a z without its numbers, and fails."""
+    text = re.sub(r"<[^>]+>", " ", html)
+    difference = re.compile(rf"({NUM})(?: %)? ± ({NUM})(?: %)? \(z = ({NUM})")
+    score = re.compile(rf"z = ({NUM}) from ({NUM}) ± ({NUM}) against ({NUM}) ± ({NUM})")
+    checked = 0
+    for m in difference.finditer(text):
+        delta, se, z = map(_f, m.groups())
+        test.assertAlmostEqual(delta / se, z, delta=0.01 + 0.01 * abs(z), msg=m.group(0))
+        checked += 1
+    for m in score.finditer(text):
+        z, value, se, reference, u = map(_f, m.groups())
+        test.assertAlmostEqual((value - reference) / math.hypot(se, u), z, delta=0.01 + 0.01 * abs(z), msg=m.group(0))
+        checked += 1
+    printed = len(re.findall(r"\bz = ", text))
+    test.assertEqual(printed, checked, "a z printed without the numbers it was computed from")
+    return checked
+
+
+class EveryZRecomputesFromThePage(unittest.TestCase):
+    """Issue 48, item 5: each row prints the numbers its z was computed from, z signed."""
+
+    def test_the_mini_report(self):
+        html = open(os.path.join(RESULTS, "report", "index.html"), encoding="utf-8").read()
+        self.assertGreater(recompute_every_z(self, html), 0)
+
+    def test_a_ratio_row_prints_the_ratio_it_was_judged_on(self):
+        # The collision rate's z is taken on per-replicate ratios measured / predicted: its
+        # printed value ± SE against the reference would give z = -0.29, not the judged -0.64.
+        row = {"row": "collision_rate", "scene": "fluid", "backend": "event", "group": "g", "parameter_name": "",
+               "parameter": None, "measured": "rate", "estimator": "counted", "value": 1.56814, "standard_error": 0.01064,
+               "replicates": 4, "reference": 1.57122, "reference_uncertainty": 0.000314, "reference_name": "Enskog",
+               "citation": "c", "second_reference": None, "second_reference_name": "", "statistic": "z", "score": 0.64,
+               "resolved": True, "verdict": "pass", "detail": "",
+               "score_from": {"estimator": "per-replicate ratio measured / predicted", "value": 0.99712,
+                              "standard_error": 0.0044868, "reference": 1, "reference_uncertainty": 0.0002,
+                              "z": (0.99712 - 1) / math.hypot(0.0044868, 0.0002)}}
+        html = templating.render("physics.html.j2", physics=physics.section({"physics": {"rows": [row], "curves": [],
+                                                                                          "z_max": 3}}))
+        self.assertEqual(recompute_every_z(self, html), 1)
+        self.assertIn("z = -0.64 from 0.99712", html)
+        self.assertIn("|z| ≤ 3", html)
+
+    def test_a_z_without_its_numbers_fails(self):
+        with self.assertRaises(AssertionError):
+            recompute_every_z(self, "<td>z = 2.86</td>")
+        with self.assertRaises(AssertionError):  # 14.845 ± 0.085 against 14.819 is z = 0.31, not 2.86
+            recompute_every_z(self, "z = +2.86 from 14.845 ± 0.085 against 14.819 ± 0")
+
+
 class HtmlFromTemplates(unittest.TestCase):
     """The pages are laid out by templates/ (jinja2, autoescaped); the Python side hands them
     data and writes no markup of its own."""
@@ -530,13 +590,27 @@ class WhatAReaderWasToldWrongly(unittest.TestCase):
         v = verdicts.verdict(summary, row, {})
         self.assertEqual(v["verdict"], "passes 0 checks" if not row["pass"] else f"passes {row['pass']} checks")
 
-    def test_quantised_checks_are_not_the_worst_margin(self):
-        checks = [check("pair", "step", "overlapping_pairs", value=0.5, tolerance=0.5, quantised=True),
+    def test_quantised_checks_are_in_the_worst_margin_and_counted_at_the_limit(self):
+        checks = [check("pair", "step", "overlapping_pairs", value=0.5, tolerance=0.5, quantised=True, margin=1.0),
                   check("pair", "step", "energy_drift", value=0.02, tolerance=0.05),
                   check("pair", "step", "energy_drift", value=0.02, tolerance=0.05, subject="pair__step__dt0.002__seed1")]
         summary = {"cases": [{"id": "pair__step__dt0.001__seed1", "scene": "pair", "backend": "step", "status": "completed"}],
                    "checks": checks, "work_precision": []}
         row = digest.digest(summary)[0]
+        self.assertEqual(row["worst"][2], "overlapping_pairs")
+        self.assertAlmostEqual(row["worst"][0], 1.0)
+        self.assertEqual(row["quantised_at_limit"], 1)
+        self.assertIn("1 quantised count at the limit", analysis.margin_text(row))
+        row = digest.digest(summary, exclude_quantised=True)[0]
+        self.assertEqual(row["worst"][2], "energy_drift")
+
+    def test_quantised_checks_left_out_on_request(self):
+        checks = [check("pair", "step", "overlapping_pairs", value=0.5, tolerance=0.5, quantised=True),
+                  check("pair", "step", "energy_drift", value=0.02, tolerance=0.05),
+                  check("pair", "step", "energy_drift", value=0.02, tolerance=0.05, subject="pair__step__dt0.002__seed1")]
+        summary = {"cases": [{"id": "pair__step__dt0.001__seed1", "scene": "pair", "backend": "step", "status": "completed"}],
+                   "checks": checks, "work_precision": []}
+        row = digest.digest(summary, exclude_quantised=True)[0]
         self.assertEqual(row["worst"][2], "energy_drift")
         self.assertAlmostEqual(row["worst"][0], 0.4)
         self.assertEqual(row["ties"], 2)

@@ -78,6 +78,19 @@ TEST(Applicability, PressureNeedsOneDiameter) {
     EXPECT_TRUE(pressure_left_out(f));
 }
 
+TEST(Applicability, OverlappingPairsOnlyWhereTheCountCanExceedItsLimit) {
+    // Two disks overlap in at most 0.5 pairs per disk: a limit of 0.5 (or box2d's 1.0) passes
+    // them overlapping at every step, so the check is left out with its reason.
+    const auto two = overlapping_pairs_cannot_fail(2, 0.5);
+    ASSERT_TRUE(two);
+    EXPECT_NE(two->find("2 disks overlap in at most 0.5 pairs per disk"), std::string::npos) << *two;
+    EXPECT_TRUE(overlapping_pairs_cannot_fail(3, 1.0)) << "3 disks: at most 1 pair per disk";
+    // Where every disk overlapping exceeds the limit, the check is judged and can fail.
+    EXPECT_FALSE(overlapping_pairs_cannot_fail(2, 0.25));
+    EXPECT_FALSE(overlapping_pairs_cannot_fail(4, 1.0));
+    EXPECT_FALSE(overlapping_pairs_cannot_fail(1000, 0.05));
+}
+
 TEST(Applicability, FeaturesAreReadFromSceneAndState) {
     Scene scene;
     scene.world.boundary = Boundary::periodic;

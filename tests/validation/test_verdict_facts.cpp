@@ -99,11 +99,13 @@ TEST(VerdictThresholds, DefaultsAndSuiteSettings) {
     EXPECT_DOUBLE_EQ(plain.verdicts.loose_tolerance_ratio, 5);
     EXPECT_DOUBLE_EQ(plain.verdicts.energy_drift, 0.01);
     EXPECT_DOUBLE_EQ(plain.verdicts.pressure_sigmas, 3);
-    const Suite set = parse_suite("scene_dir = \".\"\n[verdicts]\nenergy_drift = 0.05\npressure_sigmas = 4\n" + scene,
+    const Suite set = parse_suite("scene_dir = \".\"\n[verdicts]\nenergy_drift = 0.05\npressure_sigmas = 4\npressure_accuracy = 0.01\n" + scene,
                                   "suites/set.toml", dir);
     EXPECT_DOUBLE_EQ(set.verdicts.energy_drift, 0.05);
     EXPECT_DOUBLE_EQ(set.verdicts.pressure_sigmas, 4);
     EXPECT_DOUBLE_EQ(set.verdicts.loose_tolerance_ratio, 5);
+    EXPECT_DOUBLE_EQ(set.verdicts.pressure_accuracy, 0.01);
+    EXPECT_DOUBLE_EQ(set.verdicts.trajectory_accuracy, 1e-2);  // the default
     for (const char* bad : {"[verdicts]\nenergy_drift = -1\n", "[verdicts]\nsigmas = 3\n"}) {
         try {
             parse_suite(std::string("scene_dir = \".\"\n") + bad + scene, "suites/bad.toml", dir);

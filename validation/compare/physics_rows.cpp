@@ -198,6 +198,7 @@ void judge_z(PhysicsRow& row, const std::vector<double>& v, bool judged) {
     row.value = m.mean, row.standard_error = m.standard_error;
     row.statistic = statistic_name('z');
     row.score = std::abs(m.mean - row.reference) / std::hypot(m.standard_error, row.reference_uncertainty);
+    row.score_from = {row.estimator, m.mean, m.standard_error, row.reference, row.reference_uncertainty};
     if (m.count < 2) {
         row.verdict = PhysicsVerdict::fail;
         row.detail = "needs at least 2 finished replicates for an error bar";
@@ -215,6 +216,7 @@ void judge_ratio(PhysicsRow& row, const std::vector<double>& measured, const std
     for (std::size_t k = 0; k < measured.size(); ++k) ratio.push_back(measured[k] / predicted[k]);
     row.reference = 1, row.reference_uncertainty = u;
     judge_z(row, ratio, judged);
+    row.score_from.estimator = "per-replicate ratio measured / predicted";
     const MeanAndError m = mean_and_error(measured);
     row.value = m.mean, row.standard_error = m.standard_error;
     row.reference = mean_and_error(predicted).mean;
@@ -348,6 +350,7 @@ void add_exact_agreement(std::vector<PhysicsRow>& rows) {
             d.reference = 0, d.reference_uncertainty = 0, d.second_reference = std::nan("");
             d.reference_name = "the two exact solvers agree", d.citation = "";
             d.score = std::abs(d.value) / d.standard_error;
+            d.score_from = {"difference of the two rows' means", d.value, d.standard_error, 0, 0};
             d.verdict = d.score <= physics_z_max ? PhysicsVerdict::pass : PhysicsVerdict::fail;
             d.detail = b.backend + " " + std::to_string(b.value) + " against " + a.backend + " " + std::to_string(a.value);
             added.push_back(std::move(d));

@@ -49,6 +49,13 @@ struct PhysicsRow {
     std::string second_reference_name;
     std::string statistic;           // "z" (|difference| / combined error), "p" (chi-square), "exact"
     double score = std::nan("");
+    // A "z" row's score from these numbers: z = (value - reference) / hypot(standard_error,
+    // reference_uncertainty), score = |z|. They are value ± SE and the reference above except
+    // where the row judges per-replicate ratios measured / predicted (estimator says so).
+    struct ScoreInputs {
+        std::string estimator;
+        double value = std::nan(""), standard_error = std::nan(""), reference = std::nan(""), reference_uncertainty = 0;
+    } score_from;
     bool resolved = true;            // the error bar tells the two published values apart
     PhysicsVerdict verdict = PhysicsVerdict::shown;
     std::string detail;

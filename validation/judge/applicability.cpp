@@ -30,6 +30,15 @@ std::optional<std::string> wall_penetration_left_out(const SceneFeatures& f) {
     return std::nullopt;
 }
 
+std::optional<std::string> overlapping_pairs_cannot_fail(std::size_t disks, double limit_per_disk) {
+    const double most = disks > 1 ? double(disks - 1) / 2 : 0;
+    if (most > limit_per_disk) return std::nullopt;
+    std::ostringstream why;
+    why << "cannot fail: " << disks << " disks overlap in at most " << most << " pairs per disk, within the limit "
+        << limit_per_disk << "; max_overlap and mean_overlap judge the overlap depth";
+    return why.str();
+}
+
 std::optional<std::string> pressure_left_out(const SceneFeatures& f) {
     if (!f.uniform_radius) return "polydisperse disks: the contact-value pressure needs one diameter";
     return std::nullopt;

@@ -3,6 +3,7 @@
 // reported with the reason, never silently passed.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 
@@ -29,6 +30,11 @@ EnergyCheck energy_check(const SceneFeatures& f);
 
 // Periodic boxes have no walls to penetrate.
 std::optional<std::string> wall_penetration_left_out(const SceneFeatures& f);
+
+// A count per disk that cannot exceed its limit: N disks overlap in at most N (N - 1) / 2 pairs,
+// (N - 1) / 2 per disk, so with two disks (0.5) a limit of 0.5 passes every disk overlapping.
+// Such a check is left out (max_overlap and mean_overlap judge the depth there), not passed.
+std::optional<std::string> overlapping_pairs_cannot_fail(std::size_t disks, double limit_per_disk);
 
 // The contact-value pressure estimator needs one disk diameter.
 std::optional<std::string> pressure_left_out(const SceneFeatures& f);

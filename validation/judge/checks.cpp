@@ -175,8 +175,9 @@ std::vector<CheckResult> case_checks(const CaseResult& r, const SceneFeatures& f
     c.at_most("max_overlap", max_of(r.series, [](const Metrics& m) { return m.max_overlap; }), tol.max_overlap, "maximum relative overlap depth");
     c.at_most("mean_overlap", max_of(r.series, [](const Metrics& m) { return m.mean_overlap; }), tol.mean_overlap, "mean relative overlap depth");
     const double disks = double(std::max<std::size_t>(1, r.disks));
-    c.at_most("overlapping_pairs", max_of(r.series, [](const Metrics& m) { return double(m.overlapping_pairs); }) / disks, tol.overlapping_pairs_per_disk,
-              "overlapping pairs per disk");
+    if (auto why = overlapping_pairs_cannot_fail(r.disks, tol.overlapping_pairs_per_disk)) c.left_out("overlapping_pairs", *why);
+    else c.at_most("overlapping_pairs", max_of(r.series, [](const Metrics& m) { return double(m.overlapping_pairs); }) / disks,
+                   tol.overlapping_pairs_per_disk, "overlapping pairs per disk");
     if (auto why = wall_penetration_left_out(f)) c.left_out("wall_penetration", *why);
     else c.at_most("wall_penetration", max_of(r.series, [](const Metrics& m) { return m.max_wall_penetration; }), tol.wall_penetration,
                    "maximum wall penetration / radius");

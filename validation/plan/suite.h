@@ -87,6 +87,10 @@ struct VerdictThresholds {
     double loose_tolerance_ratio = 5;  // a tolerance this many times the other backends' median
     double energy_drift = 0.01;        // a largest energy drift of at least this (1 %)
     double pressure_sigmas = 3;        // a resolved pressure difference of at least this many SE
+    // The accuracy a backend's "use for" verdict states (accuracy_verdicts.h): its trajectory
+    // error within this many r_min, its Z within this relative difference of the reference's.
+    double trajectory_accuracy = 1e-2;
+    double pressure_accuracy = 5e-3;
 };
 
 struct Suite {

@@ -71,7 +71,9 @@ def margin_parts(row):
     m, subject, check = worst
     text = "∞" if m == math.inf else f"{m:.2f}" if 0.01 <= m < 1e4 else fmt(m)  # layout: fixed point where it reads
     ties = f", one of {row['ties']} checks at this value" if row["ties"] > 1 else ""
-    return {"text": text, "subject": subject, "where": f"{check.replace('_', ' ')}{ties}"}
+    at_limit = row.get("quantised_at_limit", 0)
+    quantised = f"; {at_limit} quantised count{'s' if at_limit > 1 else ''} at the limit" if at_limit else ""
+    return {"text": text, "subject": subject, "where": f"{check.replace('_', ' ')}{ties}{quantised}"}
 
 
 def margin_text(row):

@@ -242,16 +242,17 @@ def combination_totals(by_combination):
     return totals
 
 
-def digest(summary, exclude_quantised=True):
+def digest(summary, exclude_quantised=False):
     """One row per backend: cases that ran and that it cannot run; (scene, check) combinations
     passed / failed / not applicable / cannot run, and the checks behind them; the worst margin
-    of a check that measures something (quantised counts left out), with how many checks tie
-    at it; orders per observable class and the floors."""
+    of every check with a margin, quantised counts included (a count of k / N can sit at its limit
+    without measuring how close the backend came: how many do is counted beside), with how many
+    checks tie at it; orders per observable class and the floors."""
     rows = OrderedDict()
     for b in backends_in_order(summary):
         rows[b] = {"backend": b, "cases": 0, "cases_cannot_run": 0, "pass": 0, "fail": 0, "left_out": 0,
                    "combinations": {"pass": 0, "fail": 0, "left_out": 0, "cannot_run": 0},
-                   "worst": None, "ties": 0, "orders": OrderedDict(), "floors": []}
+                   "worst": None, "ties": 0, "quantised_at_limit": 0, "orders": OrderedDict(), "floors": []}
     for c in summary["cases"]:
         rows[c["backend"]]["cases_cannot_run" if c["status"] == "left_out" else "cases"] += 1
     for c in summary["checks"]:
@@ -259,6 +260,8 @@ def digest(summary, exclude_quantised=True):
         if c["status"] in ("pass", "fail", "left_out"):
             row[c["status"]] += 1
         m = margin(c)
+        if m is not None and c.get("quantised") and m == 1:
+            row["quantised_at_limit"] += 1
         if m is None or (exclude_quantised and c.get("quantised")):
             continue
         if row["worst"] is None or m > row["worst"][0]:
@@ -300,6 +303,7 @@ def statistical_points(summary, scene, observable):
                 {"dt": p["dt"], "substeps": p.get("substeps", 1) or 1, "seconds": p["seconds_per_time_unit"],
                  "error": abs(d["relative"]), "relative": d["relative"], "se": d["relative_standard_error"],
                  "sigmas": d["sigmas"], "resolved": d["resolved"], "upper": d["upper_limit_95"],
+                 "replicates": d.get("replicates"),
                  "detectable": d["detectable"], "replicates": d["replicates"],
                  "predicted": predicted / d["reference"] if isinstance(predicted, NUMBER) else None})
     return lines

@@ -36,16 +36,30 @@ def colour(backend):
 STYLES = [("-", 3.2), ("--", 2.2), (":", 2.0), ("-.", 1.5), ((0, (1, 1)), 1.2), ((0, (5, 1)), 1.0)]
 
 
+def smallest_text_px(fig, dpi):
+    """The height in PNG pixels of the smallest visible text of `fig` saved at `dpi` (a point is
+    1/72 inch): the browser test scales it to the displayed size and holds it to 10 px."""
+    from matplotlib.text import Text
+    sizes = [t.get_fontsize() for t in fig.findobj(Text) if t.get_visible() and t.get_text().strip()]
+    return min(sizes) * dpi / 72 if sizes else None
+
+
 def _png(fig, dpi=80):
+    """The figure as a 256-colour PNG whose text chunk `smallest-text-px` records its smallest
+    text (smallest_text_px)."""
+    smallest = smallest_text_px(fig, dpi)
     buffer = io.BytesIO()
     fig.savefig(buffer, format="png", dpi=dpi)
     plt.close(fig)
     buffer.seek(0)
-    from PIL import Image  # Debian's python3-pil, a dependency of matplotlib
+    from PIL import Image, PngImagePlugin  # Debian's python3-pil, a dependency of matplotlib
     with Image.open(buffer) as picture:
         palette = picture.convert("RGB").quantize(colors=256, method=Image.Quantize.FASTOCTREE)
+    info = PngImagePlugin.PngInfo()
+    if smallest is not None:
+        info.add_text("smallest-text-px", f"{smallest:.2f}")
     out = io.BytesIO()
-    palette.save(out, format="PNG")
+    palette.save(out, format="PNG", pnginfo=info)
     return out.getvalue()
 
 
@@ -75,13 +89,13 @@ def draw_points(ax, points, colour_, label, marker="o", annotate=True, label_unr
         ax.plot([p["x"]], [y], linestyle="none", marker=marker, markerfacecolor="none", markeredgecolor=colour_,
                 markersize=7, label=None if (line or resolved or not label) else tex(label) + " (not resolved)")
         if label_unresolved:
-            ax.annotate("not resolved", (p["x"], y), textcoords="offset points", xytext=(5, -9), fontsize=6.5,
+            ax.annotate("not resolved", (p["x"], y), textcoords="offset points", xytext=(5, -9), fontsize=TEXT_PT,
                         color=colour_)
     if annotate:
         for p in points:
             if p.get("label"):
                 ax.annotate(p["label"], (p["x"], p["y"] if p["resolved"] else max(p["upper"], 1e-17)),
-                            textcoords="offset points", xytext=(4, 4), fontsize=6.5)
+                            textcoords="offset points", xytext=(4, 4), fontsize=TEXT_PT)
     return line
 
 
@@ -121,7 +135,7 @@ def draw_reference_costs(ax, summary, scenes, with_names=True):
         ax.axvline(cost, color=colour(summary["reference"]), linestyle="--", linewidth=1)
         if with_names:
             ax.annotate(tex(f"{summary['reference']} (exact), {scene}"), (cost, 0.02), xycoords=("data", "axes fraction"),
-                        rotation=90, fontsize=6.5, xytext=(3, 0), textcoords="offset points")
+                        rotation=90, fontsize=TEXT_PT, xytext=(3, 0), textcoords="offset points")
 
 
 SCENE_MARKERS = ["o", "s", "^", "D", "v", "P", "X", "*"]
@@ -147,7 +161,17 @@ def headline(summary, digest, aliases):
     panels = (1 if trajectory else 0) + 2 * (1 if statistical_scenes else 0)
     if not panels:
         return None
-    fig, axes = plt.subplots(1, panels, figsize=(4.6 * panels, 3.7), squeeze=False)
+    # Every text at least 9.5 pt: 10.6 px at 80 dpi, drawn at its natural size on the page.
+    with plt.rc_context({"font.size": HEADLINE_PT, "axes.titlesize": HEADLINE_PT, "axes.labelsize": HEADLINE_PT,
+                         "xtick.labelsize": HEADLINE_PT, "ytick.labelsize": HEADLINE_PT}):
+        return _headline(summary, digest, aliases, lines, trajectory, statistical_scenes, panels)
+
+
+HEADLINE_PT = 9.5
+
+
+def _headline(summary, digest, aliases, lines, trajectory, statistical_scenes, panels):
+    fig, axes = plt.subplots(1, panels, figsize=(4.6 * panels, 4.3), squeeze=False)
     axes = list(axes[0])
     used_scenes = []
     every_scene = list(dict.fromkeys(l["scene"] for l in lines))
@@ -162,7 +186,7 @@ def headline(summary, digest, aliases):
             marker = scene_marker(line["scene"])
             draw_points(ax, trajectory_points(line), colour(line["backend"]), None, marker, annotate=False)
         draw_reference_costs(ax, summary, scenes, with_names=False)
-        ax.set_title("trajectory scenes: mean error ± SE over phase replicates", fontsize=9)
+        ax.set_title("trajectory scenes: mean error ± SE over phase replicates")
         ax.set_ylabel("trajectory error / r_min [dimensionless]")
         used_scenes += [(sc, scene_marker(sc)) for sc in scenes]
     for check, title, ylabel in (("pressure", "pressure Z (contact-shell estimator)", "|Z − Z_ref| / Z_ref [dimensionless]"),
@@ -177,7 +201,7 @@ def headline(summary, digest, aliases):
                 draw_points(ax, points, colour(backend), None, marker, annotate=False, label_unresolved=False)
                 draw_prediction(ax, points, colour(backend))
         draw_reference_costs(ax, summary, statistical_scenes, with_names=False)
-        ax.set_title(f"{title}: relative difference of means ± SE", fontsize=9)
+        ax.set_title(f"{title}: relative difference of means ± SE")
         ax.set_ylabel(ylabel)
         if check == "pressure":
             used_scenes += [(sc, scene_marker(sc)) for sc in statistical_scenes]
@@ -198,8 +222,8 @@ def headline(summary, digest, aliases):
                           label=tex(f"{summary['reference']} (exact): its cost per time unit")))
     if statistical_scenes:
         handles.append(Line2D([], [], color="0.3", linestyle=(0, (2, 2)), label="predicted bias of the stepped rule"))
-    fig.tight_layout(rect=(0, 0.14, 1, 1))
-    fig.legend(handles=handles, loc="lower center", ncol=min(len(handles), 6), fontsize=7, frameon=False)
+    fig.tight_layout(rect=(0, 0.24, 1, 1))
+    fig.legend(handles=handles, loc="lower center", ncol=min(len(handles), 5), fontsize=HEADLINE_PT, frameon=False)
     return _png(fig)
 
 
@@ -239,7 +263,7 @@ def work_precision(summary, scene, digest, aliases, fits=None):
     ax.grid(True, which="both", alpha=0.3)
     handles, _ = ax.get_legend_handles_labels()
     if handles:
-        ax.legend(title="backend", fontsize=6.5, title_fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+        ax.legend(title="backend", fontsize=TEXT_PT, title_fontsize=TEXT_PT, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     fig.tight_layout()
     return _png(fig)
 
@@ -247,10 +271,12 @@ def work_precision(summary, scene, digest, aliases, fits=None):
 QUIET = 1e-9  # a panel whose every line stays below this carries no information
 
 
-def conservation(case_results, scene, jumps=None, labels=None):
+def conservation(case_results, scene, jumps=None, labels=None, momentum_left_out=None):
     """Relative drift of energy and momentum against time, one line per backend; `jumps`:
     backend -> {'t0', 't1', 'change'}, the interval where its energy jumped, marked. A panel
-    in which every backend stays below QUIET is left out and named in a note on the figure."""
+    in which every backend stays below QUIET is left out and named in a note on the figure; so is
+    the momentum panel where its check does not apply (`momentum_left_out`: the reason, e.g.
+    reflecting walls exchange momentum: the exact solver's |P(t) − P(0)| is physics there)."""
     if not case_results:
         return None
     labels = labels or {}
@@ -271,7 +297,7 @@ def conservation(case_results, scene, jumps=None, labels=None):
     panels = [(k, title, ylabel) for k, title, ylabel in (
         (2, "energy drift", "(E(t) - E(0)) / max K [dimensionless]"),
         (3, "momentum drift", "|P(t) - P(0)| / sqrt(2 M K(0)) [dimensionless]"))
-        if any(np.nanmax(np.abs(x[k])) >= QUIET for x in series if x[k].size)]
+        if any(np.nanmax(np.abs(x[k])) >= QUIET for x in series if x[k].size) and not (k == 3 and momentum_left_out)]
     if not panels:
         return None
     fig, axes = plt.subplots(1, len(panels), figsize=(5 * len(panels), 3.6), squeeze=False)
@@ -284,18 +310,23 @@ def conservation(case_results, scene, jumps=None, labels=None):
             if jump:
                 ax.axvspan(jump["t0"], jump["t1"], color=colour(x[0]), alpha=0.2)
         ax.set_xlabel("simulated time [scene time units]")
-        ax.set_ylabel(ylabel, fontsize=8)
-        ax.set_title(tex(f"{scene}: {title}"), fontsize=9)
+        ax.set_ylabel(ylabel, fontsize=TEXT_PT)
+        ax.set_title(tex(f"{scene}: {title}"), fontsize=TEXT_PT)
         ax.grid(True, alpha=0.3)
-        ax.legend(title="backend", fontsize=6.5, title_fontsize=7, loc="best", framealpha=0.6)
+        ax.legend(title="backend", fontsize=TEXT_PT, title_fontsize=TEXT_PT, loc="best", framealpha=0.6)
     if len(panels) == 1:
-        quiet = "momentum" if panels[0][0] == 2 else "energy"
-        fig.text(0.99, 0.01, f"{quiet}: every backend below {QUIET:g}, not drawn", ha="right", fontsize=7, color="0.4")
+        if panels[0][0] == 2 and momentum_left_out:
+            note = tex(f"momentum not drawn: {momentum_left_out}")
+        else:
+            note = f"{'momentum' if panels[0][0] == 2 else 'energy'}: every backend below {QUIET:g}, not drawn"
+        fig.text(0.99, 0.01, note, ha="right", fontsize=TEXT_PT, color="0.4")
     fig.tight_layout()
     return _png(fig)
 
 
 FEW_PAIRS = 10  # fewer pairs than this are drawn one marker each: a histogram of one pair is a flat line
+FEW_MARKERS = ("v", "^", "s", "D", "o")
+TEXT_PT = 9  # the smallest text of a figure: 10 px at 80 dpi
 
 
 def overlap_histogram(case_results, scene, labels=None):
@@ -316,16 +347,20 @@ def overlap_histogram(case_results, scene, labels=None):
         name = (labels or {}).get(backend, backend)
         label = tex(f"{name} ({d.size} pair{'s' if d.size > 1 else ''})")
         if d.size < FEW_PAIRS:
+            # one marker per pair at a count of 1, a shape per backend so that none hides another
+            ax.plot(d, np.ones(d.size), linestyle="none", marker=FEW_MARKERS[row % len(FEW_MARKERS)], markersize=9,
+                    markerfacecolor="none", markeredgewidth=1.6, color=colour(backend), label=label)
             row += 1
-            ax.plot(d, np.full(d.size, 0.5 * row), linestyle="none", marker="v", markersize=8, color=colour(backend),
-                    label=label)
         else:
             ax.hist(d, bins=bins, histtype="step", linewidth=1.6, color=colour(backend), label=label)
     ax.set_xscale("log")
     ax.set_xlabel("relative overlap depth (r_i + r_j - d) / (r_i + r_j) [dimensionless]")
     ax.set_ylabel("overlapping pairs [count]")
-    ax.set_title(tex(f"{scene}: overlaps in the final state"), fontsize=9)
-    ax.legend(title="backend", fontsize=7, title_fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    from matplotlib.ticker import MaxNLocator
+    ax.yaxis.set_major_locator(MaxNLocator(integer=True))  # a count of pairs is an integer
+    ax.set_ylim(bottom=0)
+    ax.set_title(tex(f"{scene}: overlaps in the final state"), fontsize=TEXT_PT)
+    ax.legend(title="backend", fontsize=TEXT_PT, title_fontsize=TEXT_PT, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     ax.grid(True, alpha=0.3)
     fig.tight_layout()
     return _png(fig)
@@ -354,7 +389,7 @@ def configuration(result, world, scene, backend):
         ax.set_aspect("equal")
         ax.set_xlabel("x [scene length units]")
         ax.set_ylabel("y [scene length units]")
-        ax.set_title(tex(f"{scene} ({backend}): {title}"), fontsize=9)
+        ax.set_title(tex(f"{scene} ({backend}): {title}"), fontsize=TEXT_PT)
         fig.colorbar(collection, ax=ax, label="speed |v| [length / time]", shrink=0.8)
     fig.tight_layout()
     return _png(fig)

@@ -13,6 +13,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+import figures  # noqa: E402  (TEXT_PT, the smallest text of a figure)
+
 ROW_TITLES = {
     "equation_of_state": "Equation of state",
     "collision_rate": "Collision rate (Enskog)",
@@ -54,11 +56,18 @@ def _reference(r):
 
 
 def _score(r):
+    if r.get("score") is None:  # a row shown, not judged (e.g. not mixed)
+        return "n/a"
     if r["statistic"] == "exact":
         return "equal" if r["score"] == 0 else f"off by {_num(r['score'])}"
     if r["statistic"] == "p":
         return f"p = {r['score']:.3g}"
-    return f"z = {r['score']:.2f}"
+    f = r.get("score_from")
+    if not f or f.get("z") is None:
+        return f"|z| = {r['score']:.2f}"
+    # The numbers z was computed from, printed to the digits that recompute it (test_report_data.py).
+    return (f"z = {f['z']:+.2f} from {f['value']:.6g} ± {f['standard_error']:.3g} against {f['reference']:.6g} ± "
+            f"{f['reference_uncertainty']:.3g} ({f['estimator']})")
 
 
 def _verdict(r):
@@ -132,10 +141,10 @@ def eos_figure(summary):
                  color="black" if backend == "event" else "tab:blue",
                  label=f"{backend} ({mine[0]['estimator'].split(' (')[0]})")
     top.set_ylabel("Z = βP/ρ (dimensionless)")
-    top.legend(fontsize=7, loc="upper left")
-    bottom.set_ylabel(f"Z / Z[{best['name']}] − 1 (%)", fontsize=8)
+    top.legend(fontsize=figures.TEXT_PT, loc="upper left")
+    bottom.set_ylabel(f"Z / Z[{best['name']}] − 1 (%)", fontsize=figures.TEXT_PT)
     bottom.set_xlabel("area fraction η = Nπr²/A (dimensionless)")
-    bottom.legend(fontsize=7, loc="upper left")
+    bottom.legend(fontsize=figures.TEXT_PT, loc="upper left")
     rel_points = [100 * (p["value"] / p["reference"] - 1) for p in points]
     span = max([1.0] + [abs(v) + 100 * p["standard_error"] / p["reference"] for v, p in zip(rel_points, points)])
     bottom.set_ylim(-1.5 * span, 3 * span)  # Henderson's rise near 0.7 would hide the points
@@ -151,7 +160,8 @@ def section(summary):
     if not rows(summary):
         return None
     return {"lines": summary_lines(summary), "table": table(summary), "citations": citations(summary),
-            "figure": eos_figure(summary), "finite_n": finite_n.section(summary)}
+            "figure": eos_figure(summary), "finite_n": finite_n.section(summary),
+            "z_max": f"{(summary.get('physics') or {}).get('z_max', 3):g}"}
 
 
 def markdown(summary):

@@ -77,6 +77,16 @@ def jump_notes(a, jumps):
     return {"notes": notes, "box2d": any(digest.facts(a.summary, b).get("base") == "box2d" for b in jumps)}
 
 
+def left_out_reason(summary, scene, check):
+    """Why `check` does not apply to `scene` (the left-out reason `collide validate` gave for the
+    reference's cases, e.g. reflecting walls for momentum), or None where it applies."""
+    reasons = [c["detail"] for c in summary["checks"] if c["scene"] == scene and c["check"] == check and
+               c["backend"] == summary["reference"]]
+    judged = any(c["status"] != "left_out" for c in summary["checks"] if c["scene"] == scene and c["check"] == check
+                 and c["backend"] == summary["reference"])
+    return None if judged or not reasons else reasons[0]
+
+
 def scene_section(summary, directory, a, scene, chosen, jumps):
     """One scene's figures (PNG bytes, None where a figure has nothing to show) and notes; the
     energy-jump notes are filled in by the process that lays the page out."""
@@ -89,7 +99,8 @@ def scene_section(summary, directory, a, scene, chosen, jumps):
     section.update(
         work_precision=figures.work_precision(summary, scene, digest, a.aliases, a.fit),
         shown=", ".join(f"{b} at dt = {c['dt']:g}, seed {c['seed']}" for b, c, _ in chosen),
-        conservation=figures.conservation(shown, scene, {b: j for b, (_, j) in jumps.items()}, labels),
+        conservation=figures.conservation(shown, scene, {b: j for b, (_, j) in jumps.items()}, labels,
+                                          left_out_reason(summary, scene, "momentum_drift")),
         overlaps=figures.overlap_histogram(shown, scene, labels),
         configuration=figures.configuration(result, scene_box(summary.get("scene_files", {}).get(scene, "")),
                                             scene, backend),

@@ -5,6 +5,7 @@ templates/index.html.j2 to lay out. Nothing here is HTML.
 import math
 from collections import OrderedDict
 
+import backend_lines
 import digest
 import physics
 import stability
@@ -16,10 +17,17 @@ FAILURES_SHOWN = 200  # failed checks listed on the page; every one is on checks
 def digest_table(a):
     c = a.summary["counts"]
     verdict_of = {v["backend"]: v for v in a.verdicts}
-    empty = {"verdict": "", "trusted": "", "not_for": "", "cost": "", "failed": False}
-    rows = [dict(r, **{k: v for k, v in verdict_of.get(r["backend"], empty).items() if k in empty})
+    empty = {"verdict": "", "trusted": "", "use_for": [], "not_for": "", "not_for_list": [], "cannot_run": "", "cost": "", "cost_at_accuracy": [],
+             "failed": False}
+    what = {b["backend"]: b["short"] for b in backend_lines.backend_lines(a.summary)}
+    rows = [dict(r, what=what.get(r["backend"], ""), **{k: v for k, v in verdict_of.get(r["backend"], empty).items()
+                                                         if k in empty})
             for r in digest_rows(a)]
-    return {"rows": rows, "checks": f"{c['pass']} passed, {c['fail']} failed, {c['left_out']} left out"}
+    t = a.summary["verdict_thresholds"]
+    accuracy = {"z": t.get("confidence_z", 1.96), "trajectory": f"{t.get('trajectory_accuracy', 1e-2):.2g}",
+                "pressure": f"{100 * t.get('pressure_accuracy', 5e-3):.2g}"}
+    return {"rows": rows, "checks": f"{c['pass']} passed, {c['fail']} failed, {c['left_out']} left out",
+            "accuracy": accuracy, "reference": a.summary["reference"]}
 
 
 def failures(a):
@@ -85,13 +93,35 @@ def left_out(a):
 
 
 def statistical_point_text(p):
+    """'0.006: +0.0115 ± 0.00217 (z = +5.30, 64 replicates); ...': the relative difference Δ of
+    the replicate means with its combined SE and the signed z = Δ / SE they give (summary.json's
+    sigmas, signed), so that a reader can recompute z from the row."""
+    z = math.copysign(p["sigmas"], p["relative"])
+    counted = f", {p['replicates']} replicates" if p.get("replicates") else ""
     if p["resolved"]:
-        text = f"{p['dt']:g}: {p['relative']:+.3g} ± {p['se']:.2g} ({p['sigmas']:.1f} SE)"
+        text = f"{p['dt']:g}: {p['relative']:+.3g} ± {p['se']:.3g} (z = {z:+.2f}{counted})"
     else:
-        text = f"{p['dt']:g}: {p['relative']:+.3g} ± {p['se']:.2g} (not resolved; |Δ| ≤ {p['upper']:.2g} at 95 %)"
+        text = (f"{p['dt']:g}: {p['relative']:+.3g} ± {p['se']:.3g} (z = {z:+.2f}{counted}; not resolved; "
+                f"|Δ| ≤ {p['upper']:.2g} at 95 %)")
     if p["predicted"] is not None:
         text += f", predicted {p['predicted']:+.3g}"
     return text + f"; detectable ≥ {p['detectable']:.2g}; {fmt(p['seconds'])} s"
+
+
+def statistical_limits(summary):
+    """'pressure: z ≤ 4 (cpu, opencl, step); speed distribution: KS p ≥ 0.001 (…)': each limit a
+    statistical check applied in this run, from its judged checks, stated beside the tables that
+    show the numbers it was applied to."""
+    kinds = {d["name"]: d["kind"] for d in summary.get("check_definitions", [])}
+    limits = OrderedDict()
+    for c in summary["checks"]:
+        if kinds.get(c["check"]) != "statistics" or c["status"] == "left_out":
+            continue
+        statistic = "p" if c["comparison"] == ">=" else "|z|"
+        key = (c["check"], f"{statistic} {'≥' if c['comparison'] == '>=' else '≤'} {c['tolerance']:g}")
+        limits.setdefault(key, set()).add(c["backend"])
+    return "; ".join(f"{check.replace('_', ' ')}: {limit} ({', '.join(sorted(b))})"
+                     for (check, limit), b in limits.items())
 
 
 def orders(a):
@@ -127,26 +157,29 @@ def bias_fit_rows(summary):
 
 def machine_text(summary):
     """The machine the timings come from: processor, cores, load, and how many threads each
-    case ran with times the cases run at once (summary.json's machine, execution, provenance),
-    as sentences for the timings' paragraph."""
+    case ran with times the cases run at once (summary.json's machine, execution — jobs per rank
+    and ranks, validation/run/case_dispatch.cpp — and the cases' provenance), as sentences for the
+    timings' paragraph."""
     m = summary.get("machine") or {}
-    jobs = (summary.get("execution") or {}).get("jobs", "?")
+    execution = summary.get("execution") or {}
+    jobs = int(execution.get("jobs_per_rank") or 1)
+    ranks = int(execution.get("ranks") or 1)
+    at_once = jobs * ranks
     threads = OrderedDict()
     for c in summary["cases"]:
         for k, v in (c.get("provenance") or {}).items():
-            if k.endswith(".threads"):
-                threads.setdefault(c["backend"], set()).add(v)
+            if k.endswith(".threads") and str(v).isdigit():
+                threads.setdefault(c["backend"], set()).add(int(v))
     cores = m.get("cores")
-    parts = [f"Processor: {m.get('cpu_model', '?')}, {cores} cores; load average when the run ended "
+    per_rank = f" ({jobs} per rank × {ranks} ranks)" if ranks > 1 else ""
+    parts = [f"Processor: {m.get('cpu_model', 'not recorded')}, {cores} cores; load average when the run ended "
              f"{fmt(m.get('load_1min'))} (1 min), {fmt(m.get('load_5min'))} (5 min), {fmt(m.get('load_15min'))} (15 min); "
-             f"{jobs} cases at a time (--jobs)."]
+             f"{at_once} case{'s' if at_once > 1 else ''} at a time (--jobs){per_rank}."]
     for b, values in threads.items():
-        t = max(int(v) for v in values if str(v).isdigit()) if any(str(v).isdigit() for v in values) else None
-        if t is None:
-            continue
-        busy = t * int(jobs) if str(jobs).isdigit() else None
-        over = f", oversubscribing the {cores} cores" if busy and cores and busy > cores else ""
-        parts.append(f"{b}: {t} threads per case × {jobs} cases at a time = {busy} threads{over}.")
+        t = max(values)
+        busy = t * at_once
+        over = f", oversubscribing the {cores} cores" if cores and busy > cores else ""
+        parts.append(f"{b}: {t} threads per case × {at_once} cases at a time = {busy} threads{over}.")
     return " ".join(parts)
 
 
@@ -181,10 +214,10 @@ def page(a, drawn):
             "passed": a.passed, "verdict": verdict_text(a), "is_stability": a.stability,
             "first_failures": stability.first_failure_matrix(s) if a.stability else None,
             "stability": stability.section(s) if a.stability else None,
-            "digest": digest_table(a), "identical": a.identical, "physics": physics.section(s),
+            "digest": digest_table(a), "backend_lines": backend_lines.backend_lines(s), "identical": a.identical, "physics": physics.section(s),
             "scenes_toc": [(digest.anchor("scene", sc), sc) for sc in a.scenes], "headline": headline,
             "unexpected": a.unexpected, "failures": failures(a), "check_matrix": check_matrix(a),
             "left_out": left_out(a), "has_work_precision": bool(s["work_precision"]), "orders": orders(a),
-            "bias_fits": bias_fit_rows(s), "scenes": scene_sections, "machine": machine_text(s),
+            "bias_fits": bias_fit_rows(s), "statistical_limits": statistical_limits(s), "scenes": scene_sections, "machine": machine_text(s),
             "costs": costs(s), "provenance": provenance(s)}
 

@@ -60,10 +60,10 @@ def figure(cases, scene, labels=None):
                        label=figures.tex(f"T_h = {j['horizon']:g} (seed {case['seed']})"))
     ax.set_yscale("log")
     ax.set_xlabel("simulated time [scene time units]")
-    ax.set_ylabel("position error / r_min [dimensionless]", fontsize=8)
-    ax.set_title(figures.tex(f"{scene}: trajectory error and the predictability horizon"), fontsize=9)
+    ax.set_ylabel("position error / r_min [dimensionless]", fontsize=figures.TEXT_PT)
+    ax.set_title(figures.tex(f"{scene}: trajectory error and the predictability horizon"), fontsize=figures.TEXT_PT)
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=6.5, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    ax.legend(fontsize=figures.TEXT_PT, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     fig.tight_layout()
     return figures._png(fig)
 

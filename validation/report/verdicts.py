@@ -37,6 +37,30 @@ def cost_text(summary, backend, cheapest=None):
     return f"{span} ({len(ratios)} scene{'s' if len(ratios) > 1 else ''}){tail}"
 
 
+def cost_at_accuracy_text(summary, backend):
+    """Per scene, the cost at the stated accuracy over the reference's cost there
+    ('periodic_gas 3.1× (2.5–4.0×)', 'box_gas_1000 not reached'), from summary.json's
+    verdicts.B.accuracy.cost_at_accuracy (accuracy_verdicts.h: interpolated along the backend's
+    work-precision line; the range is the two points that bracket the accuracy). The reference
+    is at its own cost on every scene: its error is zero by construction."""
+    accuracy = (summary["verdicts"].get(backend) or {}).get("accuracy") or {}
+    reference = {c["scene"]: c["seconds_per_time_unit"] for c in summary.get("costs", [])
+                 if c["backend"] == summary["reference"]}
+    out = []
+    for c in accuracy.get("cost_at_accuracy", []):
+        if not c["reached"]:
+            out.append(f"{c['scene']}: not reached")
+            continue
+        base = reference.get(c["scene"])
+        if not base:
+            out.append(f"{c['scene']}: {c['seconds_per_time_unit']:.2g} s per time unit")
+            continue
+        bound = "≤ " if c["at_most"] else ""
+        spread = "" if c["at_most"] else f" ({_times(c['low'] / base)}–{_times(c['high'] / base)})"
+        out.append(f"{c['scene']}: {bound}{_times(c['seconds_per_time_unit'] / base)}{spread}")
+    return out
+
+
 def cheapest_by_scene(summary):
     best = {}
     for c in summary.get("costs", []):
@@ -61,6 +85,41 @@ def scene_status(summary, backend, by_combination=None):
     return out
 
 
+def use_for_text(accuracy):
+    """'periodic_gas: dt ≤ 0.002', one per measured scene, from summary.json's
+    verdicts.B.accuracy.use_for (accuracy_verdicts.h: decided there at 95 % confidence against
+    the accuracy the digest's header states)."""
+    return [f"{u['scene']}: dt ≤ {u['dt']:.2g}" for u in accuracy.get("use_for", [])]
+
+
+def not_for_text(accuracy):
+    """One entry per scene where some dt is not shown within the stated accuracy, naming the
+    measured error (the signed Z bias) with its SE, z and replicates: 'periodic_gas dt
+    0.0048–0.006: Z +1.15 % ± 0.217 % (z = +5.30, 64 rep.), beyond'; 'undecided' where the
+    error bar is too wide to tell (more replicates could clear it)."""
+    out = []
+    for n in accuracy.get("not_for", []):
+        span = f"{n['dt']:.2g}" if n["dt_min"] == n["dt_max"] else f"{n['dt_min']:.2g}–{n['dt_max']:.2g}"
+        if "Z_ref" in n["error_kind"]:
+            z = f"z = {n['error'] / n['standard_error']:+.2f}, " if n["standard_error"] else ""
+            value = f"Z {100 * n['error']:+.3g} % ± {100 * n['standard_error']:.3g} % ({z}{n['replicates']} rep.)"
+        else:
+            value = f"{n['error']:.2g} ± {n['standard_error']:.2g} r_min ({n['replicates']} rep.)"
+        out.append(f"{n['scene']} dt {span}: {value}, {'beyond' if n['resolved'] else 'undecided'}")
+    return out
+
+
+def preset_text(accuracy):
+    """'fails the physical model: 68 of 540 checks fail under box2d's limits (energy drift 55, ...)'
+    for a variant judged against its own tolerances; None where it fails none or has no base."""
+    u = accuracy.get("under_preset_limits")
+    if not u or not u["failing"]:
+        return None
+    by = ", ".join(f"{k.replace('_', ' ')} {v}" for k, v in sorted(u["failing_by_check"].items(), key=lambda kv: -kv[1]))
+    return (f"FAILS the physical model: {u['failing']} of its {u['compared']} checks fail under the limits of "
+            f"{u['preset']} ({by}); passes only its own tolerances below")
+
+
 def verdict(summary, row, aliases, by_combination=None, cheapest=None):
     """{'backend', 'verdict', 'trusted', 'not_for', 'cost', 'failed', 'anchor'} for one digest row;
     `by_combination` (digest.combinations) and `cheapest` (cheapest_by_scene), the same for every
@@ -70,16 +129,20 @@ def verdict(summary, row, aliases, by_combination=None, cheapest=None):
     trusted = [s for s, v in status.items() if v == "pass"]
     cannot = [s for s, v in status.items() if v == "cannot_run"]
     failed = [s for s, v in status.items() if v == "fail"]
+    named = summary["verdicts"].get(b, {})  # what `collide validate` decided to name (verdict_facts.h)
+    accuracy = named.get("accuracy") or {}
+    physical = preset_text(accuracy)
     parts = []
     if b == summary["reference"]:
         parts.append("exact (the reference)")
+    elif physical:
+        parts.append(physical)
     elif row["fail"]:
         parts.append(f"FAILS {row['fail']} checks")
     else:
         parts.append(f"passes {row['pass']} checks")
     if b in aliases:
         parts.append(f"the same numbers as {aliases[b]}, bit for bit")
-    named = summary["verdicts"].get(b, {})  # what `collide validate` decided to name (verdict_facts.h)
     loose = named.get("loosest_tolerance")
     if loose and loose["named"]:
         parts.append(f"against its own loose tolerance: {loose['check'].replace('_', ' ')} ≤ {loose['tolerance']:.3g}, "
@@ -91,15 +154,18 @@ def verdict(summary, row, aliases, by_combination=None, cheapest=None):
     if pressure and pressure["named"]:
         parts.append(f"gas pressure off by up to {pressure['sigmas']:.0f} SE" +
                      (" (that check is left out)" if pressure["left_out"] else ""))
-    not_for = []
+    not_for = not_for_text(accuracy)
     if failed:
-        not_for.append("fails on " + ", ".join(failed))
-    if cannot:
-        not_for.append("cannot run " + ", ".join(cannot))
-    trusted_text = (f"every scene it runs ({len(trusted)})" if trusted and not failed and
-                    len(trusted) + len(cannot) == len(status) else ", ".join(trusted) or "none")
-    return {"backend": b, "verdict": "; ".join(parts), "trusted": trusted_text,
-            "not_for": "; ".join(not_for) or "—", "cost": cost_text(summary, b, cheapest), "failed": bool(row["fail"]),
+        not_for.append("fails its checks on " + ", ".join(failed))
+    use_for = use_for_text(accuracy)
+    checked = [s for s in accuracy.get("checked_only", []) if s in trusted]
+    if checked:
+        use_for.append(("every scene it runs (exact by construction; conservation checked)" if b == summary["reference"]
+                        else ", ".join(checked) + ": checked only for conservation and overlaps, not against the reference"))
+    cannot_run = ", ".join(accuracy.get("cannot_run") or cannot) or "—"
+    return {"backend": b, "verdict": "; ".join(parts), "trusted": "; ".join(use_for) or "none",
+            "use_for": use_for, "not_for_list": not_for, "not_for": "; ".join(not_for) or "—", "cannot_run": cannot_run,
+            "cost": cost_text(summary, b, cheapest), "cost_at_accuracy": cost_at_accuracy_text(summary, b), "failed": bool(row["fail"]) or bool(physical),
             "anchor": digest.anchor("backend", b)}
 
 

@@ -20,6 +20,7 @@
 #include "validation/models/bias_fit.h"
 #include "validation/models/statistics_bias_model.h"
 #include "validation/summary/drawn_cases.h"
+#include "validation/summary/accuracy_verdicts.h"
 #include "validation/summary/verdict_facts.h"
 
 namespace collide::validation {
@@ -192,6 +193,27 @@ Json check_order_json(const SuiteOutcome& outcome) {
 // What the report needs to know of each backend of the run, so that it names none itself: what
 // the backend declares (BackendInfo: precision, exact, rule, conserves), which every judgement
 // of it read. `stepping_rule` is whether it declares a rule; a variant inherits its base's.
+//
+// `ran_on`: what its first case's provenance says it ran on, found by the keys' endings so that
+// every backend names them alike: the device, its type and platform (an OpenCL device: PoCL is a
+// CPU device), the precision it computed in ("real"), its threads per case and its preset.
+Json ran_on_json(const std::map<std::string, std::string>& provenance) {
+    const auto ends = [](const std::string& key, const std::string& tail) {
+        return key.size() >= tail.size() && key.compare(key.size() - tail.size(), tail.size(), tail) == 0;
+    };
+    Object o;
+    for (const auto& [key, value] : provenance) {
+        if (ends(key, "_device")) o.text("device", value);
+        else if (ends(key, "_device_type")) o.text("device_type", value);
+        else if (ends(key, "_platform")) o.text("platform", value);
+        else if (key == "real") o.text("precision", value);
+        else if (ends(key, "threads")) o.text("threads", value);
+        else if (ends(key, "_preset")) o.text("preset", value);
+        else if (key == "variant_settings") o.text("variant_settings", value);
+    }
+    return o.json();
+}
+
 Json backends_json(const Suite& suite, const SuiteOutcome& outcome) {
     Object o;
     for (const auto& r : outcome.cases) {
@@ -205,7 +227,8 @@ Json backends_json(const Suite& suite, const SuiteOutcome& outcome) {
         x.text("base", b.substr(0, b.find('['))).text("precision", declared.precision)
             .boolean("float", declared.single_precision()).boolean("reference", b == suite.reference)
             .boolean("stepping_rule", declared.stepping_rule()).text("rule", declared.rule)
-            .boolean("exact", declared.exact).field("conserves", conserves);
+            .boolean("exact", declared.exact).field("conserves", conserves).text("description", declared.description)
+            .field("ran_on", ran_on_json(r.provenance));
         o.field(b, x.json());
     }
     return o.json();
@@ -334,6 +357,16 @@ Json bias_fit_json(const BiasConstantFit& f) {
     return o.json();
 }
 
+// The numbers a z row's score was computed from, with z signed (null where the row has none).
+Json score_from_json(const PhysicsRow::ScoreInputs& f) {
+    if (!std::isfinite(f.value)) return nullptr;
+    Object o;
+    o.text("estimator", f.estimator).number("value", f.value).field("standard_error", nullable(f.standard_error))
+        .number("reference", f.reference).number("reference_uncertainty", f.reference_uncertainty)
+        .field("z", nullable((f.value - f.reference) / std::hypot(f.standard_error, f.reference_uncertainty)));
+    return o.json();
+}
+
 Json physics_row_json(const PhysicsRow& r) {
     Object o;
     o.text("row", r.row).text("scene", r.scene).text("backend", r.backend).text("group", r.group)
@@ -343,7 +376,7 @@ Json physics_row_json(const PhysicsRow& r) {
         .number("reference_uncertainty", r.reference_uncertainty).text("reference_name", r.reference_name)
         .text("citation", r.citation).number("second_reference", r.second_reference)
         .text("second_reference_name", r.second_reference_name).text("statistic", r.statistic)
-        .number("score", r.score).boolean("resolved", r.resolved).text("verdict", to_string(r.verdict))
+        .number("score", r.score).field("score_from", score_from_json(r.score_from)).boolean("resolved", r.resolved).text("verdict", to_string(r.verdict))
         .text("detail", r.detail);
     if (!r.published.empty()) {  // a published finite-N row (published_rows.h)
         Object facts;
@@ -396,7 +429,50 @@ Json cases_json(const Suite& suite, const SuiteOutcome& outcome) {
 Json thresholds_json(const VerdictThresholds& t) {
     Object o;
     o.number("loose_tolerance_ratio", t.loose_tolerance_ratio).number("energy_drift", t.energy_drift)
-        .number("pressure_sigmas", t.pressure_sigmas);
+        .number("pressure_sigmas", t.pressure_sigmas).number("trajectory_accuracy", t.trajectory_accuracy)
+        .number("pressure_accuracy", t.pressure_accuracy).number("confidence_z", confidence_95);
+    return o.json();
+}
+
+Json strings_json(const std::vector<std::string>& v) { return array(v, [](const std::string& s) { return Json(s); }); }
+
+// What a backend can be used for, from its measured accuracy (accuracy_verdicts.h).
+Json accuracy_json(const AccuracyVerdict& v) {
+    Object o;
+    o.field("use_for", array(v.use_for, [](const UseFor& u) {
+        Object x;
+        x.text("scene", u.scene).text("error_kind", u.error_kind).number("accuracy", u.accuracy).number("dt", u.dt)
+            .number("error", u.error).number("standard_error", u.standard_error)
+            .integer("replicates", (long long)u.replicates);
+        return x.json();
+    }));
+    o.field("not_for", array(v.not_for, [](const NotFor& n) {
+        Object x;
+        x.text("scene", n.scene).text("error_kind", n.error_kind).number("accuracy", n.accuracy)
+            .number("dt_min", n.dt_min).number("dt_max", n.dt_max).number("dt", n.dt).number("error", n.error)
+            .number("standard_error", n.standard_error).field("sigmas", nullable(n.sigmas))
+            .integer("replicates", (long long)n.replicates).boolean("resolved", n.resolved);
+        return x.json();
+    }));
+    o.field("cost_at_accuracy", array(v.cost_at_accuracy, [](const CostAtAccuracy& c) {
+        Object x;
+        x.text("scene", c.scene).text("error_kind", c.error_kind).number("accuracy", c.accuracy)
+            .boolean("reached", c.reached).boolean("at_most", c.at_most);
+        if (c.reached) x.number("seconds_per_time_unit", c.seconds_per_time_unit).number("low", c.low).number("high", c.high);
+        return x.json();
+    }));
+    o.field("checked_only", strings_json(v.checked_only)).field("cannot_run", strings_json(v.cannot_run));
+    if (v.under_preset_limits) {
+        const UnderPresetLimits& u = *v.under_preset_limits;
+        Object by_check;
+        for (const auto& [check, n] : u.failing_by_check) by_check.integer(check, (long long)n);
+        Object x;
+        x.text("preset", u.preset).integer("compared", (long long)u.compared).integer("failing", (long long)u.failing)
+            .field("failing_by_check", by_check.json());
+        o.field("under_preset_limits", x.json());
+    } else {
+        o.field("under_preset_limits", nullptr);
+    }
     return o.json();
 }
 
@@ -404,6 +480,7 @@ Json thresholds_json(const VerdictThresholds& t) {
 Json verdicts_json(const Suite& suite, const SuiteOutcome& outcome) {
     std::map<std::string, bool> stepping_rule;  // what each backend declares (BackendInfo::rule)
     for (const auto& [name, backend] : outcome.declared) stepping_rule[name] = backend.stepping_rule();
+    const auto accuracy = accuracy_verdicts(suite.reference, outcome.checks, outcome.work_precision, suite.verdicts);
     Object out;
     for (const auto& [backend, f] : verdict_facts(suite.reference, outcome.checks, outcome.work_precision,
                                                    suite.verdicts, stepping_rule)) {
@@ -429,6 +506,8 @@ Json verdicts_json(const Suite& suite, const SuiteOutcome& outcome) {
         q.field("sigmas", p.sigmas ? Json(*p.sigmas) : Json(nullptr)).boolean("left_out", p.left_out)
             .boolean("named", p.named);
         o.field("pressure_offset", q.json());
+        const auto a = accuracy.find(backend);
+        o.field("accuracy", a == accuracy.end() ? Json(nullptr) : accuracy_json(a->second));
         out.field(backend, o.json());
     }
     return out.json();

@@ -1,0 +1,158 @@
+// What each backend can be used for, decided from its measured accuracy
+// (validation/summary/accuracy_verdicts.h): use for / not for at the suite's stated accuracy,
+// the scenes only checked, the scenes it cannot run, and a variant under its base's limits.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+#include "validation/summary/accuracy_verdicts.h"
+
+namespace collide::validation {
+namespace {
+
+CheckResult check(const std::string& backend, const std::string& scene, const std::string& name, double value,
+                  double tolerance, CheckStatus status = CheckStatus::pass, const std::string& tail = "__dt0.004__seed1") {
+    CheckResult c;
+    std::string token = backend;
+    std::replace(token.begin(), token.end(), '[', '-');
+    token.erase(std::remove(token.begin(), token.end(), ']'), token.end());
+    c.subject = scene + "__" + token + tail;
+    c.scene = scene;
+    c.backend = backend;
+    c.check = name;
+    c.status = status;
+    c.value = value;
+    c.tolerance = tolerance;
+    return c;
+}
+
+WorkPrecisionPoint pressure_point(double dt, double relative, double se) {
+    WorkPrecisionPoint p;
+    p.dt = dt;
+    p.error = std::fabs(relative);
+    p.error_standard_error = se;
+    p.replicates = 64;
+    StatisticalDifference d;
+    d.relative = relative;
+    d.relative_standard_error = se;
+    p.pressure = d;
+    return p;
+}
+
+WorkPrecisionLine pressure_line(const std::string& backend, std::vector<WorkPrecisionPoint> points) {
+    WorkPrecisionLine line;
+    line.scene = "gas";
+    line.backend = backend;
+    line.error_kind = "|Z - Z_ref| / Z_ref";
+    line.points = std::move(points);
+    return line;
+}
+
+TEST(AccuracyVerdicts, NotForNamesTheSignedBiasAndItsStandardError) {
+    // Z within 0.5 %: dt 0.002 (0.1 % +- 0.1 %) is; dt 0.004 (+0.8 % +- 0.2 %) and dt 0.006
+    // (+1.15 % +- 0.22 %) are not, the latter the worst, resolved (1.15 - 1.96 * 0.22 > 0.5).
+    const std::vector<CheckResult> checks = {check("step", "gas", "run", 0, 0)};
+    const auto v = accuracy_verdicts("event", checks,
+                                     {pressure_line("step", {pressure_point(0.006, 0.0115, 0.0022),
+                                                             pressure_point(0.004, 0.008, 0.002),
+                                                             pressure_point(0.002, 0.001, 0.001)})},
+                                     VerdictThresholds{})
+                       .at("step");
+    ASSERT_EQ(v.use_for.size(), 1u);
+    EXPECT_DOUBLE_EQ(v.use_for[0].dt, 0.002);
+    ASSERT_EQ(v.not_for.size(), 1u);
+    EXPECT_DOUBLE_EQ(v.not_for[0].dt_min, 0.004);
+    EXPECT_DOUBLE_EQ(v.not_for[0].dt_max, 0.006);
+    EXPECT_DOUBLE_EQ(v.not_for[0].error, 0.0115);
+    EXPECT_NEAR(v.not_for[0].sigmas, 0.0115 / 0.0022, 1e-12);
+    EXPECT_TRUE(v.not_for[0].resolved);
+    EXPECT_TRUE(v.checked_only.empty());
+}
+
+TEST(AccuracyVerdicts, ANegativeBiasKeepsItsSignAndAnUnresolvedOneIsSaidToBe) {
+    const auto v = accuracy_verdicts("event", {check("cpu", "gas", "run", 0, 0)},
+                                     {pressure_line("cpu", {pressure_point(0.002, -0.004, 0.003)})}, VerdictThresholds{})
+                       .at("cpu");
+    ASSERT_EQ(v.not_for.size(), 1u);  // 0.4 % + 1.96 * 0.3 % > 0.5 %: not shown within
+    EXPECT_DOUBLE_EQ(v.not_for[0].error, -0.004);
+    EXPECT_FALSE(v.not_for[0].resolved);
+    EXPECT_TRUE(v.use_for.empty());
+    VerdictThresholds looser;
+    looser.pressure_accuracy = 0.02;
+    EXPECT_EQ(accuracy_verdicts("event", {check("cpu", "gas", "run", 0, 0)},
+                                {pressure_line("cpu", {pressure_point(0.002, -0.004, 0.003)})}, looser)
+                  .at("cpu").use_for.size(), 1u);
+}
+
+TEST(AccuracyVerdicts, ScenesWithoutAnErrorAreCheckedOnlyAndDeclinedOnesCannotRun) {
+    const std::vector<CheckResult> checks = {check("event", "stones", "run", 0, 0),
+                                             check("event", "periodic", "run", 0, 0, CheckStatus::left_out)};
+    const auto v = accuracy_verdicts("event", checks, {}, VerdictThresholds{}).at("event");
+    EXPECT_EQ(v.checked_only, std::vector<std::string>{"stones"});
+    EXPECT_EQ(v.cannot_run, std::vector<std::string>{"periodic"});
+    EXPECT_FALSE(v.under_preset_limits);
+}
+
+TEST(AccuracyVerdicts, AVariantIsJudgedAgainUnderItsBasesLimits) {
+    // The shipped preset loses 90 % of the energy, within its own 0.95 but not the tuned 1e-3;
+    // its trajectory error (0.5) within the tuned 4; a check the base leaves out is not compared.
+    const std::vector<CheckResult> checks = {
+        check("box2d", "pair", "energy_drift", 1e-5, 1e-3), check("box2d", "pair", "trajectory_error", 0.01, 4),
+        check("box2d", "pair", "momentum_drift", 0, 0, CheckStatus::left_out),
+        check("box2d[shipped]", "pair", "energy_drift", 0.909, 0.95),
+        check("box2d[shipped]", "pair", "trajectory_error", 0.5, 4),
+        check("box2d[shipped]", "pair", "momentum_drift", 0.3, 0, CheckStatus::left_out),
+        check("box2d[shipped]", "pair", "energy_drift", 0.5, 0.95, CheckStatus::pass, "__dt0.004__seed9")};  // no twin
+    const auto v = accuracy_verdicts("event", checks, {}, VerdictThresholds{});
+    ASSERT_TRUE(v.at("box2d[shipped]").under_preset_limits);
+    const UnderPresetLimits& u = *v.at("box2d[shipped]").under_preset_limits;
+    EXPECT_EQ(u.preset, "box2d");
+    EXPECT_EQ(u.compared, 2u);
+    EXPECT_EQ(u.failing, 1u);
+    EXPECT_EQ(u.failing_by_check.at("energy_drift"), 1u);
+    EXPECT_FALSE(v.at("box2d").under_preset_limits) << "a base backend has no preset above it";
+}
+
+TEST(AccuracyVerdicts, CostAtTheStatedAccuracyIsInterpolatedOrNotReached) {
+    // Error 0.02 at cost 1, 0.005 at cost 4 (dt halving twice): 0.01 lies halfway in log error,
+    // so its cost is 2, between the two points' 1 and 4.
+    WorkPrecisionLine line;
+    line.scene = "pair";
+    line.backend = "step";
+    line.error_kind = "trajectory error / r_min";
+    const std::tuple<double, double, double> points[] = {{0.004, 0.02, 1.0}, {0.001, 0.005, 4.0}};
+    for (const auto& [dt, error, cost] : points) {
+        WorkPrecisionPoint p;
+        p.dt = dt, p.error = error, p.seconds_per_time_unit = cost, p.replicates = 2;
+        line.points.push_back(p);
+    }
+    const std::vector<CheckResult> checks = {check("step", "pair", "run", 0, 0)};
+    const auto v = accuracy_verdicts("event", checks, {line}, VerdictThresholds{}).at("step");
+    ASSERT_EQ(v.cost_at_accuracy.size(), 1u);
+    const CostAtAccuracy& c = v.cost_at_accuracy[0];
+    EXPECT_TRUE(c.reached);
+    EXPECT_FALSE(c.at_most);
+    EXPECT_NEAR(c.seconds_per_time_unit, 2.0, 1e-12);
+    EXPECT_DOUBLE_EQ(c.low, 1.0);
+    EXPECT_DOUBLE_EQ(c.high, 4.0);
+    VerdictThresholds strict;
+    strict.trajectory_accuracy = 1e-3;
+    EXPECT_FALSE(accuracy_verdicts("event", checks, {line}, strict).at("step").cost_at_accuracy[0].reached);
+    VerdictThresholds loose;
+    loose.trajectory_accuracy = 0.05;
+    const CostAtAccuracy l = accuracy_verdicts("event", checks, {line}, loose).at("step").cost_at_accuracy[0];
+    EXPECT_TRUE(l.at_most);
+    EXPECT_DOUBLE_EQ(l.seconds_per_time_unit, 1.0);
+}
+
+TEST(AccuracyVerdicts, StatedAccuracyFollowsTheErrorKind) {
+    VerdictThresholds t;
+    EXPECT_DOUBLE_EQ(*stated_accuracy("trajectory error / r_min", t), 1e-2);
+    EXPECT_DOUBLE_EQ(*stated_accuracy("|Z - Z_ref| / Z_ref", t), 5e-3);
+    EXPECT_FALSE(stated_accuracy("something else", t));
+}
+
+}  // namespace
+}  // namespace collide::validation
