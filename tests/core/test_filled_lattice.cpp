@@ -50,8 +50,10 @@ TEST(FilledLattice, FillsTheCrystalBoxWithSixNeighboursAtOneSpacing) {
     EXPECT_NEAR(f.nearest, 1.0, 1e-9);
     EXPECT_EQ(f.within, 72u * 6 / 2) << "every disk has six neighbours at the spacing, across the boundary too";
     for (std::size_t i = 0; i < s.size(); ++i) {
-        EXPECT_GE(s.x[i], 0.0), EXPECT_LT(s.x[i], 9.0);
-        EXPECT_GE(s.y[i], 0.0), EXPECT_LT(s.y[i], height);
+        EXPECT_GE(s.x[i], 0.0);
+        EXPECT_LT(s.x[i], 9.0);
+        EXPECT_GE(s.y[i], 0.0);
+        EXPECT_LT(s.y[i], height);
     }
 }
 
