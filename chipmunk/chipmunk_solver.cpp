@@ -18,16 +18,25 @@ namespace {
 // Collision types: contacts with the walls take the wall restitution and no friction.
 constexpr cpCollisionType disk_type = 1, wall_type = 2;
 
+bool touches_wall(cpArbiter* arbiter) {
+    CP_ARBITER_GET_SHAPES(arbiter, a, b);
+    return cpShapeGetCollisionType(a) == wall_type || cpShapeGetCollisionType(b) == wall_type;
+}
+
+// Chipmunk calls this once when two shapes come into touch: one pair collision, the
+// `contacts` of docs/your-solver.md (a pair that stays in touch over many steps is one).
+cpBool begin(cpArbiter* arbiter, cpSpace*, cpDataPointer data) {
+    if (!touches_wall(arbiter)) ++static_cast<ChipmunkSolver::ContactLaw*>(data)->disk_contacts;
+    return cpTrue;
+}
+
 // Chipmunk calls this for every touching pair before each step's solver. With combine =
 // "scene" it replaces Chipmunk's product rule (e = e_a e_b, mu = mu_a mu_b) by the scene's law,
-// as box2d_solver.cpp's WallRestitution does for Box2D's max rule. It counts the touching
-// disk-disk pairs of each step (the `contacts` of docs/your-solver.md).
+// as box2d_solver.cpp's WallRestitution does for Box2D's max rule.
 cpBool pre_solve(cpArbiter* arbiter, cpSpace*, cpDataPointer data) {
-    auto& law = *static_cast<ChipmunkSolver::ContactLaw*>(data);
-    CP_ARBITER_GET_SHAPES(arbiter, a, b);
-    const bool wall = cpShapeGetCollisionType(a) == wall_type || cpShapeGetCollisionType(b) == wall_type;
-    if (!wall) ++law.disk_contacts;
+    const auto& law = *static_cast<ChipmunkSolver::ContactLaw*>(data);
     if (law.set_per_contact) {
+        const bool wall = touches_wall(arbiter);
         cpArbiterSetRestitution(arbiter, wall ? law.wall_restitution : law.restitution);
         cpArbiterSetFriction(arbiter, wall ? 0.0 : law.friction);
     }
@@ -89,6 +98,7 @@ void ChipmunkSolver::load(const Scene& scene, const ParticleState<double>& initi
     cpSpaceSetCollisionSlop(space, options_.collision_slop);
     cpSpaceSetCollisionBias(space, options_.collision_bias);
     cpCollisionHandler* handler = cpSpaceAddDefaultCollisionHandler(space);
+    handler->beginFunc = begin;
     handler->preSolveFunc = pre_solve;
     handler->userData = law_.get();
     create_walls();

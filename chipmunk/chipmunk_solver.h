@@ -41,7 +41,7 @@ public:
     const cpSpace* space() const { return space_; }
     const cpBody* body(std::size_t i) const { return bodies_.at(i); }
 
-    // What the pre-solve callback needs: the scene's contact law and the contact count.
+    // What the collision callbacks need: the scene's contact law, and the pair collisions so far.
     struct ContactLaw {
         double restitution = 1, wall_restitution = 1, friction = 0;
         bool set_per_contact = true;   // combine = "scene"
