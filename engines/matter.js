@@ -3,8 +3,9 @@
 // of up to `circle_sides` sides: matter.js has no true circles), four static rectangles outside
 // the walls, static circles for stones. matter.js computes in JavaScript numbers (double) with
 // position Verlet in milliseconds and pixel-like units. Presets and why: docs/engines.md.
-const Matter = require('matter-js');
-const { main, meanRadius } = require('./protocol.js');
+const { main, meanRadius, requireEngine } = require('./protocol.js');
+
+const Matter = requireEngine('matter');
 
 const { Bodies, Body, Composite, Engine, Events, Resolver } = Matter;
 const baseDelta = Body._baseDelta;  // ms: matter.js states velocities per 1/60 s
@@ -63,4 +64,4 @@ function create(request, disks, o) {
   };
 }
 
-main({ name: 'matter', packageName: 'matter-js', precision: 'double', presets: { tuned, shipped }, create });
+main({ name: 'matter', presets: { tuned, shipped }, create });

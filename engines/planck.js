@@ -2,8 +2,9 @@
 // planck.js (npm `planck`), the JavaScript rewrite of Box2D, as an outside solver: one dynamic
 // body with one circle fixture per disk, a static chain loop on the walls, static bodies for
 // stones. planck computes in JavaScript numbers (double). Presets and why: docs/engines.md.
-const planck = require('planck');
-const { main, meanRadius } = require('./protocol.js');
+const { main, meanRadius, requireEngine } = require('./protocol.js');
+
+const planck = requireEngine('planck');
 
 // Global settings of planck (planck.Settings), read before this adapter changes any.
 const shipped = {
@@ -59,4 +60,4 @@ function create(request, disks, o) {
   };
 }
 
-main({ name: 'planck', packageName: 'planck', precision: 'double', presets: { tuned, shipped }, create });
+main({ name: 'planck', presets: { tuned, shipped }, create });

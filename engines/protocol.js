@@ -80,6 +80,27 @@ function meanRadius(disks) {
   return disks.reduce((sum, d) => sum + d.radius, 0) / disks.length;
 }
 
+// What engines.json says of engine `name`: its package, precision, library file.
+function engineEntry(name) {
+  const entry = JSON.parse(fs.readFileSync(path.join(__dirname, 'engines.json'), 'utf8')).find((e) => e.name === name);
+  if (!entry) throw new Error(`engines.json has no engine '${name}'`);
+  return entry;
+}
+
+// The engine's npm package; when it is not installed, the call fails naming the engine and the
+// command that installs it (the case then fails with that message, and the suite goes on).
+function requireEngine(name) {
+  const { package: pkg } = engineEntry(name);
+  try {
+    return require(pkg);
+  } catch (e) {
+    if (e.code !== 'MODULE_NOT_FOUND') throw e;
+    process.stderr.write(`${name}: the npm package ${pkg} is not installed; run \`npm ci\` in ${__dirname} ` +
+      '(scripts/install-deps.sh does)\n');
+    process.exit(3);
+  }
+}
+
 // The installed version (some packages do not export their package.json to require()).
 function packageVersion(name) {
   return JSON.parse(fs.readFileSync(path.join(__dirname, 'node_modules', name, 'package.json'), 'utf8')).version;
@@ -91,12 +112,14 @@ function refusal(request, engine) {
   return '';
 }
 
-// engine = { name, packageName, precision, presets: {tuned, shipped}, init() (optional, async),
-//            create(request, disks, settings) -> world }
+// engine = { name, presets: {tuned, shipped}, init() (optional, async),
+//            create(request, disks, settings) -> world }; its package and precision: engines.json
 // world  = { step(h), state(i) -> [x, y, vx, vy], contacts (pair collisions so far) }
 // Steps of h = dt / substeps; output time t is reached after round(t / dt) steps of dt, as
 // collide's own stepped backends do. `seconds` is the time spent in step() alone.
-async function run(engine) {
+async function run(adapter) {
+  const entry = engineEntry(adapter.name);
+  const engine = { ...adapter, packageName: entry.package, precision: entry.precision };
   const dir = process.argv[process.argv.length - 1];
   const request = readRequest(dir);
   const version = `${engine.packageName} ${packageVersion(engine.packageName)}`;
@@ -135,4 +158,4 @@ function main(engine) {
   });
 }
 
-module.exports = { main, meanRadius, readNpy, writeNpy, readRequest };
+module.exports = { main, requireEngine, meanRadius, readNpy, writeNpy, readRequest };

@@ -3,8 +3,9 @@
 // one dynamic rigid body with one ball collider per disk, four fixed cuboids outside the walls,
 // fixed balls for stones. Rapier computes in f32 (precision float), so positions are taken
 // relative to the box's centre, where floats are finest. Presets and why: docs/engines.md.
-const RAPIER = require('@dimforge/rapier2d-compat');
-const { main, meanRadius } = require('./protocol.js');
+const { main, meanRadius, requireEngine } = require('./protocol.js');
+
+const RAPIER = requireEngine('rapier');
 
 const shipped = {
   solver_iterations: 4,        // IntegrationParameters' numSolverIterations default
@@ -62,5 +63,5 @@ function create(request, disks, o) {
   };
 }
 
-main({ name: 'rapier', packageName: '@dimforge/rapier2d-compat', precision: 'float', presets: { tuned, shipped },
+main({ name: 'rapier', presets: { tuned, shipped },
   init: () => RAPIER.init(), create });
