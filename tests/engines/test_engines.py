@@ -167,3 +167,50 @@ def test_cost_is_the_engines_own_stepping_time_not_the_call(ci_suite):
     record = tomllib.loads((out / case["result_file"]).read_text().split("\n", 1)[1])
     text = json.dumps(record)
     assert "call_wall_seconds" in text and "solver_seconds" in text, text[:2000]
+
+
+def test_report_page_engines_side_by_side_shows_the_table_and_the_figure(ci_suite, tmp_path):
+    out, summary, _ = ci_suite
+    r = subprocess.run([COLLIDE, "report", str(out)], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr[-2000:]
+    page = out / "report" / "engines.html"
+    assert page.exists()
+    from selenium import webdriver  # Debian's python3-selenium, chromium, chromium-driver (install-deps.sh)
+    from selenium.webdriver.chrome.service import Service
+    from selenium.webdriver.common.by import By
+    options = webdriver.ChromeOptions()
+    options.binary_location = shutil.which("chromium") or "/usr/bin/chromium"
+    for arg in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--window-size=1400,1800"):
+        options.add_argument(arg)
+    driver = webdriver.Chrome(service=Service(shutil.which("chromedriver") or "/usr/bin/chromedriver"), options=options)
+    try:
+        driver.get(page.as_uri())
+        screenshot = tmp_path / "engines.png"
+        driver.save_screenshot(str(screenshot))
+        table = driver.find_element(By.ID, "engines-table")
+        assert table.is_displayed()
+        shown = {row.find_elements(By.TAG_NAME, "td")[0].text.strip("■ ").strip()
+                 for row in table.find_elements(By.TAG_NAME, "tr")[1:]}
+        assert {"box2d", "chipmunk", "chipmunk[shipped]"} | {f"{e}{p}" for e in ENGINES for p in ("", "[shipped]")} <= shown
+        image = driver.find_element(By.CSS_SELECTOR, "#engines-work-precision img")
+        assert image.is_displayed() and driver.execute_script("return arguments[0].naturalWidth", image) > 100
+        top = driver.execute_script("return arguments[0].getBoundingClientRect().top", image)
+        assert top < 1800, "the figure is not on the screenshot"
+        for link in table.find_elements(By.TAG_NAME, "a"):  # every number links to a case record that exists
+            assert pathlib.Path(link.get_attribute("href").removeprefix("file://")).exists(), link.get_attribute("href")
+    finally:
+        driver.quit()
+    from PIL import Image
+    with Image.open(screenshot) as shot:
+        assert shot.size[0] >= 1400 and len(shot.convert("L").getcolors(1 << 16) or []) > 10  # not a blank page
+
+
+def test_every_backend_gets_a_distinct_colour_and_marker():
+    import sys
+    sys.path.insert(0, str(ROOT / "validation" / "report"))
+    import figures
+    names = ["event", "step", "cpu", "opencl", "box2d", "box2d[shipped]", "chipmunk", "chipmunk[shipped]",
+             "mine", "yours"] + [f"{e}{p}" for e in ENGINES for p in ("", "[shipped]")]
+    figures.assign_styles(names)
+    assert len({figures.colour(n) for n in names}) == len(names)
+    assert len({figures.marker(n) for n in names}) == len(names)
