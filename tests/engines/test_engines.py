@@ -214,3 +214,30 @@ def test_every_backend_gets_a_distinct_colour_and_marker():
     figures.assign_styles(names)
     assert len({figures.colour(n) for n in names}) == len(names)
     assert len({figures.marker(n) for n in names}) == len(names)
+
+
+def test_a_solver_without_contacts_gets_collision_rate_left_out_with_the_reason(tmp_path):
+    suite = tmp_path / "suite.toml"
+    suite.write_text(f"""name = "no-contacts"
+scene_dir = "{ROOT / 'data' / 'scenes'}"
+backends = ["event"]
+reference = "event"
+seeds = [1, 2]
+warmup_fraction = 0
+time_limit = 300
+[output]
+hdf5 = false
+[solver.straight]
+command = "/usr/bin/python3 {ROOT / 'tests' / 'engines' / 'no_contacts_solver.py'}"
+[[scene]]
+name = "box_gas_1000"
+compare = "statistics"
+duration = 0.2
+dt = [2e-3]
+""")
+    out = tmp_path / "out"
+    subprocess.run([COLLIDE, "validate", str(suite), "--out", str(out), "--jobs", "2"], capture_output=True, text=True)
+    summary = json.loads((out / "summary.json").read_text())
+    rate = [c for c in summary["checks"] if c["backend"] == "straight" and c["check"] == "collision_rate"]
+    assert rate and all(c["status"] == "left_out" for c in rate), rate
+    assert "does not report its contacts" in rate[0]["detail"]
