@@ -1,6 +1,7 @@
 // The list of backends compiled into collide. Adding a backend = one entry here; the
 // command line, validation runner, benchmark and conformance tests pick it up from this list.
 #include "box2d/box2d_solver.h"
+#include "chipmunk/chipmunk_solver.h"
 #include "core/backend_registry.h"
 #include "cpu/cpu_solver.h"
 #include "opencl/opencl_solver.h"
@@ -21,6 +22,11 @@ const std::vector<BackendInfo>& all_backends() {
     // Jacobi snapshot (docs/stepping-rules.md, "Energy at e = 1").
     const std::vector<std::string> momentum_and_energy = {"momentum", "energy"}, momentum = {"momentum"};
     const std::string either_rule = "collide-first|integrate-first";  // the scene's [run] order
+    // The limits of a game engine's sequential-impulse contact solver (Box2D, Chipmunk): derived
+    // for Box2D from its restitution threshold and linear slop (docs/validation.md, "box2d").
+    const std::vector<std::pair<std::string, double>> sequential_impulse_limits = {
+        {"momentum_drift", 1e-4}, {"energy_drift", 5e-2}, {"max_overlap", 0.25}, {"mean_overlap", 0.05},
+        {"overlapping_pairs_per_disk", 1.0}, {"wall_penetration", 0.25}, {"trajectory_error", 1.0}};
     static const std::vector<BackendInfo> backends = {
         {.name = "event", .precision = "double",
          .description = "exact event-driven hard disks (EDMD), serial: the reference", .supports = &EventSolver::supports,
@@ -51,8 +57,15 @@ const std::vector<BackendInfo>& all_backends() {
          .supports = box2d_supports,
          .create = [](const BackendOptions& o) -> std::unique_ptr<Solver> { return std::make_unique<Box2dSolver>(o); },
          .sweeps_iterations = true,
-         .limits = {{"momentum_drift", 1e-4}, {"energy_drift", 5e-2}, {"max_overlap", 0.25}, {"mean_overlap", 0.05},
-                    {"overlapping_pairs_per_disk", 1.0}, {"wall_penetration", 0.25}, {"trajectory_error", 1.0}}},
+         .limits = sequential_impulse_limits},
+        // Chipmunk2D, the other C engine people use: sequential impulses like Box2D, in double, with
+        // no restitution threshold. Not in "all": it is one of the engines of the engines suite
+        // (validation/suites/engines.toml, docs/engines.md), not a method the default suite judges.
+        {.name = "chipmunk", .precision = "double", .description = "Chipmunk2D 7 space of circle bodies (Debian's libchipmunk)",
+         .supports = chipmunk_supports,
+         .create = [](const BackendOptions& o) -> std::unique_ptr<Solver> { return std::make_unique<ChipmunkSolver>(o); },
+         .sweeps_iterations = true, .in_all = false,
+         .limits = sequential_impulse_limits},
         // Samplers: configurations from the equilibrium measure, no time, no velocities
         // (docs/monte-carlo.md). Not in "all": the default suite keeps its time.
         {.name = "ecmc", .precision = "double",

@@ -117,6 +117,9 @@ std::string request_text(const ExternalSolverSpec& spec, const Scene& scene, std
     number("gravity_y", scene.physics.gravity_y);
     number("damping", scene.physics.damping);
     number("duration", scene.run.duration);
+    // A suite variant's settings ([variant."NAME[...]"]) arrive as the scene's [backend.NAME] table.
+    if (const auto options = scene.backend_options.find(spec.name); options != scene.backend_options.end())
+        for (const auto& [key, value] : options->second) out << "option " << key << ' ' << value << '\n';
     return out.str();
 }
 
@@ -130,11 +133,19 @@ std::string state_npy(const ParticleState<double>& s) {
     return npy_bytes(rows, {s.size(), 7});
 }
 
+std::string join_words(const std::vector<std::string>& words) {
+    std::string out;
+    for (const auto& w : words) out += (out.empty() ? "" : ", ") + w;
+    return out;
+}
+
 // What result.txt says.
 struct Answer {
     std::vector<double> times;
     bool has_times = false;
     std::int64_t steps = 0, contacts = 0;
+    bool has_contacts = false;
+    std::optional<double> seconds;  // its own stepping time (protocol 2)
     std::string version, refusal;
     std::string precision;  // "" when result.txt does not say
 };
@@ -187,6 +198,14 @@ Answer parse_answer(const std::string& text) {
             std::int64_t v = 0;
             if (!whole_number(word, v)) throw std::runtime_error(where + key + ": expected a whole number >= 0");
             (key == "steps" ? a.steps : a.contacts) = v;
+            if (key == "contacts") a.has_contacts = true;
+        } else if (key == "seconds") {
+            std::string word;
+            in >> word;
+            double v = 0;
+            if (!real_number(word, v) || !(v >= 0) || !std::isfinite(v))
+                throw std::runtime_error(where + "seconds: expected a number of seconds >= 0");
+            a.seconds = v;
         } else if (key == "precision") {
             a.precision = rest_of_line(in);
             if (const std::string why = precision_problem(a.precision); !why.empty())
@@ -198,7 +217,7 @@ Answer parse_answer(const std::string& text) {
             if (a.refusal.empty()) throw std::runtime_error(where + "refuse: expected the reason after the word");
         } else {
             throw std::runtime_error(where + "unknown key '" + printable_tail(key, 40) +
-                                     "' (expected times, steps, contacts, precision, version or refuse)");
+                                     "' (expected times, steps, contacts, seconds, precision, version or refuse)");
         }
     }
     return a;
@@ -254,6 +273,7 @@ public:
         p["solver_precision"] = spec_.computed_precision();
         if (!version_.empty()) p["solver_version"] = version_;
         if (!files_sha256_.empty()) p["solver_files_sha256"] = files_sha256_;
+        if (spec_.handles) p["solver_handles"] = join_words(*spec_.handles);
         return p;
     }
 
@@ -310,6 +330,11 @@ private:
         store(dir.file("states.npy"), times);
         stats_.steps += answer.steps;
         stats_.contacts += answer.contacts;
+        // Whether every call so far counted its contacts: without them the collision rate of the
+        // case is unknown, and left out (docs/your-solver.md, "contacts").
+        stats_.counters["contacts_reported"] = (calls_ == 1 || stats_.counters["contacts_reported"] > 0) && answer.has_contacts;
+        if (answer.seconds) stats_.counters["solver_seconds"] += *answer.seconds;
+        else stats_.counters["solver_seconds_missing"] = 1;
     }
 
     std::string quoted(const std::string& output) const {
@@ -378,6 +403,47 @@ private:
 
 }  // namespace
 
+const std::vector<std::string>& solver_capabilities() {
+    static const std::vector<std::string> all = {"walls", "periodic", "restitution", "friction", "gravity", "damping", "stones"};
+    return all;
+}
+
+std::string capabilities_text() { return join_words(solver_capabilities()); }
+
+std::vector<std::string> scene_needs(const Scene& scene) {
+    std::vector<std::string> needs = {scene.periodic() ? "periodic" : "walls"};
+    if (scene.physics.restitution != 1 || scene.physics.wall_restitution != 1) needs.push_back("restitution");
+    if (scene.has_friction()) needs.push_back("friction");
+    if (scene.has_gravity()) needs.push_back("gravity");
+    if (scene.has_damping()) needs.push_back("damping");
+    const bool stones = std::any_of(scene.generators.begin(), scene.generators.end(), [](const ParticleGenerator& g) {
+        return g.stone || std::any_of(g.disks.begin(), g.disks.end(), [](const auto& d) { return d.stone; });
+    });
+    if (stones) needs.push_back("stones");
+    return needs;
+}
+
+std::string handles_problem(const std::vector<std::string>& handles) {
+    const auto& known = solver_capabilities();
+    for (std::size_t i = 0; i < handles.size(); ++i) {
+        if (std::find(known.begin(), known.end(), handles[i]) == known.end())
+            return "capabilities from " + capabilities_text() + ", not \"" + printable_tail(handles[i], 40) + "\"";
+        if (std::find(handles.begin(), handles.begin() + std::ptrdiff_t(i), handles[i]) != handles.begin() + std::ptrdiff_t(i))
+            return "each capability once (\"" + handles[i] + "\" is named twice)";
+    }
+    return "";
+}
+
+std::string unhandled_need(const ExternalSolverSpec& spec, const Scene& scene) {
+    if (!spec.handles) return "";
+    std::vector<std::string> missing;
+    for (const std::string& need : scene_needs(scene))
+        if (std::find(spec.handles->begin(), spec.handles->end(), need) == spec.handles->end()) missing.push_back(need);
+    if (missing.empty()) return "";
+    return spec.name + " declares that it handles " + (spec.handles->empty() ? "nothing" : join_words(*spec.handles)) +
+           "; the scene needs " + join_words(missing) + " too (handles = [...] in its [solver] table)";
+}
+
 std::string request_root_problem() {
     const std::string root = request_root();
     const std::string named = std::getenv("TMPDIR") && *std::getenv("TMPDIR") ? "TMPDIR=" + root : root;
@@ -431,6 +497,8 @@ std::string spec_problem(const ExternalSolverSpec& spec) {
         return "python: expected \"module:Class\" or \"file.py:Class\", not \"" + spec.python_class + "\"";
     if (std::string why = rule_problem(spec.rule); !why.empty()) return "rule: expected " + why;
     if (std::string why = precision_problem(spec.precision); !why.empty()) return "precision: expected " + why;
+    if (spec.handles)
+        if (std::string why = handles_problem(*spec.handles); !why.empty()) return "handles: expected " + why;
     return claims_problem(spec.exact, spec.rule);
 }
 
@@ -462,7 +530,12 @@ BackendInfo external_backend(const ExternalSolverSpec& spec) {
     if (spec.exact) info.conserves = {"momentum", "energy"};
     else if (!spec.rule.empty()) info.conserves = {"momentum"};
     info.description = "outside solver: " + (spec.python_class.empty() ? spec.command : spec.python_class);
-    info.supports = [](const Scene&) -> std::optional<std::string> { return std::nullopt; };
+    // Declared capabilities leave a scene out before any program call; without them, every scene
+    // goes to the program, which may refuse it.
+    info.supports = [spec](const Scene& scene) -> std::optional<std::string> {
+        if (std::string why = unhandled_need(spec, scene); !why.empty()) return why;
+        return std::nullopt;
+    };
     info.create = [spec](const BackendOptions&) { return make_external_solver(spec); };
     return info;
 }

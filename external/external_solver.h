@@ -11,6 +11,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -19,8 +20,20 @@
 
 namespace collide::external {
 
-// The protocol version written into every request (request.txt: "protocol 1").
-inline constexpr int protocol_version = 1;
+// The protocol version written into every request (request.txt: "protocol 2"). Version 2 adds,
+// all optional and so backward compatible: `option KEY VALUE` request lines (a suite variant's
+// settings), `seconds` in result.txt (the solver's own stepping time, its cost), and the
+// declarations `handles` (capabilities) and `files` (package files in its provenance).
+inline constexpr int protocol_version = 2;
+
+// The scene features a solver may declare it handles (`handles = [...]` in its [solver] table),
+// in the order they are named: "walls" (reflecting boundaries), "periodic", "restitution" (e or
+// the wall restitution below 1), "friction", "gravity", "damping", "stones".
+const std::vector<std::string>& solver_capabilities();
+std::string capabilities_text();  // "walls, periodic, ...", for messages
+
+// The capabilities `scene` needs (a subset of solver_capabilities()).
+std::vector<std::string> scene_needs(const Scene& scene);
 
 struct ExternalSolverSpec {
     std::string name;         // its backend name in every output: lower-case letters, digits, _ or -
@@ -36,6 +49,12 @@ struct ExternalSolverSpec {
     bool exact = false;
     std::string precision;  // "double", "float", or "" (not declared: double)
     std::string computed_precision() const { return precision.empty() ? "double" : precision; }
+    // The capabilities it declares (protocol 2); unset: it may get any scene and refuse one when
+    // called ("refuse REASON"). Set: a scene that needs another is left out without a call.
+    std::optional<std::vector<std::string>> handles;
+    // Files beyond the command's words whose hashes go into every case's provenance (its lock
+    // file, the engine's library), relative to its directory.
+    std::vector<std::string> files;
     double call_time_limit = 60;  // seconds per program call
     std::string origin;       // where it was named, for messages ("--solver", "suite.toml:12")
 };
@@ -54,6 +73,13 @@ std::string rule_problem(const std::string& rule);
 
 // "" or what is wrong with a precision name ("" is not declared: double).
 std::string precision_problem(const std::string& precision);
+
+// "" or what is wrong with a declared capability list (an unknown name, named twice).
+std::string handles_problem(const std::vector<std::string>& handles);
+
+// "" when a solver declaring `handles` can run `scene`, else why not (what it needs that the
+// solver does not declare).
+std::string unhandled_need(const ExternalSolverSpec& spec, const Scene& scene);
 
 // "" or the contradiction between the declarations: exact (no time step) with a stepping rule.
 std::string claims_problem(bool exact, const std::string& rule);

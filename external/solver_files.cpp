@@ -21,13 +21,19 @@ namespace {
 // command is then the interpreter and collide's runner: the class's own file is what counts).
 std::vector<std::string> candidate_words(const ExternalSolverSpec& spec) {
     // The words as the shell splits them: a quoted path with a space or a quote is one file.
-    if (spec.python_class.empty()) return shell_words(spec.command);
+    if (spec.python_class.empty()) {
+        std::vector<std::string> words = shell_words(spec.command);
+        words.insert(words.end(), spec.files.begin(), spec.files.end());  // declared: lock file, library
+        return words;
+    }
     std::string file = spec.python_class.substr(0, spec.python_class.rfind(':'));
     if (file.size() < 3 || file.compare(file.size() - 3, 3, ".py") != 0) {
         std::replace(file.begin(), file.end(), '.', '/');
         file += ".py";
     }
-    return {file};
+    std::vector<std::string> words = {file};
+    words.insert(words.end(), spec.files.begin(), spec.files.end());
+    return words;
 }
 
 std::string utc_text(std::time_t t) {

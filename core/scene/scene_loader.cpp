@@ -259,7 +259,7 @@ ParticleGenerator read_particles(const TomlFields& block, const World& world) {
 // key under [backend.step]).
 void read_backend_options(const TomlFields& root, Scene& scene) {
     const TomlFields backends = root.table("backend");
-    backends.allow_only({"event", "step", "cpu", "opencl", "box2d"});
+    backends.allow_only({"event", "step", "cpu", "opencl", "box2d", "chipmunk"});
     for (const auto& [name, node] : backends.raw()) {
         const TomlFields options = backends.table(name.str());
         for (const auto& [key, value] : options.raw()) {

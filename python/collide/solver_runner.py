@@ -57,6 +57,9 @@ def read_request(directory):
                 continue
             if key == "output_times":
                 scene[key] = [float(v) for v in value.split()]
+            elif key == "option":  # protocol 2: a suite variant's setting, "option KEY VALUE"
+                name, _, setting = value.partition(" ")
+                scene.setdefault("options", {})[name] = setting
             elif key in _WORDS:
                 scene[key] = value
             elif key in ("protocol", "seed", "disks", "substeps"):

@@ -95,6 +95,29 @@ TEST(ExternalSolver, ACorrectAnswerComesThroughBitForBit) {
     EXPECT_EQ(p.at("solver_command"), "cp states.npy result.txt");
 }
 
+// Protocol 2: the solver's own `seconds` summed over its calls, whether it counted contacts, a
+// variant's settings as option lines, and a bad `seconds` named with its line.
+TEST(ExternalSolver, Protocol2SecondsContactsAndOptionLines) {
+    Fixture f;
+    const RunResult r = f.run(f.answering(npy_bytes(f.states(), {2, 2, 4}), good_times + "contacts 3\nseconds 0.25\n"));
+    EXPECT_EQ(r.stats.counters.at("solver_seconds"), 0.25);
+    EXPECT_EQ(r.stats.counters.at("contacts_reported"), 1.0);
+    EXPECT_EQ(r.stats.counters.count("solver_seconds_missing"), 0u);
+    const RunResult silent = f.run(f.answering(npy_bytes(f.states(), {2, 2, 4}), good_times));
+    EXPECT_EQ(silent.stats.counters.at("contacts_reported"), 0.0);
+    EXPECT_EQ(silent.stats.counters.at("solver_seconds_missing"), 1.0);
+    EXPECT_NE(f.fault(f.answering(npy_bytes(f.states(), {2, 2, 4}), good_times + "seconds -1\n"))
+                  .find("result.txt line 2: seconds: expected a number of seconds >= 0"),
+              std::string::npos);
+    const std::string keep = f.dir.file("kept");
+    f.scene.backend_options["mine"] = {{"preset", "shipped"}};
+    try {
+        f.run(f.shell("cp -r \"$1\" " + keep + "; exit 1"));
+    } catch (const std::exception&) {
+    }
+    EXPECT_NE(test::read_text_file(keep + "/request.txt").find("option preset shipped\n"), std::string::npos);
+}
+
 // The files a command names are found as the shell splits its words: a path with a space or a
 // quote in it, quoted or escaped, is one file and is hashed (it was left out of the provenance).
 TEST(ExternalSolver, ProvenanceHashesEveryFileTheShellWouldRun) {
@@ -212,7 +235,7 @@ TEST(ExternalSolver, TheRequestHoldsTheCaseAndTheInitialState) {
     } catch (const std::exception&) {
     }
     const std::string request = test::read_text_file(keep + "/request.txt");
-    EXPECT_NE(request.find("protocol 1\n"), std::string::npos);
+    EXPECT_NE(request.find("protocol " + std::to_string(protocol_version) + "\n"), std::string::npos);
     EXPECT_NE(request.find("output_times 0.5 1\n"), std::string::npos);
     EXPECT_NE(request.find("dt 0.01\n"), std::string::npos);
     EXPECT_NE(request.find("disks 2\n"), std::string::npos);

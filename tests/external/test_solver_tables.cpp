@@ -40,6 +40,39 @@ TEST(SolverTables, RefuseEachMistakeWithItsPlace) {
     EXPECT_NE(suite_refusal("[solver.mine]\ncommand = 3\n").find("a non-empty string"), std::string::npos);
 }
 
+// Protocol 2: what a solver handles, declared once, leaves a scene out before any call; the
+// declared files join the hashed provenance; each mistake names its key and line.
+TEST(SolverTables, HandlesLeavesOutScenesTheSolverDoesNotDeclare) {
+    const Suite s = parse_suite_text("[solver.engine]\ncommand = \"x\"\nhandles = [\"walls\", \"gravity\"]\n"
+                                     "files = [\"lock.json\"]\n");
+    ASSERT_TRUE(s.solvers.at(0).handles.has_value());
+    EXPECT_EQ(s.solvers.at(0).files, (std::vector<std::string>{"lock.json"}));
+    const auto backends = backends_with_solvers(s, {}, {"python3", "runner.py"});
+    Scene walled;
+    walled.name = "walled";
+    walled.physics.gravity_y = -1;
+    EXPECT_FALSE(backends.at(0).supports(walled).has_value());
+    Scene periodic = walled;
+    periodic.world.boundary = Boundary::periodic;
+    periodic.physics.restitution = 0.9;
+    const auto why = backends.at(0).supports(periodic);
+    ASSERT_TRUE(why.has_value());
+    EXPECT_NE(why->find("the scene needs periodic, restitution too"), std::string::npos) << *why;
+    // Without the key, every scene goes to the program (which may refuse it when called).
+    const Suite open = parse_suite_text("[solver.engine]\ncommand = \"x\"\n");
+    EXPECT_FALSE(backends_with_solvers(open, {}, {"python3", "runner.py"}).at(0).supports(periodic).has_value());
+}
+
+TEST(SolverTables, HandlesAndFilesMistakesAreNamedWithTheirLine) {
+    EXPECT_NE(suite_refusal("[solver.e]\ncommand = \"x\"\nhandles = [\"walls\", \"wind\"]\n").find("s.toml:3: solver.e.handles: expected capabilities from walls, periodic"),
+              std::string::npos);
+    EXPECT_NE(suite_refusal("[solver.e]\ncommand = \"x\"\nhandles = [\"walls\", \"walls\"]\n").find("named twice"), std::string::npos);
+    EXPECT_NE(suite_refusal("[solver.e]\ncommand = \"x\"\nhandles = \"walls\"\n").find("an array of capability names"),
+              std::string::npos);
+    EXPECT_NE(suite_refusal("[solver.e]\ncommand = \"x\"\nfiles = [3]\n").find("solver.e.files: expected an array of file paths"),
+              std::string::npos);
+}
+
 TEST(SolverTables, ANameTakenTwiceOrByABackendIsRefused) {
     Suite s = parse_suite_text("[solver.mine]\ncommand = \"x\"\n");
     external::ExternalSolverSpec again = s.solvers.at(0);  // the same name once more

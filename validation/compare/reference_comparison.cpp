@@ -347,6 +347,18 @@ CheckResult speed_distribution_check(const Group& g, const Group& ref, double p_
     return speed;
 }
 
+// Why the group's collision rate is unknown, if it is: an outside solver that does not count
+// its contacts (no `contacts` line in result.txt, protocol 2) reports 0 collisions, which is no
+// measurement of its rate (docs/your-solver.md, "contacts").
+std::optional<std::string> contacts_unknown(const Group& g) {
+    for (const CaseResult* r : g.cases) {
+        const auto reported = r->counters.find("contacts_reported");
+        if (r->finished() && reported != r->counters.end() && reported->second == 0)
+            return "the solver does not report its contacts (no 'contacts' line in result.txt): its collision rate is unknown";
+    }
+    return std::nullopt;
+}
+
 // The statistics comparison of a many-body group: pressure, collision_rate and
 // speed_distribution against the reference, each appended to `checks`. The work-precision
 // point gets the judged differences of the replicate means (what the check judges and the
@@ -363,7 +375,12 @@ void compare_statistics(const Group& g, const Group& ref, const SceneFeatures& f
     checks.push_back(pressure);
     CheckResult rate = make_check(g, "collision_rate");
     const ReplicateMeans nu = replicate_means(g, ref, collision_rate);
-    z_check(rate, nu, ref, tol.statistics_z, "collisions per disk per time", models.collision_rate);
+    if (const auto why = contacts_unknown(g)) {
+        rate.status = CheckStatus::left_out;
+        rate.detail = *why;
+    } else {
+        z_check(rate, nu, ref, tol.statistics_z, "collisions per disk per time", models.collision_rate);
+    }
     checks.push_back(rate);
     if (pressure.status != CheckStatus::left_out) point.pressure = statistical_difference(z, pressure, tol.statistics_z);
     if (rate.status != CheckStatus::left_out) point.collision_rate = statistical_difference(nu, rate, tol.statistics_z);

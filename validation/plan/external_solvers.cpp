@@ -26,6 +26,21 @@ std::string string_key(const toml::table& t, const std::string& key, const std::
     return *node->value<std::string>();
 }
 
+// An array of non-empty strings, or nullopt when the key is absent.
+std::optional<std::vector<std::string>> string_list(const toml::table& t, const std::string& key, const std::string& file,
+                                                    const std::string& where, const std::string& what) {
+    const toml::node* node = t.get(key);
+    if (!node) return std::nullopt;
+    const toml::array* array = node->as_array();
+    if (!array) fail(file, *node, where + "." + key, what);
+    std::vector<std::string> out;
+    for (const auto& v : *array) {
+        if (!v.is_string() || v.value<std::string>()->empty()) fail(file, *node, where + "." + key, what);
+        out.push_back(*v.value<std::string>());
+    }
+    return out;
+}
+
 }  // namespace
 
 std::vector<external::ExternalSolverSpec> read_solver_tables(const toml::table& root, const std::string& file,
@@ -42,9 +57,10 @@ std::vector<external::ExternalSolverSpec> read_solver_tables(const toml::table& 
         const toml::table* t = sub.as_table();
         if (!t) fail(file, sub, where, "a table with command = \"...\" or python = \"module:Class\"");
         for (const auto& [k, v] : *t)
-            if (k.str() != "command" && k.str() != "python" && k.str() != "rule" && k.str() != "exact" && k.str() != "precision")
+            if (k.str() != "command" && k.str() != "python" && k.str() != "rule" && k.str() != "exact" && k.str() != "precision" &&
+                k.str() != "handles" && k.str() != "files")
                 fail(file, v, where + "." + std::string(k.str()),
-                     "no such key here (allowed: command, python, rule, exact, precision)");
+                     "no such key here (allowed: command, python, rule, exact, precision, handles, files)");
         external::ExternalSolverSpec spec;
         spec.name = name;
         spec.command = string_key(*t, "command", file, where);
@@ -59,6 +75,12 @@ std::vector<external::ExternalSolverSpec> read_solver_tables(const toml::table& 
             if (const std::string why = external::precision_problem(precision); !why.empty())
                 fail(file, *t->get("precision"), where + ".precision", why);
         }
+        spec.handles = string_list(*t, "handles", file, where,
+                                   "an array of capability names (" + external::capabilities_text() + ")");
+        if (spec.handles)
+            if (const std::string why = external::handles_problem(*spec.handles); !why.empty())
+                fail(file, *t->get("handles"), where + ".handles", why);
+        spec.files = string_list(*t, "files", file, where, "an array of file paths (relative to the suite file)").value_or(std::vector<std::string>{});
         spec.directory = dir;
         spec.origin = file + ":" + std::to_string(sub.source().begin.line);
         if (spec.command.empty() == spec.python_class.empty())

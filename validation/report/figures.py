@@ -21,14 +21,45 @@ BACKEND_COLOURS = {"event": "black", "step": "tab:blue", "cpu": "tab:orange",
                    "opencl": "tab:green", "box2d": "tab:red"}
 
 
-VARIANT_COLOURS = ["tab:purple", "tab:brown", "tab:pink", "tab:olive", "tab:cyan", "tab:gray"]
+# Every other backend (a variant, an outside solver, an engine) gets a colour of its own from
+# this list, distinct from the fixed ones and from each other: assign_styles() hands them out
+# over the report's whole backend list before any figure is drawn (figures are drawn in forked
+# processes, which could not agree on a colour handed out on first use).
+VARIANT_COLOURS = ["tab:purple", "tab:brown", "tab:pink", "tab:olive", "tab:cyan", "tab:gray", "gold", "navy",
+                   "teal", "lime", "maroon", "darkorange", "indigo", "deeppink", "darkkhaki", "slateblue"]
+MARKERS = ["o", "s", "^", "D", "v", "P", "X", "*", "<", ">", "h", "p", "d", "H", "8", "1", "2", "3", "4"]
+_ASSIGNED = {}
+_MARKER = {}
+
+
+def assign_styles(backends):
+    """A distinct colour and marker for each of `backends` (in their order), for every figure of the report."""
+    _ASSIGNED.clear()
+    _MARKER.clear()
+    free = [c for c in VARIANT_COLOURS]
+    for k, b in enumerate(backends):
+        _MARKER[b] = MARKERS[k % len(MARKERS)]
+        if b in BACKEND_COLOURS:
+            continue
+        if free:
+            start = sum(map(ord, b)) % len(free)  # stable for a backend whatever else runs, where free
+            _ASSIGNED[b] = free.pop(start)
+        else:  # more backends than colours: the colours repeat, the markers still tell them apart
+            _ASSIGNED[b] = VARIANT_COLOURS[k % len(VARIANT_COLOURS)]
 
 
 def colour(backend):
     """A backend's colour; a variant such as 'box2d[shipped]' gets its own, stable one."""
     if backend in BACKEND_COLOURS:
         return BACKEND_COLOURS[backend]
+    if backend in _ASSIGNED:
+        return _ASSIGNED[backend]
     return VARIANT_COLOURS[sum(map(ord, backend)) % len(VARIANT_COLOURS)]
+
+
+def marker(backend):
+    """A backend's marker: distinct across the report's backends (assign_styles), else a circle."""
+    return _MARKER.get(backend, "o")
 
 
 # Backends drawn in the same plot get different dash patterns and widths, widest first, so

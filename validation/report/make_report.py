@@ -29,6 +29,7 @@ import sections  # noqa: E402
 import stability  # noqa: E402
 import figures  # noqa: E402
 import physics  # noqa: E402
+import engines_page  # noqa: E402
 from analysis import Analysis, digest_rows, fmt, predicted_text, verdict_text  # noqa: E402
 from digest import ReportInputError  # noqa: E402
 from templating import md  # noqa: E402
@@ -140,12 +141,14 @@ def render(directory):
     check_outputs(out)
     summary = digest.load_summary(directory)
     safe_output.make_output_directory(out)
+    figures.assign_styles(list(summary.get("backends", {})))  # one colour and marker per backend, every figure
     a = Analysis(summary)
     write_html(summary, directory, os.path.join(out, "index.html"), a)
     write_checks_html(summary, os.path.join(out, "checks.html"))
     write_checks_csv(summary, os.path.join(out, "checks.csv"))
     write_markdown(summary, os.path.join(out, "summary.md"), a)
     write_markdown_full(summary, os.path.join(out, "summary-full.md"), a)
+    engines_page.write(directory, summary, out)  # "Engines side by side", where two or more engines ran
     return out
 
 
