@@ -93,8 +93,7 @@ void print_pressure(const SolverStats& stats) {
                 counter("beta_pressure_correlation_time"), counter("beta_pressure_equilibration"));
     if (c.count("psi6_traversals"))
         std::printf("; psi6 traversals %g%s", counter("psi6_traversals"), counter("psi6_mixed") != 0 ? "" : ", NOT MIXED");
-    std::printf(")
-");
+    std::printf(")\n");
 }
 
 void print_summary(const Scene& scene, const std::string& backend, const RunResult& r) {
