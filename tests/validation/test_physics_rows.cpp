@@ -3,6 +3,7 @@
 // (pressure scaled by 1.01, one collision in a thousand dropped, restitution 0.999 where 1 is
 // claimed) that must make the right row fail while the exact solver passes.
 #include <gtest/gtest.h>
+#include <gsl/gsl_cdf.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,6 +19,7 @@
 #include "test_backends.h"
 #include "tests/support/test_scenes.h"
 #include "validation/compare/physics_rows.h"
+#include "validation/judge/statistics.h"
 #include "validation/suite_runner.h"
 
 namespace collide::validation {
@@ -350,10 +352,13 @@ TEST(PhysicsRows, StudentTConvertsToTheNormalScoreOfEqualTailByHand) {
     // Q_t3(t) = 1/2 - (1/pi) (atan(t / sqrt 3) + sqrt(3) t / (t^2 + 3)), closed form for 3 dof.
     const double t = 3, q = 0.5 - (std::atan(t / std::sqrt(3.0)) + std::sqrt(3.0) * t / (t * t + 3)) / M_PI;
     EXPECT_NEAR(q, 0.02883, 1e-5);
+    EXPECT_NEAR(gsl_cdf_ugaussian_Q(normal_equivalent_of_t(t, 3)), q, 1e-12);  // the same upper tail
     EXPECT_NEAR(normal_equivalent_of_t(t, 3), 1.8986, 1e-3);
     EXPECT_DOUBLE_EQ(normal_equivalent_of_t(-2.5, 0), 2.5);
     EXPECT_NEAR(normal_equivalent_of_t(3, 1e6), 3, 1e-4);
-    EXPECT_GT(normal_equivalent_of_t(60, 3), 5);  // far tails stay finite and large
+    // t's heavy tail: t = 60 on 3 dof is as rare as a normal 4.41, not 60.
+    const double far = 60, q_far = 0.5 - (std::atan(far / std::sqrt(3.0)) + std::sqrt(3.0) * far / (far * far + 3)) / M_PI;
+    EXPECT_NEAR(gsl_cdf_ugaussian_Q(normal_equivalent_of_t(far, 3)), q_far, 1e-3 * q_far);
 }
 
 // Four replicates of the fluid whose second-half virial scatters wildly (Z 1 and 20), while each
