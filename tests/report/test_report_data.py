@@ -446,7 +446,8 @@ def recompute_every_z(test, html):
         test.assertAlmostEqual(scipy.stats.norm.isf(scipy.stats.t.sf(abs(t), dof)), score, delta=0.02 + 0.01 * score,
                                msg=m.group(0))
         students += 1
-    test.assertEqual(len(re.findall(r"\bt = ", text)), students, "a t printed without its numbers")
+    # ("t = 3.1" alone is a time: a Student t is the one followed by "from")
+    test.assertEqual(len(re.findall(rf"\bt = {NUM} from", text)), students, "a t printed without its numbers")
     printed = len(re.findall(r"\bz = ", text))
     test.assertEqual(printed, checked, "a z printed without the numbers it was computed from")
     return checked + students
