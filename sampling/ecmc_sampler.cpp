@@ -2,12 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
+#include <numbers>
 #include <stdexcept>
 
 #include "core/numerics/target_time.h"
 #include "core/scene/option_reader.h"
+#include "core/structure/orientational_order.h"
+#include "core/thermo/pressure_record.h"
 #include "sampling/sampler_input.h"
-#include "sampling/sampler_pressure.h"
 
 namespace collide {
 
@@ -57,6 +60,7 @@ void EcmcSampler::load(const Scene& scene, const ParticleState<double>& initial)
     chains_done_ = lifts_ = entry_chains_ = 0;
     entry_sum_ = now_ = 0;
     pressure_series_.clear();
+    psi6_phase_.clear();
 }
 
 void EcmcSampler::place_in_cells() {
@@ -168,6 +172,11 @@ void EcmcSampler::record_chain(double lift_sum) {
     entry_sum_ += 1 + lift_sum / chain_length_;
     if (++entry_chains_ < chains_per_entry_) return;
     pressure_series_.push_back(entry_sum_ / double(entry_chains_) * density_d2_);
+    // psi6 once per entry: each disk moved about one diameter since the last sample, so the
+    // phase moves by far less than pi between samples (orientational_order.h's mixing check).
+    ParticleState<double> configuration;
+    read_state(configuration);
+    psi6_phase_.push_back(std::arg(global_psi6(scene_.world, configuration)));
     entry_sum_ = 0;
     entry_chains_ = 0;
 }
@@ -198,7 +207,11 @@ SolverStats EcmcSampler::stats() const {
     c["lifts"] = double(lifts_);
     c["chain_length"] = chain_length_;
     c["chains_per_entry"] = double(chains_per_entry_);
-    record_beta_pressure(pressure_series_, double(chains_per_entry_), c);
+    // The counters every backend records (core/thermo/pressure_record.h), lengths in chains.
+    if (pressure_series_.size() >= 2)
+        for (const auto& [name, value] : pressure_counters({pressure_series_, double(chains_per_entry_), psi6_phase_,
+                                                            density_d2_ * std::numbers::pi / 4, {}}))
+            c[name] = value;
     return s;
 }
 

@@ -13,7 +13,8 @@
 // lift (sqrt(sigma^2 - dy^2) at contact),
 //     beta P / rho = 1 + < sum over the chain's lifts of x_ij > / l,     rho = N / A,
 // recorded as beta P d^2 (d = sigma the diameter) per entry of `chains_per_entry` chains and
-// turned into beta_pressure +- beta_pressure_error by batch means (sampler_pressure.h).
+// turned into beta_pressure +- beta_pressure_error by batch means, with psi6's phase sampled once
+// per entry for the mixing check (core/thermo/pressure_record.h, the counters of every backend).
 //
 // A sampler has no time and no velocities: the scene's duration only divides the run into
 // outputs (the fraction t / duration of the chains is done at output time t), and read_state
@@ -83,6 +84,7 @@ private:
     double entry_sum_ = 0;
     std::int64_t entry_chains_ = 0;
     std::vector<double> pressure_series_;
+    std::vector<double> psi6_phase_;  // arg psi6 at the end of each entry
 };
 
 }  // namespace collide

@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
+#include <numbers>
 
 #include "core/numerics/target_time.h"
 #include "core/scene/option_reader.h"
 #include "sampling/sampler_input.h"
-#include "sampling/sampler_pressure.h"
+#include "core/structure/orientational_order.h"
+#include "core/thermo/pressure_record.h"
 
 namespace collide {
 
@@ -60,6 +63,7 @@ void MetropolisSampler::load(const Scene& scene, const ParticleState<double>& in
     sweeps_done_ = trials_ = accepted_ = tuning_accepted_ = tuning_trials_ = 0;
     now_ = 0;
     pressure_series_.clear();
+    psi6_phase_.clear();
 }
 
 double MetropolisSampler::wrap(int axis, double p) const {
@@ -140,6 +144,11 @@ bool MetropolisSampler::overlaps_any(std::uint32_t i, double x, double y) const 
 }
 // One beta P d^2 from this configuration's separations at contact (see the header).
 void MetropolisSampler::record_pressure() {
+    // psi6 at every recorded sweep (a sweep moves each disk by at most the step size, so the
+    // phase moves little between samples: orientational_order.h's mixing check).
+    ParticleState<double> configuration;
+    read_state(configuration);
+    psi6_phase_.push_back(std::arg(global_psi6(scene_.world, configuration)));
     const std::size_t n = pos_[0].size();
     histogram_.clear();
     const World& w = scene_.world;
@@ -179,7 +188,11 @@ SolverStats MetropolisSampler::stats() const {
     c["step_size"] = delta_;
     c["acceptance"] = trials_ > 0 ? double(accepted_) / double(trials_) : 0;
     c["contact_window"] = histogram_.window();
-    record_beta_pressure(pressure_series_, 1, c);
+    // The counters every backend records (core/thermo/pressure_record.h), lengths in sweeps.
+    const World& w = scene_.world;
+    const double area_fraction = double(pos_[0].size()) * std::numbers::pi * sigma2_ / (4 * w.width() * w.height());
+    if (pressure_series_.size() >= 2)
+        for (const auto& [name, value] : pressure_counters({pressure_series_, 1, psi6_phase_, area_fraction, {}})) c[name] = value;
     return s;
 }
 

@@ -98,6 +98,7 @@ private:
     std::int64_t tuning_trials_ = 0, tuning_accepted_ = 0;  // in the current tuning block
     double now_ = 0;
     std::vector<double> pressure_series_;  // beta P d^2, one per sampled sweep
+    std::vector<double> psi6_phase_;       // arg psi6, one per sampled sweep
 };
 
 }  // namespace collide

@@ -39,6 +39,11 @@ std::map<std::string, double> pressure_counters(const PressureSeries& series) {
     const std::size_t traversals = phase_traversals(sampled_phases(series, e.equilibration_cut));
     c["psi6_traversals"] = double(traversals);
     c["psi6_mixed"] = series.area_fraction < psi6_mixing_from_area_fraction || phase_mixed(traversals) ? 1 : 0;
+    if (!series.collision_rate.empty()) {
+        const SeriesEstimate rate = estimate_stationary_mean(series.collision_rate);
+        c["collision_rate_mean"] = rate.mean;
+        c["collision_rate_error"] = rate.error;
+    }
     return c;
 }
 
@@ -59,7 +64,7 @@ std::size_t pressure_windows_per_output(std::size_t output_intervals) {
 
 PressureRecorder::PressureRecorder(const Scene& scene, const ParticleState<double>& initial, double entry_length)
     : world_(scene.world), temperature_(kinetic_temperature(scene, initial)),
-      area_(scene.world.width() * scene.world.height()), diameter_(2 * initial.radius.at(0)) {
+      area_(scene.world.width() * scene.world.height()), diameter_(2 * initial.radius.at(0)), disks_(initial.size()) {
     series_.entry_length = entry_length;
     series_.area_fraction = double(initial.size()) * std::numbers::pi * diameter_ * diameter_ / (4 * area_);
 }
@@ -71,8 +76,10 @@ void PressureRecorder::sample(const SolverStats& stats, double t) {
         const double virial_rate = (v->second - *last_virial_) / (2 * (t - *last_time_));
         const double z = compressibility_factor(virial_rate, temperature_);
         series_.beta_pressure.push_back(beta_pressure_d2(z, temperature_.moving_disks, area_, diameter_));
+        const double collisions = double(stats.contacts) - *last_contacts_;
+        series_.collision_rate.push_back(2 * collisions / (double(disks_) * (t - *last_time_)));
     }
-    last_time_ = t, last_virial_ = v->second;
+    last_time_ = t, last_virial_ = v->second, last_contacts_ = double(stats.contacts);
 }
 
 void PressureRecorder::observe(const ParticleState<double>& state) {

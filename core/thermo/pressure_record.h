@@ -34,11 +34,16 @@ struct PressureSeries {
     // arg psi6 (-pi, pi], sampled evenly over the same run as beta_pressure (any count).
     std::vector<double> psi6_phase;
     double area_fraction = 0;           // eta of the scene: the mixing check applies from 0.69
+    // Collisions per disk per unit time in the same windows (event-driven runs only; empty for
+    // samplers): 2 Delta C / (N Delta t), each collision involving two disks.
+    std::vector<double> collision_rate;
 };
 
 // The counters of the series (see above). Lengths (correlation time, equilibration) are in
 // the unit of entry_length. psi6_traversals counts over the sampled part (after the cut);
 // psi6_mixed is 1 when traversals >= 3, and 1 below eta 0.69 where the check does not apply.
+// With a collision-rate series, also collision_rate_mean and collision_rate_error (batch means,
+// the same estimator and its own equilibration cut).
 std::map<std::string, double> pressure_counters(const PressureSeries& series);
 
 // Why a scene gets no pressure record, or nullopt when it gets one: a periodic box (walls
@@ -57,7 +62,8 @@ std::size_t pressure_windows_per_output(std::size_t output_intervals);
 // Collects the series of an event-driven run. beta P d^2 per window from the increment of the
 // collision virial V (SolverStats counter virial_sum, sum over collisions of d.(J n)):
 // W = Delta V / (2 Delta t), Z by pressure_estimator.h with the temperature of the initial
-// state (e = 1: conserved), and psi6's phase at every output.
+// state (e = 1: conserved), the collision rate per disk per window from the increment of the
+// collision count (SolverStats contacts), and psi6's phase at every output.
 class PressureRecorder {
 public:
     PressureRecorder(const Scene& scene, const ParticleState<double>& initial, double entry_length);
@@ -72,7 +78,8 @@ private:
     World world_;
     KineticTemperature temperature_;
     double area_ = 0, diameter_ = 0;
-    std::optional<double> last_time_, last_virial_;
+    std::size_t disks_ = 0;
+    std::optional<double> last_time_, last_virial_, last_contacts_;
     PressureSeries series_;
 };
 

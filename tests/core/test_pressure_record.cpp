@@ -43,6 +43,20 @@ TEST(PressureRecord, CountersOfASeries) {
     EXPECT_EQ(pressure_counters(s).at("psi6_mixed"), 1);  // the check applies from eta 0.69
 }
 
+// The collision-rate series of the same windows gets its own batch means; a series without
+// one (a sampler's) gets no collision-rate counters.
+TEST(PressureRecord, CollisionRateCountersOfASeries) {
+    PressureSeries s;
+    std::mt19937_64 rng(7);
+    std::normal_distribution<double> pressure(5, 1), rate(12, 2);
+    for (int k = 0; k < 2000; ++k) s.beta_pressure.push_back(pressure(rng)), s.collision_rate.push_back(rate(rng));
+    const auto c = pressure_counters(s);
+    EXPECT_NEAR(c.at("collision_rate_mean"), 12, 4 * 2 / std::sqrt(2000.0));
+    EXPECT_NEAR(c.at("collision_rate_error"), 2 / std::sqrt(2000.0), 0.3 * 2 / std::sqrt(2000.0));
+    s.collision_rate.clear();
+    EXPECT_EQ(pressure_counters(s).count("collision_rate_mean"), 0u);
+}
+
 // A periodic gas of `n` equal disks at area fraction eta with the scene's seed.
 struct Gas {
     Scene scene;
@@ -70,6 +84,11 @@ TEST(PressureRecord, EventRunOfAPeriodicGasRecordsEveryCounter) {
         EXPECT_EQ(stats.counters.at("beta_pressure_batches"), 20) << backend;
         EXPECT_GT(stats.counters.at("beta_pressure_error"), 0) << backend;
         EXPECT_LT(stats.counters.at("beta_pressure_error"), 0.05 * stats.counters.at("beta_pressure")) << backend;
+        // The windows' collision rates average to the run's own count: 2 C / (N t) over the
+        // part after the cut, so within a few errors of the whole run's rate.
+        const double whole_run = 2 * double(stats.contacts) / (100 * 40.0);
+        EXPECT_NEAR(stats.counters.at("collision_rate_mean"), whole_run, 5 * stats.counters.at("collision_rate_error") + 0.01 * whole_run)
+            << backend;
     }
 }
 

@@ -15,6 +15,8 @@ import sys
 import tempfile
 import unittest
 
+import scipy.stats
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPORT = os.path.join(HERE, "..", "..", "validation", "report")
 sys.path.insert(0, REPORT)
@@ -433,9 +435,22 @@ def recompute_every_z(test, html):
         z, value, se, reference, u = map(_f, m.groups())
         test.assertAlmostEqual((value - reference) / math.hypot(se, u), z, delta=0.01 + 0.01 * abs(z), msg=m.group(0))
         checked += 1
+    # Student's t from a replicate scatter: t recomputes as z does, and its normal score is the
+    # normal quantile of t's tail probability with the printed degrees of freedom.
+    students = 0
+    student = re.compile(rf"t = ({NUM}) from ({NUM}) ± ({NUM}) against ({NUM}) ± ({NUM}) \(.*?\); ({NUM}) degrees "
+                         rf"of freedom give the normal score ({NUM})")
+    for m in student.finditer(text):
+        t, value, se, reference, u, dof, score = map(_f, m.groups())
+        test.assertAlmostEqual((value - reference) / math.hypot(se, u), t, delta=0.01 + 0.01 * abs(t), msg=m.group(0))
+        test.assertAlmostEqual(scipy.stats.norm.isf(scipy.stats.t.sf(abs(t), dof)), score, delta=0.02 + 0.01 * score,
+                               msg=m.group(0))
+        students += 1
+    # ("t = 3.1" alone is a time: a Student t is the one followed by "from")
+    test.assertEqual(len(re.findall(rf"\bt = {NUM} from", text)), students, "a t printed without its numbers")
     printed = len(re.findall(r"\bz = ", text))
     test.assertEqual(printed, checked, "a z printed without the numbers it was computed from")
-    return checked
+    return checked + students
 
 
 class EveryZRecomputesFromThePage(unittest.TestCase):
@@ -461,6 +476,24 @@ class EveryZRecomputesFromThePage(unittest.TestCase):
         self.assertEqual(recompute_every_z(self, html), 1)
         self.assertIn("z = -0.64 from 0.99712", html)
         self.assertIn("|z| ≤ 3", html)
+
+    def test_a_student_t_row_prints_t_and_its_normal_score(self):
+        # 4 replicates: t = 3.2 on 3 dof has the two-sided tail 4.9 %, a normal score of 1.97.
+        row = {"row": "haff", "scene": "cooling", "backend": "event", "group": "g", "parameter_name": "",
+               "parameter": None, "measured": "tau", "estimator": "fit", "value": 1.032, "standard_error": 0.01,
+               "replicates": 4, "reference": 1.0, "reference_uncertainty": 0.0, "reference_name": "Haff",
+               "citation": "c", "second_reference": None, "second_reference_name": "", "statistic": "z", "score": 1.97,
+               "resolved": True, "verdict": "pass", "detail": "",
+               "score_from": {"estimator": "fit (per replicate)", "value": 1.032, "standard_error": 0.01,
+                              "reference": 1.0, "reference_uncertainty": 0.0, "degrees_of_freedom": 3, "t": 3.2}}
+        html = templating.render("physics.html.j2", physics=physics.section({"physics": {"rows": [row], "curves": [],
+                                                                                          "z_max": 3}}))
+        self.assertEqual(recompute_every_z(self, html), 1)
+        row["score"] = 3.2  # t taken as a normal z: the page no longer recomputes
+        html = templating.render("physics.html.j2", physics=physics.section({"physics": {"rows": [row], "curves": [],
+                                                                                          "z_max": 3}}))
+        with self.assertRaises(AssertionError):
+            recompute_every_z(self, html)
 
     def test_a_z_without_its_numbers_fails(self):
         with self.assertRaises(AssertionError):

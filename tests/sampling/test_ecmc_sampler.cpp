@@ -87,6 +87,18 @@ TEST(EcmcSampler, PressureAtLowDensityFollowsTheVirialSeries) {
     EXPECT_GT(r.stats.counters.at("beta_pressure_correlation_time"), 0);
 }
 
+// ecmc records the counters of every backend (core/thermo/pressure_record.h), psi6 included:
+// at eta = 0.15 the orientation decorrelates within an entry, so its phase crosses the full
+// range many times over a run (before, ecmc recorded no psi6 counters at all).
+TEST(EcmcSampler, RecordsTheCountersOfEveryBackendWithPsi6) {
+    const RunResult r = sample(periodic_gas(256, 0.15), 12000, 4);
+    for (const char* name : {"beta_pressure", "beta_pressure_error", "beta_pressure_correlation_time",
+                             "beta_pressure_equilibration", "beta_pressure_batches", "psi6_traversals", "psi6_mixed"})
+        EXPECT_TRUE(r.stats.counters.count(name)) << name;
+    EXPECT_GE(r.stats.counters.at("psi6_traversals"), 3);
+    EXPECT_EQ(r.stats.counters.at("psi6_mixed"), 1);
+}
+
 // Same scene and seed: the same bits; another seed: other bits. The pinned hash changes with
 // any change to the chains' arithmetic, their order or the draws (state_hash.h).
 TEST(EcmcSampler, SameSeedSameBitsAndThePinnedHash) {

@@ -3,6 +3,7 @@
 // (pressure scaled by 1.01, one collision in a thousand dropped, restitution 0.999 where 1 is
 // claimed) that must make the right row fail while the exact solver passes.
 #include <gtest/gtest.h>
+#include <gsl/gsl_cdf.h>
 
 #include <algorithm>
 #include <cmath>
@@ -12,11 +13,13 @@
 
 #include "core/metrics.h"
 #include "core/scene/scene_loader.h"
+#include "core/thermo/kinetic_temperature.h"
 #include "core/thermo/velocity_sphere.h"
 #include "reference/event/event_solver.h"
 #include "test_backends.h"
 #include "tests/support/test_scenes.h"
 #include "validation/compare/physics_rows.h"
+#include "validation/judge/statistics.h"
 #include "validation/suite_runner.h"
 
 namespace collide::validation {
@@ -281,7 +284,8 @@ TEST(PhysicsRows, EventPassesTheFluidRowsAndAPressureScaledByOnePercentFails) {
     const auto good = run_rows(fluid_suite(), Injected::none, "physics_fluid");
     const PhysicsRow& z = only_row(good, "equation_of_state", 0.6);
     EXPECT_EQ(z.verdict, PhysicsVerdict::pass) << z.value << " +- " << z.standard_error << " vs " << z.reference;
-    EXPECT_EQ(z.estimator, "collision virial");
+    EXPECT_EQ(z.estimator, "collision virial, batch means per replicate, pooled by inverse variance");
+    EXPECT_EQ(z.score_from.degrees_of_freedom, 0);
     EXPECT_TRUE(z.resolved) << "at 0.6 Henderson is 1.2 % above Kolafa & Rottner";
     EXPECT_EQ(only_row(good, "collision_rate", 0.6).verdict, PhysicsVerdict::pass);
 
@@ -338,6 +342,82 @@ TEST(PhysicsRows, RestitutionBelowOneWhereOneIsClaimedFailsTheEquationOfState) {
     const auto lossy = run_rows(suite, Injected::none, "physics_fluid_lossy");
     const PhysicsRow& z = only_row(lossy, "equation_of_state", 0.6);
     EXPECT_EQ(z.verdict, PhysicsVerdict::fail) << z.value << " +- " << z.standard_error << " vs " << z.reference;
+}
+
+// --- The statistics a row is judged by, on synthesized results ------------------------------
+
+// Student's t on 3 dof against the normal: Q_t3(3) = 0.0288 (two-sided 5.8 %, against 0.27 % for
+// a normal z of 3), whose normal quantile is 1.899; a normal score stays itself (dof 0).
+TEST(PhysicsRows, StudentTConvertsToTheNormalScoreOfEqualTailByHand) {
+    // Q_t3(t) = 1/2 - (1/pi) (atan(t / sqrt 3) + sqrt(3) t / (t^2 + 3)), closed form for 3 dof.
+    const double t = 3, q = 0.5 - (std::atan(t / std::sqrt(3.0)) + std::sqrt(3.0) * t / (t * t + 3)) / M_PI;
+    EXPECT_NEAR(q, 0.02883, 1e-5);
+    EXPECT_NEAR(gsl_cdf_ugaussian_Q(normal_equivalent_of_t(t, 3)), q, 1e-12);  // the same upper tail
+    EXPECT_NEAR(normal_equivalent_of_t(t, 3), 1.8986, 1e-3);
+    EXPECT_DOUBLE_EQ(normal_equivalent_of_t(-2.5, 0), 2.5);
+    EXPECT_NEAR(normal_equivalent_of_t(3, 1e6), 3, 1e-4);
+    // t's heavy tail: t = 60 on 3 dof is as rare as a normal 4.41, not 60.
+    const double far = 60, q_far = 0.5 - (std::atan(far / std::sqrt(3.0)) + std::sqrt(3.0) * far / (far * far + 3)) / M_PI;
+    EXPECT_NEAR(gsl_cdf_ugaussian_Q(normal_equivalent_of_t(far, 3)), q_far, 1e-3 * q_far);
+}
+
+// Four replicates of the fluid whose second-half virial scatters wildly (Z 1 and 20), while each
+// replicate's pressure record (beta_pressure +- beta_pressure_error, batch means) and
+// collision-rate record sit on the references within their errors: the rows must judge the
+// pooled records (pass, dof 0) and print the numbers z recomputes from.
+TEST(PhysicsRows, TheRowsJudgeEachReplicatesBatchMeansPooledByInverseVariance) {
+    Suite suite;
+    suite.reference_dir = references();
+    suite.scenes = {physics_scene("hard_disk_fluid", {"equation_of_state", "collision_rate"},
+                                  {"particles.0.radius", {0.416378530658203}})};
+    const Scene scene = load_scene(suite.scenes[0].path);
+    const ParticleState<double> initial = generate_initial_state(scene);
+    const double area = scene.world.width() * scene.world.height(), sigma = 2 * initial.radius[0];
+    const double rho_d2 = double(initial.size()) / area * sigma * sigma, eta = rho_d2 * M_PI / 4;
+    const PublishedReference kr = load_reference(references(), "kolafa_rottner_2006");
+    const double z_ref = compressibility_factor(kr, eta);
+    // The collision rate the row predicts at the initial state's temperature.
+    const KineticTemperature kt = kinetic_temperature(scene, initial);
+    const double nu_ref = enskog_collision_rate(double(initial.size()) / area, sigma,
+                                                contact_value(z_ref, eta), kt.kT() / initial.mass[0]) *
+                          collision_rate_finite_n_factor(kt.degrees_of_freedom);
+    std::vector<CaseResult> results(4);
+    const double offsets[] = {+1, -1, +0.5, -0.5};  // in units of each replicate's own error
+    for (std::size_t k = 0; k < results.size(); ++k) {
+        CaseResult& r = results[k];
+        r.spec.scene = "hard_disk_fluid", r.spec.backend = "event", r.spec.seed = k + 1, r.spec.id = "fluid__seed" + std::to_string(k + 1);
+        r.disks = initial.size(), r.duration = 10, r.contacts = 1000 * (k % 2 ? 1 : 20);
+        r.total_mass = initial.mass[0] * double(initial.size());
+        Metrics m;
+        m.kinetic_energy = kt.internal_kinetic_energy;
+        r.series = {m};
+        r.counters = {{"virial_sum", k % 2 ? 1.0 : 1e6}, {"virial_sum_at_half", 0.0}, {"time_at_half", 5.0}, {"contacts_at_half", 0.0},
+                      {"beta_pressure", z_ref * rho_d2 * (1 + 1e-3 * offsets[k])}, {"beta_pressure_error", z_ref * rho_d2 * 1e-3},
+                      {"collision_rate_mean", nu_ref * (1 + 2e-3 * offsets[k])}, {"collision_rate_error", nu_ref * 2e-3}};
+    }
+    const auto rows = compare_with_physics(suite, results, [&](const CaseSpec&) -> const Scene& { return scene; }).rows;
+    for (const char* kind : {"equation_of_state", "collision_rate"}) {
+        const PhysicsRow& row = only_row(rows, kind, eta);
+        EXPECT_EQ(row.verdict, PhysicsVerdict::pass) << kind << " " << row.estimator << ": " << row.score;
+        EXPECT_EQ(row.score_from.degrees_of_freedom, 0) << kind;
+        EXPECT_NE(row.estimator.find("batch means"), std::string::npos) << row.estimator;
+        const auto& f = row.score_from;  // z recomputes from the printed numbers
+        EXPECT_NEAR(row.score, std::abs(f.value - f.reference) / std::hypot(f.standard_error, f.reference_uncertainty), 1e-12);
+    }
+    // Pooled Z: errors equal, so the plain mean of 1 +- 1e-3 offsets {1, -1, 0.5, -0.5} = Z_ref, SE 5e-4 Z_ref.
+    const PhysicsRow& z = only_row(rows, "equation_of_state", eta);
+    EXPECT_NEAR(z.value, z_ref, 1e-12 * z_ref);
+    EXPECT_NEAR(z.standard_error, 5e-4 * z_ref, 1e-12 * z_ref);
+
+    // Without the records, the same results fall back on the replicates' scatter: Student's t.
+    for (CaseResult& r : results)
+        for (const char* name : {"beta_pressure", "beta_pressure_error", "collision_rate_mean", "collision_rate_error"}) r.counters.erase(name);
+    const auto fallback = compare_with_physics(suite, results, [&](const CaseSpec&) -> const Scene& { return scene; }).rows;
+    const PhysicsRow& zt = only_row(fallback, "equation_of_state", eta);
+    EXPECT_EQ(zt.score_from.degrees_of_freedom, 3);
+    EXPECT_NE(zt.estimator.find("Student t"), std::string::npos) << zt.estimator;
+    const auto& f = zt.score_from;
+    EXPECT_NEAR(zt.score, normal_equivalent_of_t(std::abs(f.value - f.reference) / std::hypot(f.standard_error, f.reference_uncertainty), 3), 1e-12);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 #include "core/thermo/pressure_estimator.h"
@@ -192,14 +193,17 @@ PhysicsRow row_for(const Group& g, const char* kind, const PublishedReference& r
     return row;
 }
 
-// The judged z-score |mean - reference| / sqrt(se^2 + u^2) of replicate values `v` about `reference`.
-void judge_z(PhysicsRow& row, const std::vector<double>& v, bool judged) {
-    const MeanAndError m = mean_and_error(v);
+// The judged score of `m` about the row's reference: z = |mean - reference| / sqrt(se^2 + u^2)
+// when the SE is a batch-means error (dof 0); when it is the scatter of m.count replicates the
+// quotient is Student's t with m.count - 1 dof, converted to the normal score of equal tail
+// probability so that |score| <= 3 means the same 0.27 % either way (statistics.h).
+void judge_score(PhysicsRow& row, const MeanAndError& m, double dof, bool judged) {
     row.value = m.mean, row.standard_error = m.standard_error;
     row.statistic = statistic_name('z');
-    row.score = std::abs(m.mean - row.reference) / std::hypot(m.standard_error, row.reference_uncertainty);
-    row.score_from = {row.estimator, m.mean, m.standard_error, row.reference, row.reference_uncertainty};
-    if (m.count < 2) {
+    const double t = std::abs(m.mean - row.reference) / std::hypot(m.standard_error, row.reference_uncertainty);
+    row.score = normal_equivalent_of_t(t, dof);
+    row.score_from = {row.estimator, m.mean, m.standard_error, row.reference, row.reference_uncertainty, dof};
+    if (m.count < 1 || (dof > 0 && m.count < 2)) {
         row.verdict = PhysicsVerdict::fail;
         row.detail = "needs at least 2 finished replicates for an error bar";
         return;
@@ -207,20 +211,60 @@ void judge_z(PhysicsRow& row, const std::vector<double>& v, bool judged) {
     row.verdict = !judged ? PhysicsVerdict::shown : row.score <= physics_z_max ? PhysicsVerdict::pass : PhysicsVerdict::fail;
 }
 
+// Replicate values `v`: their mean with the SE of their scatter, judged through Student's t.
+void judge_z(PhysicsRow& row, const std::vector<double>& v, bool judged) {
+    const MeanAndError m = mean_and_error(v);
+    judge_score(row, m, m.count >= 2 ? double(m.count - 1) : 0, judged);
+    if (m.count < 2) row.verdict = PhysicsVerdict::fail, row.detail = "needs at least 2 finished replicates for an error bar";
+}
+
+// Replicates' batch-means estimates pooled by inverse variance (published_rows.h).
+MeanAndError pooled(const std::vector<Estimate>& estimates) {
+    const PooledEstimate p = pool_inverse_variance(estimates);
+    return {p.mean, p.standard_error, p.count};
+}
+
+// Each replicate's own batch-means estimate (counters `mean_name`, `error_name`), or nothing
+// when a replicate lacks them (a run without a pressure record).
+std::optional<std::vector<Estimate>> recorded_estimates(const Group& g, const char* mean_name, const char* error_name) {
+    std::vector<Estimate> e;
+    for (const CaseResult* r : g.cases) {
+        const double mean = counter(*r, mean_name), error = counter(*r, error_name);
+        if (!std::isfinite(mean) || !(error > 0)) return std::nullopt;
+        e.push_back({mean, error});
+    }
+    return e;
+}
+
 // A measured quantity against a predicted one, replicate by replicate (the prediction depends
-// on each replicate's own temperature): judged by the z-score of the ratios about 1, with the
-// prediction's relative uncertainty u; shown as the means of the two.
-void judge_ratio(PhysicsRow& row, const std::vector<double>& measured, const std::vector<double>& predicted, double u,
-                 bool judged) {
-    std::vector<double> ratio;
-    for (std::size_t k = 0; k < measured.size(); ++k) ratio.push_back(measured[k] / predicted[k]);
+// on each replicate's own temperature): judged by the score of the ratios measured / predicted
+// about 1, with the prediction's relative uncertainty u; shown as the means of the two. With
+// each replicate's batch-means estimate the ratios are pooled by inverse variance (a normal
+// error); with bare values, their scatter through Student's t (judge_z).
+void judge_ratio(PhysicsRow& row, const std::vector<Estimate>& measured, const std::vector<double>& predicted, double u,
+                 bool batch_means, bool judged) {
+    std::vector<Estimate> ratio;
+    std::vector<double> values, ratio_values;
+    for (std::size_t k = 0; k < measured.size(); ++k) {
+        ratio.push_back({measured[k].value / predicted[k], measured[k].standard_error / predicted[k]});
+        values.push_back(measured[k].value), ratio_values.push_back(ratio.back().value);
+    }
     row.reference = 1, row.reference_uncertainty = u;
-    judge_z(row, ratio, judged);
-    row.score_from.estimator = "per-replicate ratio measured / predicted";
-    const MeanAndError m = mean_and_error(measured);
+    if (batch_means) judge_score(row, pooled(ratio), 0, judged);
+    else judge_z(row, ratio_values, judged);
+    row.score_from.estimator = row.estimator + (batch_means ? ", per-replicate ratio measured / predicted pooled by inverse variance"
+                                                            : ", per-replicate ratio measured / predicted; SE from " +
+                                                                  std::to_string(values.size()) + " replicates, Student t");
+    const MeanAndError m = batch_means ? pooled(measured) : mean_and_error(values);
     row.value = m.mean, row.standard_error = m.standard_error;
     row.reference = mean_and_error(predicted).mean;
     row.reference_uncertainty = u * row.reference;
+}
+
+std::vector<Estimate> bare(const std::vector<double>& values) {
+    std::vector<Estimate> e;
+    for (double v : values) e.push_back({v, 0});
+    return e;
 }
 
 // Enskog's collision rate at the case's kinetic temperature, times the finite-N factor of the
@@ -239,12 +283,23 @@ PhysicsRow equation_of_state_row(const Group& g, const SceneFacts& f, const Publ
     row.reference = compressibility_factor(eos, f.eta);
     row.reference_uncertainty = eos.numbers.count("relative_uncertainty") ? eos.number("relative_uncertainty") * row.reference : 0;
     row.second_reference = compressibility_factor(second, f.eta), row.second_reference_name = second.name;
-    std::vector<double> z;
-    for (const CaseResult* r : g.cases)
-        z.push_back(g.exact() ? virial_compressibility(*r, case_temperature(*r, f.mobile, f.momentum_conserved))
-                              : mean_and_error(r->compressibility).mean);
-    row.estimator = g.exact() ? "collision virial" : "contact shell (pairs within sigma (1 + 0.05))";
-    judge_z(row, z, g.exact());
+    // beta P d^2 of each replicate's pressure record (batch means over its windows), as Z.
+    if (const auto recorded = g.exact() ? recorded_estimates(g, "beta_pressure", "beta_pressure_error") : std::nullopt) {
+        std::vector<Estimate> z;
+        const double rho_d2 = f.density * f.sigma * f.sigma;
+        for (const Estimate& e : *recorded) z.push_back({e.value / rho_d2, e.standard_error / rho_d2});
+        row.estimator = "collision virial, batch means per replicate, pooled by inverse variance";
+        judge_score(row, pooled(z), 0, true);
+    } else {
+        std::vector<double> z;
+        for (const CaseResult* r : g.cases)
+            z.push_back(g.exact() ? virial_compressibility(*r, case_temperature(*r, f.mobile, f.momentum_conserved))
+                                  : mean_and_error(r->compressibility).mean);
+        row.estimator = std::string(g.exact() ? "collision virial of the second half"
+                                              : "contact shell (pairs within sigma (1 + 0.05))") +
+                        ", SE from " + std::to_string(z.size()) + " replicates, Student t";
+        judge_z(row, z, g.exact());
+    }
     row.resolved = std::abs(row.reference - row.second_reference) > 1.96 * row.standard_error;
     if (!g.exact()) row.detail = "not judged: the contact-shell estimator is biased by O(shell) and this backend's rule by O(dt)";
     return row;
@@ -254,7 +309,6 @@ PhysicsRow collision_rate_row(const Group& g, const SceneFacts& f, const Publish
                               const PublishedReference& eos) {
     PhysicsRow row = row_for(g, "collision_rate", enskog);
     row.parameter_name = "area fraction", row.parameter = f.eta;
-    row.estimator = "collisions counted in the second half";
     const double g_contact = contact_value(compressibility_factor(eos, f.eta), f.eta);
     std::vector<double> nu, nu_enskog;
     for (const CaseResult* r : g.cases) {
@@ -262,7 +316,11 @@ PhysicsRow collision_rate_row(const Group& g, const SceneFacts& f, const Publish
         nu_enskog.push_back(predicted_collision_rate(f, g_contact, case_temperature(*r, f.mobile, f.momentum_conserved)));
     }
     const double u = enskog.numbers.count("relative_uncertainty") ? enskog.number("relative_uncertainty") : 0;
-    judge_ratio(row, nu, nu_enskog, u, true);
+    // The collision-rate series of each replicate's pressure record (batch means), else the
+    // collisions counted in the second half of each replicate.
+    const auto recorded = recorded_estimates(g, "collision_rate_mean", "collision_rate_error");
+    row.estimator = recorded ? "collisions per window, batch means" : "collisions counted in the second half";
+    judge_ratio(row, recorded ? *recorded : bare(nu), nu_enskog, u, recorded.has_value(), true);
     std::ostringstream d;
     d << "g(sigma) = " << g_contact << " from " << eos.name
       << "; kT from each replicate's conserved energy (K_int / (N - 1) periodic), times the finite-N factor "
@@ -322,12 +380,23 @@ PhysicsRow haff_row(const Group& g, const SceneFacts& f, const PublishedReferenc
         tau_haff.push_back(4 / ((1 - f.restitution * f.restitution) * nu0));  // 1/tau = (1 - e^2) nu0 / 4 (2-D)
         tau.push_back(haff_cooling_time(*r, tau_haff.back(), f.mobile, f.momentum_conserved));
     }
-    judge_ratio(row, tau, tau_haff, haff.number("model_uncertainty"), g.exact());
+    judge_ratio(row, bare(tau), tau_haff, haff.number("model_uncertainty"), false, g.exact());
     std::ostringstream d;
     d << "tau = 4 / ((1 - e^2) nu0), nu0 Enskog's rate at T0 with g(sigma) = " << g_contact << " (" << eos.name
       << "); the law's own accuracy " << haff.number("model_uncertainty") * 100 << " % counts in the error";
     row.detail = d.str();
     return row;
+}
+
+// The degrees of freedom of a difference of two rows' means (Welch 1947, Satterthwaite 1946):
+// (sa^2 + sb^2)^2 / (sa^4 / fa + sb^4 / fb), a batch-means SE (dof 0) counting as infinite
+// dof; 0 (normal) when both are.
+double welch_degrees_of_freedom(const PhysicsRow& a, const PhysicsRow& b) {
+    const double fa = a.score_from.degrees_of_freedom, fb = b.score_from.degrees_of_freedom;
+    if (fa == 0 && fb == 0) return 0;
+    const double va = a.standard_error * a.standard_error, vb = b.standard_error * b.standard_error;
+    const double denominator = (fa > 0 ? va * va / fa : 0) + (fb > 0 ? vb * vb / fb : 0);
+    return denominator > 0 ? (va + vb) * (va + vb) / denominator : 0;
 }
 
 // Two independent exact solvers (`event` and `event-plain`) on the same cases must agree within
@@ -349,8 +418,11 @@ void add_exact_agreement(std::vector<PhysicsRow>& rows) {
             d.standard_error = std::hypot(a.standard_error, b.standard_error);
             d.reference = 0, d.reference_uncertainty = 0, d.second_reference = std::nan("");
             d.reference_name = "the two exact solvers agree", d.citation = "";
-            d.score = std::abs(d.value) / d.standard_error;
-            d.score_from = {"difference of the two rows' means", d.value, d.standard_error, 0, 0};
+            const double dof = welch_degrees_of_freedom(a, b);
+            d.score = normal_equivalent_of_t(std::abs(d.value) / d.standard_error, dof);
+            d.score_from = {dof > 0 ? "difference of the two rows' means, Student t (Welch-Satterthwaite dof)"
+                                    : "difference of the two rows' means",
+                            d.value, d.standard_error, 0, 0, dof};
             d.verdict = d.score <= physics_z_max ? PhysicsVerdict::pass : PhysicsVerdict::fail;
             d.detail = b.backend + " " + std::to_string(b.value) + " against " + a.backend + " " + std::to_string(a.value);
             added.push_back(std::move(d));

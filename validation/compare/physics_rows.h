@@ -52,9 +52,12 @@ struct PhysicsRow {
     // A "z" row's score from these numbers: z = (value - reference) / hypot(standard_error,
     // reference_uncertainty), score = |z|. They are value ± SE and the reference above except
     // where the row judges per-replicate ratios measured / predicted (estimator says so).
+    // With degrees_of_freedom > 0 the SE is the scatter of that few replicates: the quotient is
+    // Student's t, and score = normal_equivalent_of_t(|t|, degrees_of_freedom) (statistics.h).
     struct ScoreInputs {
         std::string estimator;
         double value = std::nan(""), standard_error = std::nan(""), reference = std::nan(""), reference_uncertainty = 0;
+        double degrees_of_freedom = 0;  // 0: the SE is a batch-means (normal) error
     } score_from;
     bool resolved = true;            // the error bar tells the two published values apart
     PhysicsVerdict verdict = PhysicsVerdict::shown;

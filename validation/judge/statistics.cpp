@@ -5,6 +5,7 @@
 #include <limits>
 
 #include <Eigen/Dense>
+#include <gsl/gsl_cdf.h>
 #include <gsl/gsl_statistics_double.h>
 
 namespace collide::validation {
@@ -18,6 +19,13 @@ MeanAndError mean_and_error(const std::vector<double>& samples) {
     // gsl_stats_sd_m: the sample standard deviation s (divisor n - 1) about the mean just found.
     r.standard_error = gsl_stats_sd_m(samples.data(), 1, samples.size(), r.mean) / std::sqrt(double(r.count));
     return r;
+}
+
+double normal_equivalent_of_t(double t, double dof) {
+    if (!std::isfinite(t) || !(dof > 0)) return std::fabs(t);
+    // The upper tail Q_t, kept above the smallest double so that Phi^-1 stays finite (|z| ~ 37).
+    const double q = std::max(gsl_cdf_tdist_Q(std::fabs(t), dof), std::numeric_limits<double>::min());
+    return gsl_cdf_ugaussian_Qinv(q);
 }
 
 double z_score(const MeanAndError& a, const MeanAndError& b) {

@@ -15,6 +15,12 @@ struct MeanAndError {
 };
 MeanAndError mean_and_error(const std::vector<double>& samples);
 
+// The normal score with the same two-sided tail probability as Student's t with `dof` degrees
+// of freedom: z = Phi^-1(1 - Q_t(|t|; dof)). A mean of n replicates over its own standard error
+// is t-distributed with n - 1 dof (Student 1908), so |t| > 3 happens 5.8 % of the time at n = 4
+// against 0.27 % for a normal score; judging the converted z at 3 keeps the 0.27 %.
+double normal_equivalent_of_t(double t, double dof);
+
 // |a - b| / sqrt(se_a^2 + se_b^2): how many combined standard errors apart two means are.
 // Infinity when they differ with zero error bars, 0 when equal.
 double z_score(const MeanAndError& a, const MeanAndError& b);

@@ -63,6 +63,12 @@ def _score(r):
     if r["statistic"] == "p":
         return f"p = {r['score']:.3g}"
     f = r.get("score_from")
+    if f and f.get("t") is not None:
+        # A replicate scatter's SE: the quotient is Student's t, judged by the normal score of
+        # equal tail probability (physics_rows.h).
+        return (f"t = {f['t']:+.2f} from {f['value']:.6g} ± {f['standard_error']:.3g} against {f['reference']:.6g} ± "
+                f"{f['reference_uncertainty']:.3g} ({f['estimator']}); {f['degrees_of_freedom']:.3g} degrees of "
+                f"freedom give the normal score {r['score']:.2f}")
     if not f or f.get("z") is None:
         return f"|z| = {r['score']:.2f}"
     # The numbers z was computed from, printed to the digits that recompute it (test_report_data.py).

@@ -363,7 +363,10 @@ Json score_from_json(const PhysicsRow::ScoreInputs& f) {
     Object o;
     o.text("estimator", f.estimator).number("value", f.value).field("standard_error", nullable(f.standard_error))
         .number("reference", f.reference).number("reference_uncertainty", f.reference_uncertainty)
-        .field("z", nullable((f.value - f.reference) / std::hypot(f.standard_error, f.reference_uncertainty)));
+        .number("degrees_of_freedom", f.degrees_of_freedom)
+        // the signed quotient: z for a batch-means SE, Student's t for a replicate scatter
+        .field(f.degrees_of_freedom > 0 ? "t" : "z",
+               nullable((f.value - f.reference) / std::hypot(f.standard_error, f.reference_uncertainty)));
     return o.json();
 }
 
