@@ -422,3 +422,18 @@ TEST(PhysicsRows, TheRowsJudgeEachReplicatesBatchMeansPooledByInverseVariance) {
 
 }  // namespace
 }  // namespace collide::validation
+
+namespace collide::validation {
+namespace {
+
+// Bonferroni by hand: Q(3) = 1.3499e-3; over 56 rows each row's one-sided tail is 2.4105e-5,
+// whose normal quantile is 4.066 (tables of the normal distribution).
+TEST(PhysicsRows, FamilyThresholdKeepsOneRowsFalseAlarmRateForTheWholeSuite) {
+    EXPECT_DOUBLE_EQ(family_z_max(0), 3.0);
+    EXPECT_DOUBLE_EQ(family_z_max(1), 3.0);
+    EXPECT_NEAR(family_z_max(56), 4.066, 2e-3);
+    EXPECT_GT(family_z_max(10), family_z_max(2));
+}
+
+}  // namespace
+}  // namespace collide::validation

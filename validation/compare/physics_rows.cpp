@@ -209,6 +209,7 @@ void judge_score(PhysicsRow& row, const MeanAndError& m, double dof, bool judged
         return;
     }
     row.verdict = !judged ? PhysicsVerdict::shown : row.score <= physics_z_max ? PhysicsVerdict::pass : PhysicsVerdict::fail;
+    row.judged_by_score = judged;
 }
 
 // Replicate values `v`: their mean with the SE of their scatter, judged through Student's t.
@@ -424,6 +425,7 @@ void add_exact_agreement(std::vector<PhysicsRow>& rows) {
                                     : "difference of the two rows' means",
                             d.value, d.standard_error, 0, 0, dof};
             d.verdict = d.score <= physics_z_max ? PhysicsVerdict::pass : PhysicsVerdict::fail;
+            d.judged_by_score = true;
             d.detail = b.backend + " " + std::to_string(b.value) + " against " + a.backend + " " + std::to_string(a.value);
             added.push_back(std::move(d));
         }
@@ -439,6 +441,24 @@ ReferenceCurve sampled_curve(const PublishedReference& eos) {
         c.eta.push_back(eta), c.z.push_back(compressibility_factor(eos, eta));
     }
     return c;
+}
+
+}  // namespace
+
+double family_z_max(std::size_t rows) {
+    if (rows <= 1) return physics_z_max;
+    return gsl_cdf_ugaussian_Qinv(gsl_cdf_ugaussian_Q(physics_z_max) / double(rows));
+}
+
+namespace {
+
+// Every row judged by its score is held to the threshold of the rows judged together.
+void hold_to_the_family_threshold(PhysicsComparison& out) {
+    std::size_t judged = 0;
+    for (const PhysicsRow& r : out.rows) judged += r.judged_by_score;
+    out.z_max = family_z_max(judged);
+    for (PhysicsRow& r : out.rows)
+        if (r.judged_by_score) r.verdict = r.score <= out.z_max ? PhysicsVerdict::pass : PhysicsVerdict::fail;
 }
 
 }  // namespace
@@ -467,6 +487,7 @@ PhysicsComparison compare_with_physics(const Suite& suite, const std::vector<Cas
         }
     }
     add_exact_agreement(out.rows);
+    hold_to_the_family_threshold(out);
     out.curves = {sampled_curve(eos), sampled_curve(ref("henderson_1975"))};
     return out;
 }

@@ -61,6 +61,7 @@ struct PhysicsRow {
     } score_from;
     bool resolved = true;            // the error bar tells the two published values apart
     PhysicsVerdict verdict = PhysicsVerdict::shown;
+    bool judged_by_score = false;    // the verdict is score <= the suite's z_max (family_z_max)
     std::string detail;
     // Rows of published finite-N points (published_rows.h): the row they are held to ("KEY:ID"),
     // the box ("9 : 8 sqrt(3)/2 periodic") and the facts of the estimate: "disks",
@@ -79,10 +80,17 @@ struct ReferenceCurve {
 struct PhysicsComparison {
     std::vector<PhysicsRow> rows;
     std::vector<ReferenceCurve> curves;
+    double z_max = 3.0;  // the threshold every judged_by_score row was held to (family_z_max)
 };
 
-// The largest |z| (or the smallest p) a judged row may have; docs/validation.md.
+// The largest |z| (or the smallest p) one judged row may have; docs/validation.md.
 inline constexpr double physics_z_max = 3.0;
+
+// The threshold for each of `rows` rows judged together, so that a suite of correct solvers
+// fails no row more often than a single row fails at 3 standard errors (two-sided 0.27 %):
+// Bonferroni, z_max = Q^-1(Q(3) / rows) with Q the normal upper tail (3 for one row, 4.06 for
+// 56). Without it a suite of 56 rows at 3 each would fail a correct solver in 14 % of runs.
+double family_z_max(std::size_t rows);
 
 // `scene_of` gives the scene a case ran (with the case's parameter values), `references` the
 // directory of data/references. Rows for every [[scene]] with a `physics` key.

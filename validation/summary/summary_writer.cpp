@@ -397,7 +397,7 @@ Json physics_json(const PhysicsComparison& p) {
         q.text("name", c.name).text("citation", c.citation).field("eta", c.eta).field("z", c.z);
         return q.json();
     }));
-    o.number("z_max", physics_z_max);
+    o.number("z_max", p.z_max);
     return o.json();
 }
 
