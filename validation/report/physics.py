@@ -54,6 +54,8 @@ def _reference(r):
 
 
 def _score(r):
+    if r["score"] is None:  # no value to score (e.g. a row whose cases recorded no pressure)
+        return "n/a"
     if r["statistic"] == "exact":
         return "equal" if r["score"] == 0 else f"off by {_num(r['score'])}"
     if r["statistic"] == "p":
