@@ -18,7 +18,7 @@ std::string filled_scene(double width, double height, int count, int columns, do
                          const std::string& boundary = "periodic", const std::string& extra = "") {
     std::ostringstream t;
     t.precision(17);
-    t << "[world]\nbox = [0.0, 0.0, " << width << ", " << height << "]\nboundary = \"" << boundary
+    t << "description = \"filled lattice\"\n[world]\nbox = [0.0, 0.0, " << width << ", " << height << "]\nboundary = \"" << boundary
       << "\"\n[[particles]]\nkind = \"lattice\"\nlattice = \"hexagonal\"\nfill_box = true\ncount = " << count
       << "\ncolumns = " << columns << "\nradius = " << radius << "\nmass = 1.0\n" << extra;
     return t.str();
@@ -75,11 +75,14 @@ TEST(FilledLattice, ClosesPeriodicallyInBoxesNoCrystalFillsAtSeventyPercent) {
 }
 
 TEST(FilledLattice, OddRowCountsAreShearedToCloseAcrossTheBoundary) {
-    // 9 rows: the shift is 4/9 of a spacing, so row 9 lands on row 0 (4 whole spacings later).
-    const FilledLattice l = filled_lattice(8, 9, 8, 9, true);
-    EXPECT_DOUBLE_EQ(l.row_shift, 4.0 / 9);
-    EXPECT_NEAR(std::fmod(9 * l.row_shift, l.dx), 0.0, 1e-12);
-    EXPECT_NEAR(l.nearest_distance(), std::hypot(4.0 / 9, 1.0), 1e-12);
+    // 8 x 9 in a 9 x 9 box: spacings 1.125 and 1; 9 rows, so the shift is 4/9 of a spacing
+    // (0.5) and row 9 lands on row 0, 4 whole spacings later. Nearest: the neighbouring row,
+    // sqrt(0.5^2 + 1), closer than the 1.125 within a row.
+    const FilledLattice l = filled_lattice(9, 9, 8, 9, true);
+    EXPECT_DOUBLE_EQ(l.row_shift, 0.5);
+    EXPECT_NEAR(std::remainder(9 * l.row_shift, l.dx), 0.0, 1e-12);
+    EXPECT_NEAR(l.nearest_distance(), std::hypot(0.5, 1.0), 1e-12);
+    EXPECT_DOUBLE_EQ(filled_lattice(9, 9, 8, 9, false).nearest_distance(), 1.0);  // square: rows 1 apart
 }
 
 void expect_refused(const std::string& text, const std::string& key) {

@@ -53,9 +53,11 @@ class FiniteNRowsRenderFromTheSummary(unittest.TestCase):
         self.assertTrue(png.startswith(b"\x89PNG"))
 
     def test_a_row_without_a_value_is_left_out_of_the_figure_but_kept_in_the_table(self):
-        s = {"physics": {"rows": [published_row(value=None, standard_error=None, verdict="fail")]}}
+        s = {"physics": {"rows": [published_row(value=None, standard_error=None, score=None, verdict="fail")]}}
         self.assertIsNone(finite_n.figure(s))
         self.assertEqual(finite_n.table(s)[0]["value"], "n/a ± n/a")
+        html = templating.render("physics.html.j2", physics=physics.section(s))  # the whole section renders
+        self.assertIn("n/a", html)
 
 
 if __name__ == "__main__":

@@ -114,22 +114,22 @@ void record_facts(PhysicsRow& row, const PublishedGroup& g, const SystemFacts& f
                  {"replicate_chi2", pooled.chi2}};
 }
 
-// The verdict: fail when a case lacks the counters or the scene is not the published system;
+// The verdict: fail when the scene is not the published system or a case lacks the counters;
 // shown when psi6 has not mixed; else pass iff |z| <= 3 and the relative error <= 2e-4.
 void judge(PhysicsRow& row, const std::string& mismatch, std::size_t without_counters) {
     std::ostringstream d;
     const double relative = row.facts.at("relative_error");
-    if (without_counters > 0) {
-        row.verdict = PhysicsVerdict::fail;
-        d << without_counters << " of " << row.replicates
-          << " finished cases recorded no beta_pressure / beta_pressure_error: this backend does not measure the pressure";
-    } else if (!mismatch.empty()) {
+    if (!mismatch.empty()) {
         row.verdict = PhysicsVerdict::fail;
         d << "not the published system: " << mismatch;
+    } else if (without_counters > 0) {
+        row.verdict = PhysicsVerdict::fail;
+        d << without_counters << " of " << row.replicates
+          << " finished cases recorded no beta_pressure / beta_pressure_error: this backend does not measure the pressure; ";
     } else if (row.facts.at("mixed") == 0) {
         row.verdict = PhysicsVerdict::shown;
         d << "not mixed: the phase of psi6 crossed its full range " << row.facts.at("psi6_traversals")
-          << " times in the sampled run (3 needed), so the run has not sampled the states the published value averages";
+          << " times in the sampled run (3 needed), so the run has not sampled the states the published value averages; ";
     } else {
         const bool close = row.score <= physics_z_max, precise = relative <= published_relative_error_max;
         row.verdict = close && precise ? PhysicsVerdict::pass : PhysicsVerdict::fail;
