@@ -691,12 +691,12 @@ class WhatAReaderWasToldWrongly(unittest.TestCase):
         png = figures.overlap_histogram([("box2d[shipped]", result), ("cpu", {"overlap_depths": [0.001, 0.002]})], "s")
         self.assertIsNotNone(png)
         fig_calls = []
-        saved = figures._png
-        figures._png = lambda fig: fig_calls.append(fig) or b""
+        saved = figures.png
+        figures.png = lambda fig: fig_calls.append(fig) or b""
         try:
             figures.overlap_histogram([("box2d[shipped]", result)], "s")
         finally:
-            figures._png = saved
+            figures.png = saved
         ax = fig_calls[0].axes[0]
         markers = [l for l in ax.lines if l.get_marker() == "v"]
         self.assertEqual(len(markers), 1)
@@ -706,12 +706,12 @@ class WhatAReaderWasToldWrongly(unittest.TestCase):
 
     def test_no_duplicated_dt_labels(self):
         fig_calls = []
-        saved = figures._png
-        figures._png = lambda fig: fig_calls.append(fig) or b""
+        saved = figures.png
+        figures.png = lambda fig: fig_calls.append(fig) or b""
         try:
             figures.work_precision(self.summary, "head_on_equal", digest, {"opencl": "cpu"})
         finally:
-            figures._png = saved
+            figures.png = saved
         ax = fig_calls[0].axes[0]
         labels = [(t.get_text(), tuple(t.xy)) for t in ax.texts]
         self.assertEqual(len(labels), len(set(labels)), "two labels at one point")

@@ -109,7 +109,7 @@ def work_precision_figure(summary):
     ax.set_ylabel("trajectory error / r_min")
     ax.legend(fontsize=7, ncol=2)
     fig.tight_layout()
-    return figures._png(fig)
+    return figures.png(fig)
 
 
 def write(directory, summary, out):

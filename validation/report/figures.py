@@ -75,7 +75,7 @@ def smallest_text_px(fig, dpi):
     return min(sizes) * dpi / 72 if sizes else None
 
 
-def _png(fig, dpi=80):
+def png(fig, dpi=80):
     """The figure as a 256-colour PNG whose text chunk `smallest-text-px` records its smallest
     text (smallest_text_px)."""
     smallest = smallest_text_px(fig, dpi)
@@ -255,7 +255,7 @@ def _headline(summary, digest, aliases, lines, trajectory, statistical_scenes, p
         handles.append(Line2D([], [], color="0.3", linestyle=(0, (2, 2)), label="predicted bias of the stepped rule"))
     fig.tight_layout(rect=(0, 0.24, 1, 1))
     fig.legend(handles=handles, loc="lower center", ncol=min(len(handles), 5), fontsize=HEADLINE_PT, frameon=False)
-    return _png(fig)
+    return png(fig)
 
 
 def work_precision(summary, scene, digest, aliases, fits=None):
@@ -296,7 +296,7 @@ def work_precision(summary, scene, digest, aliases, fits=None):
     if handles:
         ax.legend(title="backend", fontsize=TEXT_PT, title_fontsize=TEXT_PT, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     fig.tight_layout()
-    return _png(fig)
+    return png(fig)
 
 
 QUIET = 1e-9  # a panel whose every line stays below this carries no information
@@ -352,7 +352,7 @@ def conservation(case_results, scene, jumps=None, labels=None, momentum_left_out
             note = f"{'momentum' if panels[0][0] == 2 else 'energy'}: every backend below {QUIET:g}, not drawn"
         fig.text(0.99, 0.01, note, ha="right", fontsize=TEXT_PT, color="0.4")
     fig.tight_layout()
-    return _png(fig)
+    return png(fig)
 
 
 FEW_PAIRS = 10  # fewer pairs than this are drawn one marker each: a histogram of one pair is a flat line
@@ -394,7 +394,7 @@ def overlap_histogram(case_results, scene, labels=None):
     ax.legend(title="backend", fontsize=TEXT_PT, title_fontsize=TEXT_PT, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     ax.grid(True, alpha=0.3)
     fig.tight_layout()
-    return _png(fig)
+    return png(fig)
 
 
 def configuration(result, world, scene, backend):
@@ -423,4 +423,4 @@ def configuration(result, world, scene, backend):
         ax.set_title(tex(f"{scene} ({backend}): {title}"), fontsize=TEXT_PT)
         fig.colorbar(collection, ax=ax, label="speed |v| [length / time]", shrink=0.8)
     fig.tight_layout()
-    return _png(fig)
+    return png(fig)

@@ -6,12 +6,13 @@ Every number comes from summary.json's physics rows of kind "published_finite_n"
 row per published point (N, box, estimator, equilibration cut, correlation time, error bar, z)
 and draws beta P d^2 against the area fraction for each N with the published points.
 """
-import io
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+import figures  # noqa: E402  (png, TEXT_PT)
 
 KIND = "published_finite_n"
 
@@ -74,12 +75,9 @@ def figure(summary):
         ax.set_title(f"N = {n}")
         ax.set_xlabel("area fraction η = Nπr²/A")
         ax.set_ylabel("βPd² (d the diameter)")
-        ax.legend(fontsize=6, loc="upper left")
+        ax.legend(fontsize=figures.TEXT_PT, loc="upper left")
     fig.tight_layout()
-    buffer = io.BytesIO()
-    fig.savefig(buffer, format="png", dpi=80)
-    plt.close(fig)
-    return buffer.getvalue()
+    return figures.png(fig)
 
 
 def section(summary):

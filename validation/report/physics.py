@@ -4,7 +4,6 @@ Every number here comes from summary.json's "physics" object (validation/compare
 computes the rows, data/references/*.toml holds the published values and their citations); this
 module only lays them out and draws the equation-of-state figure.
 """
-import io
 
 import finite_n
 
@@ -155,10 +154,7 @@ def eos_figure(summary):
     span = max([1.0] + [abs(v) + 100 * p["standard_error"] / p["reference"] for v, p in zip(rel_points, points)])
     bottom.set_ylim(-1.5 * span, 3 * span)  # Henderson's rise near 0.7 would hide the points
     fig.tight_layout()
-    buffer = io.BytesIO()
-    fig.savefig(buffer, format="png", dpi=80)
-    plt.close(fig)
-    return buffer.getvalue()
+    return figures.png(fig)
 
 
 def section(summary):

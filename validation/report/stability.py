@@ -115,7 +115,7 @@ def stability_map(scene, path, backends, order):
     fig.legend(handles=[Patch(facecolor=OUTCOME_COLOURS[o], label=o) for o in present],
                loc="center left", bbox_to_anchor=(1.0, 0.5), frameon=False)
     fig.suptitle(figures.tex(f"Stability map: {scene}"), y=1.04)
-    return figures._png(fig)
+    return figures.png(fig)
 
 
 def first_failures(summary):

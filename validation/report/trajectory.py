@@ -65,7 +65,7 @@ def figure(cases, scene, labels=None):
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=figures.TEXT_PT, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     fig.tight_layout()
-    return figures._png(fig)
+    return figures.png(fig)
 
 
 def section(chosen, scene, labels=None):
