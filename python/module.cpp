@@ -272,6 +272,12 @@ py::dict read_run(const PathArgument& path, bool frames) {
     return d;
 }
 
+// None where the backend can run the scene, else its reason (BackendInfo::supports): lets a
+// caller choose the backends for a scene without building a solver.
+std::optional<std::string> refusal(const std::string& backend, const Scene& scene) {
+    return find_backend(backend).supports(scene);
+}
+
 py::list backends() {
     py::list list;
     for (const BackendInfo& b : all_backends()) {
@@ -388,5 +394,7 @@ PYBIND11_MODULE(_collide, m) {
           "The TOML text Scene.from_dict reads (the lines its error messages name)");
     m.def("_check_export", &check_export, py::arg("run"), py::arg("out"));
     m.def("backends", &backends, "The backends compiled into this build: name, precision, description");
+    m.def("refusal", &refusal, py::arg("backend"), py::arg("scene"),
+          "None if `backend` can run `scene`, else why not (the reason Simulation would give)");
     m.def("build_provenance", &build_provenance, "Commit, compiler, flags and library versions of this build");
 }

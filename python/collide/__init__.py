@@ -28,6 +28,7 @@ from ._collide import (  # noqa: F401  (re-exported)
     SuiteError,
     backends,
     build_provenance,
+    refusal,
     toml_from_dict,
 )
 from . import _collide, safe_output
@@ -35,7 +36,7 @@ from . import _collide, safe_output
 __version__ = build_provenance().get("collide_version", "")
 
 __all__ = ["Scene", "SceneError", "Simulation", "SuiteError", "RunResult", "run", "read_run", "validate", "export",
-           "backends", "build_provenance", "toml_from_dict"]
+           "backends", "build_provenance", "refusal", "toml_from_dict"]
 
 
 class RunResult(dict):
