@@ -12,7 +12,7 @@ packages=(
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
   ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers pocl-opencl-icd clinfo
   clang libclang-rt-14-dev libomp-dev
-  python3 python3-matplotlib python3-numpy python3-h5py python3-jinja2
+  python3 python3-matplotlib python3-numpy python3-scipy python3-mpmath python3-h5py python3-jinja2
   python3-dev pybind11-dev python3-pybind11 python3-pytest
   chromium chromium-driver python3-selenium
   libopenmpi-dev openmpi-bin
