@@ -14,6 +14,7 @@
 #include "test_backends.h"
 #include "tests/support/test_scenes.h"
 #include "validation/compare/published_rows.h"
+#include "validation/judge/statistics.h"
 #include "validation/plan/suite.h"
 
 namespace collide::validation {

@@ -42,15 +42,6 @@ const char* to_string(PhysicsVerdict v) {
 
 // --- Per-case measurements ----------------------------------------------------------------
 
-namespace {
-
-double counter(const CaseResult& r, const char* name) {
-    const auto it = r.counters.find(name);
-    return it == r.counters.end() ? std::nan("") : it->second;
-}
-
-}  // namespace
-
 KineticTemperature case_temperature(const CaseResult& r, std::size_t moving_disks, bool conserved) {
     if (r.series.empty()) return {};
     const Metrics& first = r.series.front();
@@ -59,14 +50,14 @@ KineticTemperature case_temperature(const CaseResult& r, std::size_t moving_disk
 }
 
 double virial_compressibility(const CaseResult& r, const KineticTemperature& t) {
-    const double dt = r.duration - counter(r, "time_at_half");
-    const double dv = counter(r, "virial_sum") - counter(r, "virial_sum_at_half");
+    const double dt = r.duration - r.counter("time_at_half");
+    const double dv = r.counter("virial_sum") - r.counter("virial_sum_at_half");
     return compressibility_factor(dv / (2 * dt), t);
 }
 
 double second_half_collision_rate(const CaseResult& r) {
-    const double dt = r.duration - counter(r, "time_at_half");
-    return 2 * (double(r.contacts) - counter(r, "contacts_at_half")) / (double(r.disks) * dt);
+    const double dt = r.duration - r.counter("time_at_half");
+    return 2 * (double(r.contacts) - r.counter("contacts_at_half")) / (double(r.disks) * dt);
 }
 
 double haff_cooling_time(const CaseResult& r, double t_max, std::size_t moving_disks, bool conserved) {
@@ -230,7 +221,7 @@ MeanAndError pooled(const std::vector<Estimate>& estimates) {
 std::optional<std::vector<Estimate>> recorded_estimates(const Group& g, const char* mean_name, const char* error_name) {
     std::vector<Estimate> e;
     for (const CaseResult* r : g.cases) {
-        const double mean = counter(*r, mean_name), error = counter(*r, error_name);
+        const double mean = r->counter(mean_name), error = r->counter(error_name);
         if (!std::isfinite(mean) || !(error > 0)) return std::nullopt;
         e.push_back({mean, error});
     }
@@ -358,7 +349,7 @@ PhysicsRow galperin_row(const Group& g, const SceneFacts& f, const PublishedRefe
     for (const auto& [ratio, count] : ref.counts)
         if (std::abs(ratio - f.mass_ratio) <= 1e-9 * ratio) row.reference = double(count);
     std::vector<double> counts;
-    for (const CaseResult* r : g.cases) counts.push_back(double(r->contacts) + counter(*r, "events_wall"));
+    for (const CaseResult* r : g.cases) counts.push_back(double(r->contacts) + r->counter("events_wall"));
     const bool all_equal = !counts.empty() && std::all_of(counts.begin(), counts.end(), [&](double c) { return c == counts[0]; });
     row.value = counts.empty() ? std::nan("") : counts[0];
     row.standard_error = 0;

@@ -1,5 +1,6 @@
 #include "validation/compare/published_reference.h"
 #include "core/io/input_file.h"
+#include "core/scene/toml_fields.h"
 
 #include <algorithm>
 #include <cmath>
@@ -61,48 +62,36 @@ void read_points(const toml::array& points, const std::string& file, PublishedRe
     }
 }
 
-// One [[rows]] table of a beta_pressure_d2 file: every key required (method optional), each of
-// its type and range, no other key; errors name the file, the line and rows[K].key.
-FiniteNPoint read_finite_n_point(const toml::table& t, const std::string& file, std::size_t k) {
-    const std::string where = "rows[" + std::to_string(k) + "].";
-    for (const auto& [key, node] : t) {
-        static const char* known[] = {"id", "method", "disks", "box", "aspect_ratio", "boundary", "eta",
-                                      "beta_pressure_d2", "standard_error"};
-        if (std::none_of(std::begin(known), std::end(known), [&](const char* n) { return key.str() == n; }))
-            fail(file, &node, where + std::string(key.str()) + ": not a key of a row (expected id, method, disks, box, "
-                                                                "aspect_ratio, boundary, eta, beta_pressure_d2, standard_error)");
-    }
+// One [[rows]] table of a beta_pressure_d2 file, read by the scene files' strict reader
+// (TomlFields): every key required (method optional), each of its type and range, no other key;
+// errors name the file, the line and rows[K].key.
+FiniteNPoint read_finite_n_point(const toml::table& table, const std::string& file, std::size_t k) {
+    const TomlFields t(table, "rows[" + std::to_string(k) + "]", file);
+    t.allow_only({"id", "method", "disks", "box", "aspect_ratio", "boundary", "eta", "beta_pressure_d2", "standard_error"});
     auto text = [&](const char* key) {
-        const toml::node* n = t.get(key);
-        if (!n || !n->is_string() || n->value<std::string>()->empty())
-            fail(file, n ? n : &t, where + key + ": expected a non-empty string");
-        return *n->value<std::string>();
+        const std::string v = t.string(key);
+        t.require(!v.empty(), key, "a non-empty string");
+        return v;
     };
     auto positive = [&](const char* key) {
-        const toml::node* n = t.get(key);
-        if (!n) fail(file, &t, where + key + ": expected a positive number (missing)");
-        const double v = finite_number(*n, file, where + key);
-        if (!(v > 0)) fail(file, n, where + key + ": expected a positive number");
+        const double v = t.number(key);
+        t.require(v > 0, key, "a positive number");
         return v;
     };
     FiniteNPoint p;
     p.id = text("id");
-    if (t.get("method")) p.method = text("method");
-    const toml::node* disks = t.get("disks");
-    if (!disks || !disks->is_integer() || *disks->value<std::int64_t>() < 1)
-        fail(file, disks ? disks : &t, where + "disks: expected an integer N >= 1");
-    p.disks = *disks->value<std::int64_t>();
+    if (t.has("method")) p.method = text("method");
+    p.disks = t.integer("disks");
+    t.require(p.disks >= 1, "disks", "an integer N >= 1");
     p.box = text("box");
     p.aspect_ratio = positive("aspect_ratio");
-    p.boundary = text("boundary");
-    if (p.boundary != "periodic" && p.boundary != "reflect")
-        fail(file, t.get("boundary"), where + "boundary: expected \"periodic\" or \"reflect\"");
+    p.boundary = t.choice("boundary", {"periodic", "reflect"}, "");  // required: no fallback
     p.eta = positive("eta");
-    if (p.eta >= M_PI / (2 * std::sqrt(3.0)))  // above close packing no configuration exists
-        fail(file, t.get("eta"), where + "eta: expected an area fraction below close packing pi / (2 sqrt 3)");
+    // Above close packing no configuration exists.
+    t.require(p.eta < M_PI / (2 * std::sqrt(3.0)), "eta", "an area fraction below close packing pi / (2 sqrt 3)");
     p.beta_pressure_d2 = positive("beta_pressure_d2");
     p.standard_error = positive("standard_error");
-    p.line = int(t.source().begin.line);
+    p.line = t.line();
     return p;
 }
 

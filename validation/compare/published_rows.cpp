@@ -6,38 +6,15 @@
 #include <sstream>
 
 #include "core/scene/scene_loader.h"
+#include "validation/judge/statistics.h"
 
 namespace collide::validation {
 
-PooledEstimate pool_inverse_variance(const std::vector<Estimate>& replicates) {
-    PooledEstimate p;
-    double weights = 0, weighted = 0;
-    for (const Estimate& e : replicates) {
-        const double w = 1 / (e.standard_error * e.standard_error);
-        weights += w, weighted += w * e.value;
-    }
-    p.count = replicates.size();
-    if (p.count == 0 || !(weights > 0) || !std::isfinite(weights)) {
-        p.mean = p.standard_error = std::nan("");
-        return p;
-    }
-    p.mean = weighted / weights;
-    p.standard_error = 1 / std::sqrt(weights);
-    for (const Estimate& e : replicates) p.chi2 += std::pow((e.value - p.mean) / e.standard_error, 2);
-    return p;
-}
-
 namespace {
-
-// The counters a pressure-recording run leaves (docs/validation.md, "Published finite-N rows").
-double counter(const CaseResult& r, const char* name) {
-    const auto it = r.counters.find(name);
-    return it == r.counters.end() ? std::nan("") : it->second;
-}
 
 // Mixed unless the run says it is not: the check applies at eta >= 0.69 only, and a run below
 // that records psi6_mixed = 1 or nothing.
-bool mixed(const CaseResult& r) { return !(counter(r, "psi6_mixed") == 0); }
+bool mixed(const CaseResult& r) { return !(r.counter("psi6_mixed") == 0); }
 
 struct PublishedGroup {
     std::size_t scene_index = 0;
@@ -95,7 +72,7 @@ std::string system_mismatch(const SystemFacts& f, const FiniteNPoint& p) {
 
 double mean_of(const std::vector<const CaseResult*>& cases, const char* name) {
     double sum = 0;
-    for (const CaseResult* r : cases) sum += counter(*r, name);
+    for (const CaseResult* r : cases) sum += r->counter(name);
     return sum / double(cases.size());
 }
 
@@ -103,7 +80,7 @@ double mean_of(const std::vector<const CaseResult*>& cases, const char* name) {
 void record_facts(PhysicsRow& row, const PublishedGroup& g, const SystemFacts& f, const PooledEstimate& pooled) {
     double traversals = INFINITY, batches = 0;
     for (const CaseResult* r : g.cases)
-        traversals = std::min(traversals, counter(*r, "psi6_traversals")), batches += counter(*r, "beta_pressure_batches");
+        traversals = std::min(traversals, r->counter("psi6_traversals")), batches += r->counter("beta_pressure_batches");
     row.facts = {{"disks", double(f.disks)},
                  {"equilibration", mean_of(g.cases, "beta_pressure_equilibration")},
                  {"correlation_time", mean_of(g.cases, "beta_pressure_correlation_time")},
@@ -166,7 +143,7 @@ PhysicsRow published_row(const PublishedGroup& g, const Scene& scene, const Publ
     std::vector<Estimate> estimates;
     std::size_t without_counters = 0;
     for (const CaseResult* r : g.cases) {
-        const Estimate e{counter(*r, "beta_pressure"), counter(*r, "beta_pressure_error")};
+        const Estimate e{r->counter("beta_pressure"), r->counter("beta_pressure_error")};
         if (std::isfinite(e.value) && e.standard_error > 0) estimates.push_back(e);
         else ++without_counters;
     }

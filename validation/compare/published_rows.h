@@ -20,18 +20,6 @@ namespace collide::validation {
 // values are held to (issue 47; Li et al.'s errors at N = 72 are 6e-6 to 1e-4 relative).
 inline constexpr double published_relative_error_max = 2e-4;
 
-// The weighted mean of replicates that each carry their own standard error (each run's batch
-// means): weights 1 / se_k^2, mean = sum w_k P_k / sum w_k, se = 1 / sqrt(sum w_k); chi2 of the
-// replicates about the mean (k - 1 degrees of freedom; near k - 1 when the error bars are right).
-struct PooledEstimate {
-    double mean = 0, standard_error = 0, chi2 = 0;
-    std::size_t count = 0;
-};
-struct Estimate {
-    double value = 0, standard_error = 0;
-};
-PooledEstimate pool_inverse_variance(const std::vector<Estimate>& replicates);
-
 // One row per [[scene]] with a `published` key and per backend that ran it (finished cases only).
 // Throws std::runtime_error naming the reference file when a `published` row cannot be read.
 std::vector<PhysicsRow> published_finite_n_rows(const Suite& suite, const std::vector<CaseResult>& results,

@@ -300,11 +300,16 @@ std::map<std::string, Group> reference_groups(const std::vector<Group>& groups) 
 
 // Why group `g` cannot be compared with its reference group `ref` (null: the reference backend
 // is not part of this run), or "" when it can.
-std::string comparison_obstacle(const Group& g, const Group* ref, const std::string& reference_backend) {
+// `backend`: what g's backend declares (nullptr if nothing). A sampler's configurations follow no
+// trajectory and carry no velocities; its statistics are its own counters (beta_pressure),
+// compared in the physics rows.
+std::string comparison_obstacle(const Group& g, const Group* ref, const std::string& reference_backend,
+                                const BackendInfo* backend) {
     if (g.cases.front()->status == RunStatus::left_out) return "case left out: backend cannot run this scene";
     if (!ref) return "the reference backend '" + reference_backend + "' is not part of this run";
     if (ref->cases.front()->status == RunStatus::left_out)
         return "the reference backend cannot run this scene: " + ref->cases.front()->diagnostic;
+    if (backend && backend->sampler) return backend->sampler_left_out();
     return "";
 }
 
@@ -467,14 +472,10 @@ Comparisons compare_with_reference(const Suite& suite, const std::vector<CaseRes
         if (entry.comparison == Comparison::none || spec.reference) continue;
         const auto found = references.find(reference_key(spec));
         const Group* ref = found == references.end() ? nullptr : &found->second;
-        if (const std::string why = comparison_obstacle(g, ref, suite.reference); !why.empty()) {
+        const auto it = declared.find(spec.backend);
+        const BackendInfo* backend = it == declared.end() ? nullptr : it->second;
+        if (const std::string why = comparison_obstacle(g, ref, suite.reference, backend); !why.empty()) {
             leave_out_comparison(g, entry.comparison, why, out.checks);
-            continue;
-        }
-        // A sampler's configurations follow no trajectory and carry no velocities; its
-        // statistics are its own counters (beta_pressure), compared in the physics rows.
-        if (const auto it = declared.find(spec.backend); it != declared.end() && it->second->sampler) {
-            leave_out_comparison(g, entry.comparison, it->second->sampler_left_out(), out.checks);
             continue;
         }
         const bool trajectory = entry.comparison == Comparison::trajectory;

@@ -10,6 +10,25 @@
 
 namespace collide::validation {
 
+PooledEstimate pool_inverse_variance(const std::vector<Estimate>& replicates) {
+    PooledEstimate p;
+    double weights = 0, weighted = 0;
+    for (const Estimate& e : replicates) {
+        const double w = 1 / (e.standard_error * e.standard_error);
+        weights += w, weighted += w * e.value;
+    }
+    p.count = replicates.size();
+    if (p.count == 0 || !(weights > 0) || !std::isfinite(weights)) {
+        p.mean = p.standard_error = std::nan("");
+        return p;
+    }
+    p.mean = weighted / weights;
+    p.standard_error = 1 / std::sqrt(weights);
+    for (const Estimate& e : replicates) p.chi2 += std::pow((e.value - p.mean) / e.standard_error, 2);
+    return p;
+}
+
+
 MeanAndError mean_and_error(const std::vector<double>& samples) {
     MeanAndError r;
     r.count = samples.size();

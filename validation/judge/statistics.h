@@ -1,8 +1,10 @@
 // The small statistics toolbox of the validation suite: replicate means with standard errors,
+// replicates pooled by inverse variance,
 // the two-sample z-score and Kolmogorov-Smirnov test, and least-squares slopes on log-log data.
 // Means and standard deviations come from GSL (gsl_stats_*), the fits from Eigen.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <vector>
 
@@ -14,6 +16,18 @@ struct MeanAndError {
     std::size_t count = 0;
 };
 MeanAndError mean_and_error(const std::vector<double>& samples);
+
+// The weighted mean of replicates that each carry their own standard error (each run's batch
+// means): weights 1 / se_k^2, mean = sum w_k P_k / sum w_k, se = 1 / sqrt(sum w_k); chi2 of the
+// replicates about the mean (k - 1 degrees of freedom; near k - 1 when the error bars are right).
+struct PooledEstimate {
+    double mean = 0, standard_error = 0, chi2 = 0;
+    std::size_t count = 0;
+};
+struct Estimate {
+    double value = 0, standard_error = 0;
+};
+PooledEstimate pool_inverse_variance(const std::vector<Estimate>& replicates);
 
 // The normal score with the same two-sided tail probability as Student's t with `dof` degrees
 // of freedom: z = Phi^-1(1 - Q_t(|t|; dof)). A mean of n replicates over its own standard error

@@ -4,6 +4,7 @@
 // ones included.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <map>
 #include <string>
@@ -58,6 +59,11 @@ struct CaseResult {
     std::string hdf5_file;                     // relative to the output directory, "" if none
 
     bool finished() const { return status == RunStatus::completed; }
+    // A counter the solver or the pressure record left, NaN where it left none.
+    double counter(const std::string& name) const {
+        const auto it = counters.find(name);
+        return it == counters.end() ? std::nan("") : it->second;
+    }
 };
 
 // The record's first line is `checksum = "crc32:XXXXXXXX"` over the rest of the file.
