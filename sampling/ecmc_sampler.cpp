@@ -14,7 +14,7 @@
 
 namespace collide {
 
-std::optional<std::string> EcmcSampler::supports(const Scene& scene) { return outside_sampler_model(scene, SamplerLimits{}); }
+std::optional<std::string> EcmcSampler::supports(const Scene& scene) { return outside_sampler_model(scene_features(scene), SamplerLimits{}); }
 
 // ---------------------------------------------------------------------------------------
 // Loading
@@ -59,8 +59,7 @@ void EcmcSampler::load(const Scene& scene, const ParticleState<double>& initial)
     gsl_rng_set(rng_.get(), (unsigned long)(scene.seed ^ 0x45434d43u));  // a stream of its own ("ECMC")
     chains_done_ = lifts_ = entry_chains_ = 0;
     entry_sum_ = now_ = 0;
-    pressure_series_.clear();
-    psi6_phase_.clear();
+    series_ = {{}, double(chains_per_entry_), {}, density_d2_ * std::numbers::pi / 4, {}};
 }
 
 void EcmcSampler::place_in_cells() {
@@ -171,12 +170,12 @@ void EcmcSampler::run_chain() {
 void EcmcSampler::record_chain(double lift_sum) {
     entry_sum_ += 1 + lift_sum / chain_length_;
     if (++entry_chains_ < chains_per_entry_) return;
-    pressure_series_.push_back(entry_sum_ / double(entry_chains_) * density_d2_);
+    series_.beta_pressure.push_back(entry_sum_ / double(entry_chains_) * density_d2_);
     // psi6 once per entry: each disk moved about one diameter since the last sample, so the
     // phase moves by far less than pi between samples (orientational_order.h's mixing check).
     ParticleState<double> configuration;
     read_state(configuration);
-    psi6_phase_.push_back(std::arg(global_psi6(scene_.world, configuration)));
+    series_.psi6_phase.push_back(std::arg(global_psi6(scene_.world, configuration)));
     entry_sum_ = 0;
     entry_chains_ = 0;
 }
@@ -208,10 +207,8 @@ SolverStats EcmcSampler::stats() const {
     c["chain_length"] = chain_length_;
     c["chains_per_entry"] = double(chains_per_entry_);
     // The counters every backend records (core/thermo/pressure_record.h), lengths in chains.
-    if (pressure_series_.size() >= 2)
-        for (const auto& [name, value] : pressure_counters({pressure_series_, double(chains_per_entry_), psi6_phase_,
-                                                            density_d2_ * std::numbers::pi / 4, {}}))
-            c[name] = value;
+    if (series_.beta_pressure.size() >= 2)
+        for (const auto& [name, value] : counters_.counters(series_)) c[name] = value;
     return s;
 }
 

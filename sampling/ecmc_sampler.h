@@ -31,6 +31,7 @@
 #include <gsl/gsl_rng.h>
 
 #include "core/solver.h"
+#include "core/thermo/pressure_record.h"
 #include "sampling/chain_cells.h"
 
 namespace collide {
@@ -83,8 +84,8 @@ private:
     // The pressure series: one beta P d^2 per entry of chains_per_entry_ chains.
     double entry_sum_ = 0;
     std::int64_t entry_chains_ = 0;
-    std::vector<double> pressure_series_;
-    std::vector<double> psi6_phase_;  // arg psi6 at the end of each entry
+    PressureSeries series_;  // beta P d^2 and arg psi6 at the end of each entry (lengths in chains)
+    PressureCounterCache counters_;
 };
 
 }  // namespace collide

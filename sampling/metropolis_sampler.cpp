@@ -18,7 +18,7 @@ constexpr SamplerLimits metropolis_limits{.walls = true};
 }
 
 std::optional<std::string> MetropolisSampler::supports(const Scene& scene) {
-    return outside_sampler_model(scene, metropolis_limits);
+    return outside_sampler_model(scene_features(scene), metropolis_limits);
 }
 
 void MetropolisSampler::load(const Scene& scene, const ParticleState<double>& initial) {
@@ -62,8 +62,8 @@ void MetropolisSampler::load(const Scene& scene, const ParticleState<double>& in
     gsl_rng_set(rng_.get(), (unsigned long)(scene.seed ^ 0x4d455452u));  // a stream of its own ("METR")
     sweeps_done_ = trials_ = accepted_ = tuning_accepted_ = tuning_trials_ = 0;
     now_ = 0;
-    pressure_series_.clear();
-    psi6_phase_.clear();
+    const World& w = scene.world;
+    series_ = {{}, 1, {}, double(n) * std::numbers::pi * sigma2_ / (4 * w.width() * w.height()), {}};
 }
 
 double MetropolisSampler::wrap(int axis, double p) const {
@@ -148,7 +148,7 @@ void MetropolisSampler::record_pressure() {
     // phase moves little between samples: orientational_order.h's mixing check).
     ParticleState<double> configuration;
     read_state(configuration);
-    psi6_phase_.push_back(std::arg(global_psi6(scene_.world, configuration)));
+    series_.psi6_phase.push_back(std::arg(global_psi6(scene_.world, configuration)));
     const std::size_t n = pos_[0].size();
     histogram_.clear();
     const World& w = scene_.world;
@@ -158,7 +158,7 @@ void MetropolisSampler::record_pressure() {
         for (std::uint32_t i = 0; i < n; ++i)
             for_each_neighbour(i, [&](std::uint32_t j, double r2) { if (j > i) histogram_.add(std::sqrt(r2) - sigma_); });
         const double z = 1 + sigma_ * histogram_.contact_density(1) / (2 * double(n));
-        pressure_series_.push_back(z * double(n) * sigma2_ / (w.width() * w.height()));
+        series_.beta_pressure.push_back(z * double(n) * sigma2_ / (w.width() * w.height()));
         return;
     }
     for (std::uint32_t i = 0; i < n; ++i) {
@@ -168,7 +168,7 @@ void MetropolisSampler::record_pressure() {
         histogram_.add(w.ymax - radius_ - pos_[1][i]);
     }
     const double perimeter = 2 * (w.width() + w.height());
-    pressure_series_.push_back(histogram_.contact_density(1) / perimeter * sigma2_);
+    series_.beta_pressure.push_back(histogram_.contact_density(1) / perimeter * sigma2_);
 }
 
 void MetropolisSampler::read_state(ParticleState<double>& out) const {
@@ -189,10 +189,8 @@ SolverStats MetropolisSampler::stats() const {
     c["acceptance"] = trials_ > 0 ? double(accepted_) / double(trials_) : 0;
     c["contact_window"] = histogram_.window();
     // The counters every backend records (core/thermo/pressure_record.h), lengths in sweeps.
-    const World& w = scene_.world;
-    const double area_fraction = double(pos_[0].size()) * std::numbers::pi * sigma2_ / (4 * w.width() * w.height());
-    if (pressure_series_.size() >= 2)
-        for (const auto& [name, value] : pressure_counters({pressure_series_, 1, psi6_phase_, area_fraction, {}})) c[name] = value;
+    if (series_.beta_pressure.size() >= 2)
+        for (const auto& [name, value] : counters_.counters(series_)) c[name] = value;
     return s;
 }
 

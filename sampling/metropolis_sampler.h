@@ -28,6 +28,7 @@
 #include <gsl/gsl_rng.h>
 
 #include "core/solver.h"
+#include "core/thermo/pressure_record.h"
 #include "sampling/chain_cells.h"
 #include "sampling/contact_histogram.h"
 
@@ -97,8 +98,8 @@ private:
     std::int64_t trials_ = 0, accepted_ = 0;  // in the sampled (tuned) part
     std::int64_t tuning_trials_ = 0, tuning_accepted_ = 0;  // in the current tuning block
     double now_ = 0;
-    std::vector<double> pressure_series_;  // beta P d^2, one per sampled sweep
-    std::vector<double> psi6_phase_;       // arg psi6, one per sampled sweep
+    PressureSeries series_;  // beta P d^2 and arg psi6, one per sampled sweep (lengths in sweeps)
+    PressureCounterCache counters_;
 };
 
 }  // namespace collide

@@ -10,19 +10,17 @@
 
 namespace collide {
 
-std::optional<std::string> outside_sampler_model(const Scene& scene, const SamplerLimits& limits) {
-    const Physics& p = scene.physics;
-    if (!scene.periodic() && !limits.walls)
+std::optional<std::string> outside_sampler_model(const SceneFeatures& f, const SamplerLimits& limits) {
+    if (f.reflecting_walls && !limits.walls)
         return "reflecting walls: this sampler handles periodic boxes only (a chain would have to stop at a wall)";
-    if (scene.has_gravity())
-        return "gravity: a sampler draws from the uniform measure of hard disks, which has no potential energy";
-    if (scene.has_damping()) return "damping: a sampler has no velocities to damp";
-    if (scene.has_friction()) return "friction: a sampler has no collisions to exchange tangential impulse in";
-    if (p.restitution != 1)
-        return "restitution e = " + round_trip_text(p.restitution) +
+    if (f.gravity) return "gravity: a sampler draws from the uniform measure of hard disks, which has no potential energy";
+    if (f.damping) return "damping: a sampler has no velocities to damp";
+    if (f.friction) return "friction: a sampler has no collisions to exchange tangential impulse in";
+    if (f.restitution != 1)
+        return "restitution e = " + round_trip_text(f.restitution) +
                " < 1: inelastic collisions are a claim about dynamics; a sampler samples the equilibrium of elastic hard disks";
-    if (!scene.periodic() && p.wall_restitution != 1)
-        return "wall restitution " + round_trip_text(p.wall_restitution) + " < 1: a claim about dynamics, which a sampler has none of";
+    if (f.reflecting_walls && f.wall_restitution != 1)
+        return "wall restitution " + round_trip_text(f.wall_restitution) + " < 1: a claim about dynamics, which a sampler has none of";
     return std::nullopt;
 }
 
@@ -59,7 +57,7 @@ void require_inside_walls(const std::string& who, const Scene& scene, const Part
 
 void check_sampler_start(const std::string& who, const Scene& scene, const ParticleState<double>& start,
                          const SamplerLimits& limits) {
-    if (auto why = outside_sampler_model(scene, limits)) throw std::runtime_error(who + ": scene '" + scene.name + "': " + *why);
+    if (auto why = outside_sampler_model(scene_features(scene), limits)) throw std::runtime_error(who + ": scene '" + scene.name + "': " + *why);
     if (start.size() == 0) throw std::runtime_error(who + ": scene '" + scene.name + "' has no disks to sample");
     require_equal_movable_disks(who, start);
     if (scene.periodic()) {

@@ -10,6 +10,7 @@
 
 #include "core/particle_state.h"
 #include "core/scene/scene.h"
+#include "core/scene/scene_features.h"
 
 namespace collide {
 
@@ -18,8 +19,8 @@ struct SamplerLimits {
 };
 
 // The reason `who` cannot sample the scene as written, or nullopt. Reads the scene file's
-// statements only (periodic or walls, gravity, damping, friction, e, wall e).
-std::optional<std::string> outside_sampler_model(const Scene& scene, const SamplerLimits& limits);
+// statements only (periodic or walls, gravity, damping, friction, e, wall e: scene_features(scene)).
+std::optional<std::string> outside_sampler_model(const SceneFeatures& features, const SamplerLimits& limits);
 
 // The same for the generated start: stones (moving or not: a sampler moves every disk),
 // unequal radii, positions outside the box, and an overlap (the pair named). Throws

@@ -46,6 +46,23 @@ struct PressureSeries {
 // the same estimator and its own equilibration cut).
 std::map<std::string, double> pressure_counters(const PressureSeries& series);
 
+// pressure_counters of a series that only grows, computed again only when it has grown: a
+// sampler's stats() is asked for them at every output, and by the viewer at every frame.
+class PressureCounterCache {
+public:
+    const std::map<std::string, double>& counters(const PressureSeries& series) const {
+        if (series.beta_pressure.size() != entries_) {
+            counters_ = pressure_counters(series);
+            entries_ = series.beta_pressure.size();
+        }
+        return counters_;
+    }
+
+private:
+    mutable std::size_t entries_ = 0;
+    mutable std::map<std::string, double> counters_;
+};
+
 // Why a scene gets no pressure record, or nullopt when it gets one: a periodic box (walls
 // make the pressure depend on the wall, and the virial has wall terms), no gravity, e = 1 (a
 // cooling gas has no stationary pressure), no friction or damping, equal moving disks (the
