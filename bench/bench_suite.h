@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <ctime>
 #include <functional>
 #include <map>
 #include <memory>
@@ -19,6 +20,10 @@ class ProgressLine;
 }
 
 namespace collide::bench {
+
+// Seconds of processor time used by this process (unlike wall-clock time, it does not count
+// the time other programs on a loaded machine hold the core).
+inline double cpu_seconds() { return double(std::clock()) / CLOCKS_PER_SEC; }
 
 struct BenchArgs {
     std::vector<std::string> backends;  // empty: every backend the suite applies to

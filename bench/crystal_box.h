@@ -6,16 +6,15 @@
 
 #include <cmath>
 #include <cstdint>
-#include <random>
 #include <string>
 
 #include "core/scene/scene.h"
 
 namespace collide::bench {
 
-// The lattice is listed disk by disk (a "list" block): the scene generator's hexagonal lattice
-// must fit inside the box without wrapping, which a lattice that fills a periodic box does not.
-// Velocities: Maxwell at kT = 1 (unit mass), drawn with std::mt19937_64(seed).
+// The scene generator's lattice that fills a periodic box (`fill_box`, core/scene/filled_lattice.h),
+// as the physics suite's li2022_*_crystal scenes use it; velocities Maxwell at kT = 1 (unit
+// mass) from the scene's seed, the centre of mass at rest.
 inline Scene crystal_box(int columns, int rows, double eta, std::uint64_t seed) {
     const double spacing = std::sqrt(M_PI / (2 * std::sqrt(3.0) * eta)), row_height = spacing * std::sqrt(3.0) / 2;
     Scene s;
@@ -24,15 +23,15 @@ inline Scene crystal_box(int columns, int rows, double eta, std::uint64_t seed) 
     s.seed = seed;
     s.world = World{0, 0, columns * spacing, rows * row_height, Boundary::periodic};
     ParticleGenerator g;
-    g.kind = "list";
-    std::mt19937_64 rng(seed);
-    std::normal_distribution<double> maxwell(0.0, 1.0);
-    for (int row = 0; row < rows; ++row)
-        for (int column = 0; column < columns; ++column) {
-            const double x = (column + 0.25 + 0.5 * (row % 2)) * spacing, y = (row + 0.5) * row_height;
-            const double vx = maxwell(rng), vy = maxwell(rng);
-            g.disks.push_back({x, y, vx, vy, 0.5, 1.0, false, 0});
-        }
+    g.kind = "lattice";
+    g.lattice = "hexagonal";
+    g.fill_box = true;
+    g.columns = columns;
+    g.count = std::int64_t(columns) * rows;
+    g.radius = 0.5;
+    g.mass = 1.0;
+    g.velocity_kind = "maxwell";
+    g.temperature = 1.0;
     s.generators.push_back(g);
     return s;
 }

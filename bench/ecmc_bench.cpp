@@ -22,9 +22,7 @@
 #include "core/backend_registry.h"
 #include "core/numerics/median.h"
 #include "core/scene/scene_loader.h"
-#include "core/statistics/batch_means.h"
-#include "core/thermo/kinetic_temperature.h"
-#include "core/thermo/pressure_estimator.h"
+#include "core/thermo/pressure_record.h"
 
 namespace collide::bench {
 namespace {
@@ -44,8 +42,6 @@ struct Measurement {
     double events_per_second() const { return events / cpu_seconds; }
     double figure_of_merit() const { return error * error * cpu_seconds; }
 };
-
-double cpu_seconds() { return double(std::clock()) / CLOCKS_PER_SEC; }
 
 // ecmc runs exactly t chains by advance_to(t): chains = duration = a number it never reaches.
 Scene sampler_scene(Scene s) {
@@ -81,39 +77,34 @@ Measurement measure_ecmc(const Scene& scene, std::int64_t equilibrate, std::int6
     return m;
 }
 
-// event: the collision virial per window of simulated time, as Z = 1 + ((N-1)/N) W / K_int
-// (core/thermo/pressure_estimator.h), then batch means.
+// event: the pressure record of every event run (core/thermo/pressure_record.h), sampled once per
+// window of about N / 2 collisions after the equilibration.
 Measurement measure_event(const Scene& scene, std::int64_t equilibrate, std::int64_t measure) {
     Scene s = scene;
     s.run.duration = 1e9;
     ParticleState<double> state = generate_initial_state(s);
     auto solver = find_backend("event").create(BackendOptions{});
     solver->load(s, state);
-    const double n = double(state.size());
-    // Collisions per unit time, from a short first stretch, size the windows: about N / 2 collisions each.
+    // Collisions per unit time, from a short first stretch, size the windows.
     solver->advance_to(1.0);
     const double rate = double(std::max<std::int64_t>(1, solver->stats().contacts));
-    const double window = 0.5 * n / rate;
+    const double window = 0.5 * double(state.size()) / rate;
     while (solver->stats().contacts < equilibrate) solver->advance_to(solver->time() + window);
     solver->read_state(state);
-    const KineticTemperature kt = kinetic_temperature(s, state);
-    const double area = s.world.width() * s.world.height();
-    std::vector<double> series;
+    PressureRecorder record(s, state, window);
+    record.sample(solver->stats(), solver->time());
     Measurement m;
     const std::int64_t start_collisions = solver->stats().contacts;
-    double virial = solver->stats().counters.at("virial_sum");
     const double start = cpu_seconds();
     while (solver->stats().contacts - start_collisions < measure) {
         solver->advance_to(solver->time() + window);
-        const double now = solver->stats().counters.at("virial_sum");
-        series.push_back(beta_pressure_d2(compressibility_factor((now - virial) / (2 * window), kt), state.size(), area, 1.0));
-        virial = now;
+        record.sample(solver->stats(), solver->time());
     }
     m.cpu_seconds = cpu_seconds() - start;
     m.events = double(solver->stats().contacts - start_collisions);
-    const SeriesEstimate e = estimate_stationary_mean(series);
-    m.beta_pressure = e.mean;
-    m.error = e.error;
+    const auto counters = record.counters();
+    m.beta_pressure = counters.at("beta_pressure");
+    m.error = counters.at("beta_pressure_error");
     return m;
 }
 

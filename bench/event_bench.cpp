@@ -41,10 +41,6 @@ GasCase lattice_gas(std::int64_t n, double area_fraction, std::uint64_t seed) {
     return gas;
 }
 
-// Seconds of processor time used by this process (unlike wall-clock time, it does not count
-// the time other programs on a loaded machine hold the core).
-double cpu_seconds() { return double(std::clock()) / CLOCKS_PER_SEC; }
-
 struct Timing {
     double seconds = 0;      // wall clock
     double cpu_seconds = 0;  // processor time

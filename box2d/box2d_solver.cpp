@@ -160,10 +160,7 @@ void Box2dSolver::load(const Scene& scene, const ParticleState<double>& initial)
     if (auto why = box2d_scale_problem(scale, mean, options_.length_scale.has_value()))
         throw std::runtime_error("box2d cannot run scene '" + scene.name + "': " + *why + " (docs/refusals.md)");
     units_ = Box2dUnits(scale, scene.world);
-    substeps_ = options_.substeps.value_or(scene.run.substeps);
-    if (!(scene.run.dt > 0) || substeps_ < 1)
-        throw std::runtime_error("box2d: scene '" + scene.name + "': needs dt > 0 and substeps >= 1 (dt = " +
-                                 round_trip_text(scene.run.dt) + ", substeps = " + std::to_string(substeps_) + ")");
+    substeps_ = engine_substeps("box2d", scene, options_.substeps);
     step_count_ = 0;
     stats_ = SolverStats{};
     cap_steps_ = cap_body_steps_ = 0;

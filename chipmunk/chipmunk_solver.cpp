@@ -76,10 +76,7 @@ void ChipmunkSolver::load(const Scene& scene, const ParticleState<double>& initi
     initial_ = initial;
     options_ = parse_chipmunk_options(scene);
     if (iterations_) options_.iterations = *iterations_;
-    substeps_ = options_.substeps.value_or(scene.run.substeps);
-    if (!(scene.run.dt > 0) || substeps_ < 1)
-        throw std::runtime_error("chipmunk: scene '" + scene.name + "': needs dt > 0 and substeps >= 1 (dt = " +
-                                 round_trip_text(scene.run.dt) + ", substeps = " + std::to_string(substeps_) + ")");
+    substeps_ = engine_substeps("chipmunk", scene, options_.substeps);
     require_representable(scene, initial, Precision::double_, Method::metrics_only, "chipmunk");
     step_count_ = 0;
     stats_ = SolverStats{};

@@ -5,11 +5,26 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
 
 #include "core/scene/scene.h"
+#include "core/numerics/number_text.h"
 #include "core/numerics/target_time.h"
 
 namespace collide {
+
+// The engine steps per scene time step dt of a game engine (box2d, chipmunk): its own
+// `substeps` option where set, else the scene's run.substeps. Throws naming the engine and the
+// scene unless dt > 0 and there is at least one.
+inline int engine_substeps(const char* engine, const Scene& scene, std::optional<int> own) {
+    const int substeps = own.value_or(scene.run.substeps);
+    if (!(scene.run.dt > 0) || substeps < 1)
+        throw std::runtime_error(std::string(engine) + ": scene '" + scene.name + "': needs dt > 0 and substeps >= 1 (dt = " +
+                                 round_trip_text(scene.run.dt) + ", substeps = " + std::to_string(substeps) + ")");
+    return substeps;
+}
 
 template <typename Real, typename CollideFirstStep, typename IntegrateFirstSubstep>
 void step_by_rule(const RunSettings& run, CollideFirstStep&& collide_first_step,
