@@ -80,9 +80,14 @@ function meanRadius(disks) {
   return disks.reduce((sum, d) => sum + d.radius, 0) / disks.length;
 }
 
-// What engines.json says of engine `name`: its package, precision, library file.
+// The engines of engines.json: name, npm package, precision, a line about it.
+function engineList() {
+  return JSON.parse(fs.readFileSync(path.join(__dirname, 'engines.json'), 'utf8'));
+}
+
+// What engines.json says of engine `name`.
 function engineEntry(name) {
-  const entry = JSON.parse(fs.readFileSync(path.join(__dirname, 'engines.json'), 'utf8')).find((e) => e.name === name);
+  const entry = engineList().find((e) => e.name === name);
   if (!entry) throw new Error(`engines.json has no engine '${name}'`);
   return entry;
 }
@@ -101,9 +106,11 @@ function requireEngine(name) {
   }
 }
 
-// The installed version (some packages do not export their package.json to require()).
+// The installed version (some packages do not export their package.json to require()), or ""
+// when the package is not installed.
 function packageVersion(name) {
-  return JSON.parse(fs.readFileSync(path.join(__dirname, 'node_modules', name, 'package.json'), 'utf8')).version;
+  const manifest = path.join(__dirname, 'node_modules', name, 'package.json');
+  return fs.existsSync(manifest) ? JSON.parse(fs.readFileSync(manifest, 'utf8')).version : '';
 }
 
 // The scene's features an engine may not have; "" when it has them all.
@@ -158,4 +165,4 @@ function main(engine) {
   });
 }
 
-module.exports = { main, requireEngine, meanRadius, readNpy, writeNpy, readRequest };
+module.exports = { main, requireEngine, meanRadius, readNpy, writeNpy, readRequest, engineList, packageVersion };

@@ -303,7 +303,6 @@ def statistical_points(summary, scene, observable):
                 {"dt": p["dt"], "substeps": p.get("substeps", 1) or 1, "seconds": p["seconds_per_time_unit"],
                  "error": abs(d["relative"]), "relative": d["relative"], "se": d["relative_standard_error"],
                  "sigmas": d["sigmas"], "resolved": d["resolved"], "upper": d["upper_limit_95"],
-                 "replicates": d.get("replicates"),
                  "detectable": d["detectable"], "replicates": d["replicates"],
                  "predicted": predicted / d["reference"] if isinstance(predicted, NUMBER) else None})
     return lines

@@ -9,7 +9,6 @@ summary.json and the case records; it judges nothing."""
 import math
 import os
 import statistics
-import tomllib
 
 import matplotlib.colors
 
@@ -58,22 +57,14 @@ def cost_per_disk_step(summary, backend):
     return statistics.median(c["wall_seconds"] / (c["steps"] * c["disks"]) for c in big), most
 
 
-def provenance(directory, summary, backend):
-    """The engine's version and hashed files, from one of its case records."""
-    case = next((c for c in summary["cases"] if c["backend"] == backend and c["status"] == "completed"), None)
-    if case is None:
-        return ""
-    try:
-        with open(os.path.join(directory, case["result_file"]), encoding="utf-8") as f:
-            record = tomllib.loads(f.read().split("\n", 1)[1])
-    except (OSError, ValueError, IndexError):
-        return ""
-    p = record.get("provenance", {})
-    keys = ["solver_version", "chipmunk_version", "box2d_preset", "chipmunk_preset", "solver_files_sha256"]
-    return "; ".join(f"{k}: {p[k]}" for k in keys if k in p)
+def provenance(summary, backend):
+    """The engine's version, preset and hashed files: what its cases' provenance said it ran on
+    (summary.json backends.B.ran_on, the same for every backend)."""
+    ran_on = ((summary.get("backends") or {}).get(backend) or {}).get("ran_on") or {}
+    return "; ".join(f"{k}: {ran_on[k]}" for k in ("version", "preset", "files_sha256") if k in ran_on)
 
 
-def rows(directory, summary):
+def rows(summary):
     out = []
     for backend in engines(summary):
         cells = []
@@ -85,7 +76,7 @@ def rows(directory, summary):
         cells.append({"text": "–" if cost is None else f"{cost * 1e6:.3g} µs ({disks} disks: {cost * disks * 1e3:.3g} ms/step)",
                       "href": None})
         out.append({"backend": backend, "colour": matplotlib.colors.to_hex(figures.colour(backend)), "cells": cells,
-                    "provenance": provenance(directory, summary, backend)})
+                    "provenance": provenance(summary, backend)})
     return out
 
 
@@ -107,7 +98,7 @@ def work_precision_figure(summary):
     ax.set_yscale("log")
     ax.set_xlabel("run time per simulated time unit (s)")
     ax.set_ylabel("trajectory error / r_min")
-    ax.legend(fontsize=7, ncol=2)
+    ax.legend(fontsize=figures.TEXT_PT, ncol=2)
     fig.tight_layout()
     return figures.png(fig)
 
@@ -120,5 +111,5 @@ def write(directory, summary, out):
     safe_output.check_output_path(path)
     safe_output.write_text(path, templating.render("engines.html.j2", suite=summary["suite"],
                                                    columns=[t for _, t in COLUMNS] + ["cost per disk-step"],
-                                                   rows=rows(directory, summary), figure_png=work_precision_figure(summary)))
+                                                   rows=rows(summary), figure_png=work_precision_figure(summary)))
     return path

@@ -196,7 +196,8 @@ Json check_order_json(const SuiteOutcome& outcome) {
 //
 // `ran_on`: what its first case's provenance says it ran on, found by the keys' endings so that
 // every backend names them alike: the device, its type and platform (an OpenCL device: PoCL is a
-// CPU device), the precision it computed in ("real"), its threads per case and its preset.
+// CPU device), the precision it computed in ("real"), its threads per case, its preset, and for
+// an engine its version and the hashes of its package files (an outside solver's `files`).
 Json ran_on_json(const std::map<std::string, std::string>& provenance) {
     const auto ends = [](const std::string& key, const std::string& tail) {
         return key.size() >= tail.size() && key.compare(key.size() - tail.size(), tail.size(), tail) == 0;
@@ -209,6 +210,8 @@ Json ran_on_json(const std::map<std::string, std::string>& provenance) {
         else if (key == "real") o.text("precision", value);
         else if (ends(key, "threads")) o.text("threads", value);
         else if (ends(key, "_preset")) o.text("preset", value);
+        else if (ends(key, "_version") && !ends(key, "_device_version")) o.text("version", value);
+        else if (key == "solver_files_sha256") o.text("files_sha256", value);
         else if (key == "variant_settings") o.text("variant_settings", value);
     }
     return o.json();
