@@ -209,6 +209,86 @@ TEST(PublishedFiniteN, ASceneThatIsNotThePublishedSystemFails) {
     EXPECT_NE(box.detail.find("height / width"), std::string::npos) << box.detail;
 }
 
+// --- Two routes on one point: `event` and a sampler ----------------------------------------
+
+// The replicates of `two_replicates`, run by `backend`.
+std::vector<CaseResult> by_backend(std::vector<CaseResult> results, const std::string& backend) {
+    for (CaseResult& r : results) {
+        r.spec.backend = backend;
+        r.spec.id = "n72_crystal__" + backend + "__seed" + std::to_string(r.spec.seed);
+    }
+    return results;
+}
+
+std::vector<PhysicsRow> rows_of(const Suite& suite, const std::vector<CaseResult>& results) {
+    const Scene scene = *suite.scenes[0].scene;
+    return compare_with_physics(suite, results, [&](const CaseSpec&) -> const Scene& { return scene; }).rows;
+}
+
+const PhysicsRow& row_of(const std::vector<PhysicsRow>& rows, const std::string& kind, const std::string& backend) {
+    for (const PhysicsRow& r : rows)
+        if (r.row == kind && r.backend == backend) return r;
+    throw std::runtime_error("no " + kind + " row of " + backend);
+}
+
+std::vector<CaseResult> event_and_ecmc(double event, double ecmc, double ecmc_error) {
+    std::vector<CaseResult> results = two_replicates(event, 0.0005);
+    for (CaseResult& r : by_backend(two_replicates(ecmc, ecmc_error), "ecmc")) {
+        r.counters["lifts"] = 1e8;  // what event chains record
+        results.push_back(r);
+    }
+    return results;
+}
+
+TEST(PublishedFiniteN, EachRouteNamesTheEstimatorItsCasesRecorded) {
+    const std::vector<PhysicsRow> rows = rows_of(crystal_suite(), event_and_ecmc(7.8228, 7.8236, 0.0008));
+    EXPECT_NE(row_of(rows, "published_finite_n", "ecmc").estimator.find("lifts"), std::string::npos);
+    std::vector<CaseResult> results = two_replicates(7.8228, 0.0005);
+    for (CaseResult& r : by_backend(two_replicates(7.8228, 0.002), "metropolis")) {
+        r.counters["contact_window"] = 0.043;
+        results.push_back(r);
+    }
+    const PhysicsRow& metropolis = row_of(rows_of(crystal_suite(), results), "published_finite_n", "metropolis");
+    EXPECT_NE(metropolis.estimator.find("pair-gap histogram"), std::string::npos) << metropolis.estimator;
+    EXPECT_NE(metropolis.estimator.find("0.043"), std::string::npos) << metropolis.estimator;
+}
+
+TEST(PublishedFiniteN, TheRoutesRowHoldsEcmcToEventOnTheirDifference) {
+    // ecmc 7.8236 +- 0.0008 / sqrt 2 against event 7.8228 +- 0.0005 / sqrt 2: z = 0.0008 / 0.000667 = 1.2.
+    const std::vector<PhysicsRow> rows = rows_of(crystal_suite(), event_and_ecmc(7.8228, 7.8236, 0.0008));
+    ASSERT_EQ(rows.size(), 3u);  // event's and ecmc's published rows, and event vs ecmc
+    const PhysicsRow& routes = row_of(rows, "routes_agree", "ecmc");
+    EXPECT_EQ(routes.verdict, PhysicsVerdict::pass) << routes.detail;
+    EXPECT_NEAR(routes.reference, 7.8228, 1e-12);
+    EXPECT_NEAR(routes.score, 0.0008 / std::hypot(0.0008, 0.0005) * std::sqrt(2.0), 1e-9);
+    EXPECT_NEAR(routes.score_from.value - routes.score_from.reference, 0.0008, 1e-12);
+    EXPECT_EQ(routes.published, "li_2022:N72_crystal_0.670");
+    // Each route names its estimator, read from what the cases recorded.
+    EXPECT_NE(row_of(rows, "published_finite_n", "event").estimator.find("collision virial"), std::string::npos);
+    // Ten combined errors apart, each still within 3 of the published value's wide bar: the routes row fails.
+    const std::vector<PhysicsRow> apart = rows_of(crystal_suite(), event_and_ecmc(7.8228, 7.8228 + 0.0067, 0.0008));
+    EXPECT_EQ(row_of(apart, "routes_agree", "ecmc").verdict, PhysicsVerdict::fail);
+    EXPECT_GT(row_of(apart, "routes_agree", "ecmc").score, 9);
+}
+
+TEST(PublishedFiniteN, ARouteThatHasNotMixedIsShownNotJudged) {
+    std::vector<CaseResult> results = two_replicates(7.8228, 0.0005);
+    for (CaseResult& r : by_backend(two_replicates(7.9, 0.0005, false), "ecmc")) results.push_back(r);
+    EXPECT_EQ(row_of(rows_of(crystal_suite(), results), "routes_agree", "ecmc").verdict, PhysicsVerdict::shown);
+}
+
+TEST(PublishedFiniteN, ABackendIsHeldToThePrecisionTheSuiteNamesForIt) {
+    // 3.6e-4 relative pooled: above event's 2e-4, within the 5e-4 the suite asks of ecmc.
+    Suite suite = crystal_suite();
+    suite.published_precision["ecmc"] = 5e-4;
+    std::vector<CaseResult> results = two_replicates(7.82314, 0.004);
+    for (CaseResult& r : by_backend(two_replicates(7.82314, 0.004), "ecmc")) results.push_back(r);
+    const std::vector<PhysicsRow> rows = rows_of(suite, results);
+    EXPECT_EQ(row_of(rows, "published_finite_n", "event").verdict, PhysicsVerdict::fail);
+    EXPECT_EQ(row_of(rows, "published_finite_n", "ecmc").verdict, PhysicsVerdict::pass) << row_of(rows, "published_finite_n", "ecmc").detail;
+    EXPECT_EQ(row_of(rows, "published_finite_n", "ecmc").facts.at("relative_error_max"), 5e-4);
+}
+
 // A suite's `published` key is checked when the suite is read: a row that does not exist stops it.
 std::string suite_error(const std::string& published) {
     const std::string text = "reference_dir = \"" + references() + "\"\n[[scene]]\npath = \"" +
@@ -221,6 +301,27 @@ std::string suite_error(const std::string& published) {
         return e.what();
     }
     return "";
+}
+
+std::string precision_error(const std::string& table) {
+    const std::string text = "reference_dir = \"" + references() + "\"\nbackends = [\"event\"]\n" + table + "\n[[scene]]\npath = \"" +
+                             test::scene_file("physics/li2022_n72_crystal.toml") +
+                             "\"\nbackends = [\"event\", \"ecmc\"]\n";
+    try {
+        EXPECT_EQ(parse_suite(text, "physics.toml", "/").published_precision.at("ecmc"), 5e-4);
+    } catch (const SuiteError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(PublishedFiniteN, ThePrecisionTableNamesBackendsTheSuiteRuns) {
+    EXPECT_EQ(precision_error("[published_precision]\necmc = 5e-4"), "");
+    const std::string typo = precision_error("[published_precision]\necmx = 5e-4");
+    EXPECT_NE(typo.find("published_precision.ecmx"), std::string::npos) << typo;
+    EXPECT_NE(typo.find("no [[scene]] runs ecmx"), std::string::npos) << typo;
+    EXPECT_NE(precision_error("[published_precision]\necmc = 2").find("(0, 1)"), std::string::npos);
+    EXPECT_NE(precision_error("published_precision = 5e-4").find("a table"), std::string::npos);
 }
 
 TEST(PublishedFiniteN, TheSuiteKeyNamesAnExistingRow) {

@@ -323,11 +323,39 @@ VerdictThresholds read_verdict_thresholds(const toml::table& root, const std::st
     return t;
 }
 
+// [published_precision]: backend name = the relative error its published rows must reach.
+std::map<std::string, double> read_published_precision(const toml::table& root, const std::string& file) {
+    std::map<std::string, double> precision;
+    const toml::node* node = root.get("published_precision");
+    if (!node) return precision;
+    if (!node->is_table()) TomlFields(root, "", file).fail("published_precision", "a table of backend = relative error");
+    const TomlFields p(*node->as_table(), "published_precision", file);
+    for (const auto& [key, value] : *node->as_table()) {
+        const std::string name(key.str());
+        const auto v = optional_positive(p, name);
+        if (!v || *v >= 1) p.fail(name, "a relative standard error in (0, 1)");
+        precision[name] = *v;
+    }
+    return precision;
+}
+
+// A precision named for a backend no [[scene]] runs is a typo, not a setting.
+void refuse_precision_of_absent_backends(const toml::table& root, const Suite& suite, const std::string& file) {
+    if (suite.published_precision.empty() || suite.backends == std::vector<std::string>{"all"}) return;
+    const TomlFields p(*root.get("published_precision")->as_table(), "published_precision", file);
+    for (const auto& [name, value] : suite.published_precision) {
+        bool runs = std::count(suite.backends.begin(), suite.backends.end(), name) > 0;
+        for (const SuiteScene& s : suite.scenes) runs = runs || std::count(s.backends.begin(), s.backends.end(), name) > 0;
+        if (!runs) p.fail(name, "a backend this suite runs (no [[scene]] runs " + name + ")");
+    }
+}
+
 // The suite's tables, read with TomlFields (their SceneError becomes SuiteError in parse_suite).
 Suite read_suite(const toml::table& root, const std::string& file, const std::string& dir) {
     const TomlFields r(root, "", file);
     r.allow_only({"name", "description", "scene_dir", "backends", "reference", "seeds", "time_limit",
-            "warmup_fraction", "stability", "output", "tolerances", "scene", "variant", "reference_dir", "solver", "verdicts"});
+            "warmup_fraction", "stability", "output", "tolerances", "scene", "variant", "reference_dir", "solver", "verdicts",
+            "published_precision"});
     Suite suite;
     suite.source_path = file;
     suite.name = optional_string(r, "name").value_or(std::filesystem::path(file).stem().string());
@@ -366,6 +394,7 @@ Suite read_suite(const toml::table& root, const std::string& file, const std::st
         if (auto v = optional_positive(out, "max_trajectory_disks")) suite.output.max_trajectory_disks = std::size_t(*v);
     }
     suite.verdicts = read_verdict_thresholds(root, file);
+    suite.published_precision = read_published_precision(root, file);
     read_tolerances(root, file, suite.tolerances);
     suite.variants = read_variants(root, file);
     add_solvers(suite, read_solver_tables(root, file, dir));
@@ -379,6 +408,7 @@ Suite read_suite(const toml::table& root, const std::string& file, const std::st
     int index = 0;
     for (const auto& node : *scenes->as_array())
         suite.scenes.push_back(read_scene(*node.as_table(), file, ++index, dir, scene_dir, suite.reference_dir));
+    refuse_precision_of_absent_backends(root, suite, file);
     return suite;
 }
 

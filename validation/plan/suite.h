@@ -108,6 +108,9 @@ struct Suite {
     bool stability = false;           // classify every case by failure mode (stability.h)
     OutputOptions output;
     VerdictThresholds verdicts;
+    // The relative standard error each backend's published finite-N rows must reach
+    // ([published_precision] NAME = x); a backend not named: 2e-4 (published_rows.h).
+    std::map<std::string, double> published_precision;
     ToleranceTable tolerances;
     std::vector<SuiteScene> scenes;
     // Outside solvers ([solver.NAME], --solver): backends of this run (external_solvers.h).
