@@ -13,6 +13,9 @@ import finite_n  # noqa: E402
 import physics  # noqa: E402
 import templating  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import test_report_data  # noqa: E402  (recompute_every_z)
+
 
 def published_row(**changes):
     row = {"row": "published_finite_n", "scene": "n72_crystal_0670", "backend": "event", "group": "g",
@@ -58,6 +61,45 @@ class FiniteNRowsRenderFromTheSummary(unittest.TestCase):
         self.assertEqual(finite_n.table(s)[0]["value"], "n/a ± n/a")
         html = templating.render("physics.html.j2", physics=physics.section(s))  # the whole section renders
         self.assertIn("n/a", html)
+
+
+def routes_summary(ecmc_value, verdict):
+    """event and ecmc at one point, and the routes row between them (z on the difference)."""
+    import math
+    event = published_row(score_from={"value": 7.823051, "standard_error": 0.00061, "reference": 7.82314,
+                                      "reference_uncertainty": 0.00025, "estimator": "virial", "z": (7.823051 - 7.82314) / math.hypot(0.00061, 0.00025)})
+    ecmc = published_row(backend="ecmc", value=ecmc_value, standard_error=0.0021,
+                         score_from={"value": ecmc_value, "standard_error": 0.0021, "reference": 7.82314,
+                                     "reference_uncertainty": 0.00025, "estimator": "lifts", "z": (ecmc_value - 7.82314) / math.hypot(0.0021, 0.00025)})
+    z = (ecmc_value - 7.823051) / math.hypot(0.0021, 0.00061)
+    routes = dict(ecmc, row="routes_agree", reference=7.823051, reference_uncertainty=0.00061,
+                  reference_name="event (collision virial in the rest frame)", verdict=verdict, score=abs(z),
+                  score_from={"value": ecmc_value, "standard_error": 0.0021, "reference": 7.823051,
+                              "reference_uncertainty": 0.00061, "z": z, "estimator": "difference"})
+    return {"physics": {"rows": [event, ecmc, routes], "curves": [], "z_max": 3}}
+
+
+class TheRoutesStandSideBySide(unittest.TestCase):
+    def test_one_line_per_point_with_every_route_and_its_agreement_with_event(self):
+        points = finite_n.routes(routes_summary(7.8262, "pass"))
+        self.assertEqual(len(points), 1)
+        self.assertEqual([r["backend"] for r in points[0]["routes"]], ["event", "ecmc"])
+        self.assertEqual(points[0]["agreement"][0]["pair"], "ecmc − event")
+        # (7.8262 - 7.823051) / hypot(0.0021, 0.00061), with the numbers it came from
+        self.assertEqual(points[0]["agreement"][0]["z"], "z = +1.44 from 7.8262 ± 0.0021 against 7.82305 ± 0.00061")
+        html = templating.render("physics.html.j2", physics=physics.section(routes_summary(7.8262, "pass")))
+        for text in ('id="physics-routes"', "ecmc: z = +1.45 from 7.8262 ± 0.0021 against 7.82314 ± 0.00025",
+                     "ecmc − event: z = +1.44 from", "(pass)", "(≤ "):
+            self.assertIn(text, html)
+        self.assertGreaterEqual(test_report_data.recompute_every_z(self, html), 4)
+
+    def test_a_route_that_disagrees_reads_fail(self):
+        html = templating.render("physics.html.j2", physics=physics.section(routes_summary(7.8450, "fail")))
+        self.assertIn("ecmc − event: z = +10.04 from 7.845 ± 0.0021 against 7.82305 ± 0.00061 (FAIL)", html)
+
+    def test_every_route_has_its_own_marker(self):
+        self.assertEqual(len(set(finite_n.ROUTE_MARKERS.values())), len(finite_n.ROUTE_MARKERS))
+        self.assertTrue(finite_n.figure(routes_summary(7.8262, "pass")).startswith(b"\x89PNG"))
 
 
 if __name__ == "__main__":

@@ -21,6 +21,7 @@ ROW_TITLES = {
     "galperin": "Galperin's billiard (digits of π)",
     "haff": "Haff's law (granular cooling)",
     "published_finite_n": "Pressure at finite N (published)",
+    "routes_agree": "Routes agree (a sampler against event, finite N)",
     "exact_agreement": "Two exact solvers agree",
 }
 
