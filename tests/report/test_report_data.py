@@ -241,15 +241,17 @@ class Resolution(unittest.TestCase):
     def test_unresolved_point_drawn_at_its_95_percent_upper_limit(self):
         # The box-gas `cpu` point of the issue: 0.013 ± 0.0081 was drawn at 0.016 (2 SE); its limit is 0.029.
         fig, ax = plt.subplots()
+        labels = []
         figures.draw_points(ax, [{"x": 1.0, "y": 0.05, "se": 0.01, "resolved": True, "label": "dt=0.002"},
                                  {"x": 2.0, "y": 0.013, "se": 0.0081, "resolved": False, "upper": 0.013 + 1.96 * 0.0081,
                                   "label": "dt=0.001"}],
-                            "tab:blue", "step")
+                            "tab:blue", "step", labels=labels)
+        self.assertEqual(figures.place_labels(ax, labels), 0)
         hollow = [l for l in ax.lines if l.get_markerfacecolor() == "none"]
         self.assertEqual(len(hollow), 1)
         self.assertEqual(list(hollow[0].get_xdata()), [2.0])
         self.assertAlmostEqual(hollow[0].get_ydata()[0], 0.028876)
-        self.assertIn("not resolved", [t.get_text() for t in ax.texts])
+        self.assertIn("dt=0.001, not resolved", [t.get_text() for t in ax.texts])
         plt.close(fig)
 
 
