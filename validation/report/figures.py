@@ -518,8 +518,8 @@ def overlap_histogram(case_results, scene, labels=None):
     return png(fig)
 
 
-PANEL_INCHES = 3.6  # the width of one configuration panel
-TITLE_CHARACTERS = 44  # a panel title longer than this is wrapped: 3.6 in at 9 pt
+PANEL_INCHES = 3.0  # the width of one configuration panel
+TITLE_CHARACTERS = 38  # a panel title longer than this is wrapped: 3 in at 9 pt
 STRETCH = 10  # a box longer than this many times its height is drawn stretched, not to scale
 
 
@@ -589,7 +589,7 @@ def configuration(scene, world, reference, worst=None, outlines=True):
     snaps = [p[0] for p in panels]
     fastest = max([float(np.max(np.hypot(s["vx"], s["vy"]))) for s in snaps if s["vx"]] + [1e-300])
     norm = matplotlib.colors.Normalize(vmin=0, vmax=fastest)
-    height = PANEL_INCHES * min(max(_aspect(world, snaps), 0.25), 1.0) + 1.6  # titles, labels
+    height = PANEL_INCHES * min(max(_aspect(world, snaps), 0.25), 1.0) + 1.5  # titles, labels
     fig, axes = plt.subplots(1, len(panels), figsize=(PANEL_INCHES * len(panels) + 1.2, height), squeeze=False,
                              layout="constrained")
     for ax, (snap, outlined, title) in zip(axes[0], panels):
