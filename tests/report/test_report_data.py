@@ -853,6 +853,18 @@ class FigureLabels(unittest.TestCase):
         png = physics.eos_figure(EquationOfStateSolvers().summary())
         self.assertEqual(figure_text.faults(png), [])
 
+    def test_stability_map(self):
+        """Three backends over dt x restitution: the title, the rotated dt ticks, the long
+        parameter label and the legend were cut by the figure's edge."""
+        import stability
+        cells = {(dt, v): o for dt, o in zip((0.001, 0.002, 0.004, 0.008),
+                                             ("stable", "stable", "energy_growth", "excessive_overlap"))
+                 for v in (0.1, 0.2, 0.3)}
+        png = stability.stability_map("box_gas_1000", "physics.restitution",
+                                      {"step": cells, "cpu": cells, "box2d[shipped]": cells},
+                                      ["stable", "energy_growth", "excessive_overlap", "tunnelling"])
+        self.assertEqual(figure_text.faults(png), [])
+
     def test_a_flat_box(self):
         """A box 1000 times longer than high (pi_billiard): equal scales put the y ticks on each
         other; the panel is stretched and says so."""
