@@ -964,12 +964,14 @@ class LargestError(unittest.TestCase):
         saved = figures.png
         figures.png = lambda fig: captured.append(fig) or b""
         try:
-            _, ids = scenes.configuration_figure(summary, a, "glancing", scenes.drawn_cases(summary, RESULTS, "glancing"))
+            _, ids, outlined = scenes.configuration_figure(summary, a, "glancing",
+                                                           scenes.drawn_cases(summary, RESULTS, "glancing"))
         finally:
             figures.png = saved
         self.assertEqual(len(ids), 2)
         self.assertIn("__event__", ids[0])
         self.assertIn("box2d", ids[1])
+        self.assertTrue(outlined, "a trajectory scene: the reference's disks outlined on the other's")
         titles = [ax.get_title().replace("\n", " ") for ax in captured[0].axes if ax.get_title()]
         self.assertTrue(any(t.startswith("box2d[shipped], final") and "trajectory error / r_min = 1.6" in t
                             for t in titles), titles)

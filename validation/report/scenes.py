@@ -89,9 +89,10 @@ def left_out_reason(summary, scene, check):
 
 
 def configuration_figure(summary, a, scene, chosen):
-    """The configuration figure of a scene and the ids of the cases it draws: the reference's
-    drawn case (else the first drawn) and beside it the drawn case of the backend with the
-    largest measured error on the scene (largest_error.py), labelled with that error."""
+    """The configuration figure of a scene, the ids of the cases it draws and whether the
+    reference is outlined on the other: the reference's drawn case (else the first drawn) and
+    beside it the drawn case of the backend with the largest measured error on the scene
+    (largest_error.py), labelled with that error."""
     by_backend = {b: (c, r) for b, c, r in chosen}
     first = summary["reference"] if summary["reference"] in by_backend else chosen[0][0]
     ref_case, ref_result = by_backend[first]
@@ -101,10 +102,10 @@ def configuration_figure(summary, a, scene, chosen):
         case, result = by_backend[worst["backend"]]
         label = f"at dt = {case['dt']:g}: " + (largest_error.error_at(worst, case["dt"]) or "no error measured")
         beside = (worst["backend"], result, label)
+    outlines = beside is not None and worst["kind"].startswith("trajectory")
     png = figures.configuration(scene, scene_box(summary.get("scene_files", {}).get(scene, "")),
-                                (first, ref_result), beside,
-                                outlines=worst is not None and worst["kind"].startswith("trajectory"))
-    return png, [ref_case["id"]] + ([by_backend[beside[0]][0]["id"]] if beside else [])
+                                (first, ref_result), beside, outlines=outlines)
+    return png, [ref_case["id"]] + ([by_backend[beside[0]][0]["id"]] if beside else []), outlines
 
 
 def scene_section(summary, directory, a, scene, chosen, jumps):
@@ -115,14 +116,14 @@ def scene_section(summary, directory, a, scene, chosen, jumps):
         return section
     shown = [(b, r) for b, _, r in chosen if b not in a.aliases]
     labels = {b: " = ".join([b] + [x for x, y in a.aliases.items() if y == b]) for b, _ in shown}
-    configuration, configuration_cases = configuration_figure(summary, a, scene, chosen)
+    configuration, configuration_cases, outlines = configuration_figure(summary, a, scene, chosen)
     section.update(
         work_precision=figures.work_precision(summary, scene, digest, a.aliases, a.fit),
         shown=", ".join(f"{b} at dt = {c['dt']:g}, seed {c['seed']}" for b, c, _ in chosen),
         conservation=figures.conservation(shown, scene, {b: j for b, (_, j) in jumps.items()}, labels,
                                           left_out_reason(summary, scene, "momentum_drift")),
         overlaps=figures.overlap_histogram(shown, scene, labels),
-        configuration=configuration, configuration_cases=configuration_cases,
+        configuration=configuration, configuration_cases=configuration_cases, configuration_outlines=outlines,
         motion=animations.section(summary, directory, scene, a.aliases),
         trajectory=trajectory.section([(b, c, r) for b, c, r in chosen if b not in a.aliases], scene, labels))
     return section
