@@ -212,7 +212,7 @@ def tex(text):
     return str(text).replace("$", r"\$")
 
 
-def draw_points(ax, points, colour_, label, marker="o", labels=None, label_unresolved=True):
+def draw_points(ax, points, colour_, label, marker="o", labels=None):
     """One line of a work-precision diagram. points: [{'x', 'y', 'se', 'resolved', 'upper'?,
     'label'}] sorted as they are to be joined. A resolved point is filled, with its error bar
     (±1 SE); an unresolved one (difference below 2 SE) is drawn hollow at its 95 % upper limit
@@ -238,7 +238,7 @@ def draw_points(ax, points, colour_, label, marker="o", labels=None, label_unres
         for p in points:
             y = p["y"] if p["resolved"] else max(p["upper"], 1e-17)
             text = ", ".join(([p["label"]] if p.get("label") else []) +
-                             (["not resolved"] if label_unresolved and not p["resolved"] else []))
+                             (["not resolved"] if not p["resolved"] else []))
             if text:
                 labels.append((p["x"], y, text, colour_))
     return line
