@@ -2,7 +2,8 @@
 """Opens a rendered report the way a reader does: chromium, headless, at 1400 x 900, and checks
 that the first screen holds the verdict and the per-backend digest with a verdict and a cost
 for each backend, that the headline work-precision figure follows it at once, that no two
-pieces of text on the first screen overlap,
+pieces of text on the first screen overlap, that no two labels inside any figure overlap and
+none is cut by its edge (each PNG's record of its text boxes, tests/report/figure_text.py),
 and that every in-page link (table of contents, digest) resolves.
 
 usage: test_browser.py RESULTS_DIR [SCREENSHOT.png]
@@ -14,6 +15,8 @@ import os
 import shutil
 import sys
 import unittest
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # figure_text.py beside this file
 
 RESULTS = None
 SCREENSHOT = None
@@ -148,6 +151,24 @@ class FirstScreen(unittest.TestCase):
             smallest = float(png.info["smallest-text-px"])
         self.assertGreaterEqual(smallest * shown / natural, 10, f"headline text {smallest:.1f} px in the PNG, "
                                 f"shown at {shown} of {natural} px")
+
+    def test_no_figure_label_overlaps_or_is_cut(self):
+        """Every figure of the page records the box of each text it draws (figures.png: tick
+        labels, axis labels, legends, annotations such as "dt=..."); no two may overlap and none
+        may be cut by the figure's edge. The motion strips are drawn by `collide render`, not
+        by the report's figures, and carry no record."""
+        import base64
+        import figure_text
+        images = self.driver.execute_script(
+            "return Array.from(document.querySelectorAll('img')).map(i => [i.alt, i.src]);")
+        checked = 0
+        for alt, src in images:
+            if not src.startswith("data:image/png;base64,") or alt == "motion strip":
+                continue
+            faults = figure_text.faults(base64.b64decode(src.split(",", 1)[1]))
+            self.assertEqual(faults, [], f"figure '{alt}' (number {checked + 1} on the page)")
+            checked += 1
+        self.assertGreater(checked, 3, "too few figures with a text record on the page")
 
     def test_no_text_overlaps_on_first_screen(self):
         overlaps = self.driver.execute_script("""

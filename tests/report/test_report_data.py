@@ -15,15 +15,19 @@ import sys
 import tempfile
 import unittest
 
+import numpy as np
 import scipy.stats
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPORT = os.path.join(HERE, "..", "..", "validation", "report")
 sys.path.insert(0, REPORT)
+sys.path.insert(0, HERE)  # figure_text.py
 
 import analysis  # noqa: E402
 import digest  # noqa: E402
 import figures  # noqa: E402
+import figure_text  # noqa: E402
+import largest_error  # noqa: E402
 import physics  # noqa: E402
 import scenes  # noqa: E402
 import sections  # noqa: E402
@@ -183,7 +187,8 @@ class DrawnCases(unittest.TestCase):
 
 class MotionStrips(unittest.TestCase):
     """Whether a case stored frames is read from summary.json (validate records it), not by
-    opening run files in Python; the strips show the reference and the largest and smallest dt."""
+    opening run files in Python; the strips show the reference and, at the largest and smallest
+    dt, the backend with the largest measured error (largest_error.py)."""
 
     def cases(self):
         base = {"scene": "s", "status": "completed", "seed": 1}
@@ -192,19 +197,42 @@ class MotionStrips(unittest.TestCase):
                 dict(base, id="s__step__dt0.002__seed1", backend="step", reference=False, dt=0.002,
                      hdf5_file="runs/a.h5", frames=True),
                 dict(base, id="s__step__dt0.001__seed1", backend="step", reference=False, dt=0.001,
-                     hdf5_file="runs/b.h5", frames=True)]
+                     hdf5_file="runs/b.h5", frames=True),
+                dict(base, id="s__box2d__dt0.002__seed1", backend="box2d", reference=False, dt=0.002,
+                     hdf5_file="runs/c.h5", frames=True),
+                dict(base, id="s__box2d__dt0.001__seed1", backend="box2d", reference=False, dt=0.001,
+                     hdf5_file="runs/d.h5", frames=True)]
+
+    def summary(self, cases, worst="box2d"):
+        def line(backend, errors):
+            return {"scene": "s", "backend": backend, "error_kind": "trajectory error / r_min",
+                    "points": [{"dt": dt, "error": e, "error_standard_error": e / 10, "replicates": 6}
+                               for dt, e in zip((0.002, 0.001), errors)]}
+        large, small = (line("box2d", (0.5, 0.3)), line("step", (0.01, 0.005)))
+        if worst == "step":
+            large, small = line("step", (0.5, 0.3)), line("box2d", (0.01, 0.005))
+        return {"cases": cases, "reference": "event", "work_precision": [small, large]}
 
     def test_frames_read_from_the_summary(self):
         import animations
         cases = self.cases()
-        ref, drawn = animations.chosen_pair({"cases": cases}, "/no/such/directory", "s")
+        ref, drawn, worst = animations.chosen_pair(self.summary(cases), "/no/such/directory", "s")
         self.assertEqual(ref["id"], "s__event__seed1")
-        self.assertEqual([c["id"] for c in drawn], ["s__step__dt0.002__seed1", "s__step__dt0.001__seed1"])
+        self.assertEqual([c["id"] for c in drawn], ["s__box2d__dt0.002__seed1", "s__box2d__dt0.001__seed1"])
         cases[0]["frames"] = False
-        self.assertIsNone(animations.chosen_pair({"cases": cases}, "/no/such/directory", "s"))
+        self.assertIsNone(animations.chosen_pair(self.summary(cases), "/no/such/directory", "s"))
         cases = self.cases()
-        del cases[2]["frames"]  # a summary that does not say: no strip rather than a guess
-        self.assertIsNone(animations.chosen_pair({"cases": cases}, "/no/such/directory", "s"))
+        del cases[4]["frames"]  # a summary that does not say: no strip rather than a guess
+        self.assertIsNone(animations.chosen_pair(self.summary(cases), "/no/such/directory", "s"))
+
+    def test_the_backend_with_the_largest_error_is_drawn(self):
+        import animations
+        for worst in ("box2d", "step"):
+            _, drawn, found = animations.chosen_pair(self.summary(self.cases(), worst), "/no/such/directory", "s")
+            self.assertEqual({c["backend"] for c in drawn}, {worst})
+            self.assertEqual(found["backend"], worst)
+            self.assertEqual(largest_error.error_at(found, 0.002),
+                             "trajectory error / r_min = 0.5 ± 0.05 (mean of 6 replicates)")
 
     def test_validate_records_frames_per_case(self):
         """A scene's own `frames` overrides [output] frames; validate says which cases stored them."""
@@ -241,15 +269,17 @@ class Resolution(unittest.TestCase):
     def test_unresolved_point_drawn_at_its_95_percent_upper_limit(self):
         # The box-gas `cpu` point of the issue: 0.013 ± 0.0081 was drawn at 0.016 (2 SE); its limit is 0.029.
         fig, ax = plt.subplots()
+        labels = []
         figures.draw_points(ax, [{"x": 1.0, "y": 0.05, "se": 0.01, "resolved": True, "label": "dt=0.002"},
                                  {"x": 2.0, "y": 0.013, "se": 0.0081, "resolved": False, "upper": 0.013 + 1.96 * 0.0081,
                                   "label": "dt=0.001"}],
-                            "tab:blue", "step")
+                            "tab:blue", "step", labels=labels)
+        self.assertEqual(figures.place_labels(ax, labels), 0)
         hollow = [l for l in ax.lines if l.get_markerfacecolor() == "none"]
         self.assertEqual(len(hollow), 1)
         self.assertEqual(list(hollow[0].get_xdata()), [2.0])
         self.assertAlmostEqual(hollow[0].get_ydata()[0], 0.028876)
-        self.assertIn("not resolved", [t.get_text() for t in ax.texts])
+        self.assertIn("dt=0.001, not resolved", [t.get_text() for t in ax.texts])
         plt.close(fig)
 
 
@@ -772,6 +802,180 @@ class PredictabilityHorizonShown(unittest.TestCase):
     def test_a_horizon_beyond_the_run_judges_every_output(self):
         case = self.sample(horizon_reached=False, first_unjudged=None, judged_outputs=201)
         self.assertIn("all 201 output times judged", trajectory.judged_text(case))
+
+
+class FigureLabels(unittest.TestCase):
+    """Issue 48, item 6: no label of a figure overlaps another or is cut by the figure's edge.
+    Each PNG carries the boxes of the texts it draws (figures.png); figure_text.faults reads them.
+    test_browser.py holds every figure of the rendered page to it; here each kind of figure is
+    drawn from data that made it fail before."""
+
+    def setUp(self):
+        with open(os.path.join(RESULTS, "summary.json"), encoding="utf-8") as f:
+            self.summary = json.load(f)
+        self.analysis = analysis.Analysis(self.summary)
+
+    def test_the_record_finds_overlaps_cut_text_and_multi_line_text(self):
+        fig, ax = plt.subplots(figsize=(3, 2))
+        ax.text(0.5, 0.5, "one")
+        ax.text(0.5, 0.5, "two")
+        fig.text(0.9, 0.5, "beyond the right edge of the figure")
+        ax.set_title("a title\non two lines")
+        found = figure_text.faults(figures.png(fig))
+        self.assertTrue(any(f.startswith("overlap: 'one'") and "'two'" in f for f in found), found)
+        self.assertTrue(any(f.startswith("cut by the edge") and "beyond" in f for f in found), found)
+        boxes, _, _ = figure_text.text_boxes(figures.png(plt.subplots()[0]))
+        self.assertTrue(boxes, "tick labels are recorded")
+        fig, ax = plt.subplots()
+        ax.set_title("a title\non two lines")
+        self.assertIn("a title\non two lines", [b[4] for b in figure_text.text_boxes(figures.png(fig))[0]])
+
+    def test_work_precision_dt_labels(self):
+        """Five backends on one trajectory scene: every point labelled with its dt piled the labels
+        on each other; they are placed where they fit or left out, and the figure counts those."""
+        for scene in self.analysis.scenes:
+            png = figures.work_precision(self.summary, scene, digest, self.analysis.aliases, self.analysis.fit)
+            if png is not None:
+                self.assertEqual(figure_text.faults(png), [], scene)
+
+    def test_headline_and_scene_figures(self):
+        self.assertEqual(figure_text.faults(figures.headline(self.summary, digest, self.analysis.aliases)), [])
+        for scene in self.analysis.scenes:
+            chosen = scenes.drawn_cases(self.summary, RESULTS, scene)
+            if not chosen:
+                continue
+            section = scenes.scene_section(self.summary, RESULTS, self.analysis, scene, chosen, {})
+            for key in ("conservation", "overlaps", "configuration"):
+                if section.get(key):
+                    self.assertEqual(figure_text.faults(section[key]), [], (scene, key))
+
+    def test_equation_of_state(self):
+        png = physics.eos_figure(EquationOfStateSolvers().summary())
+        self.assertEqual(figure_text.faults(png), [])
+
+    def test_stability_map(self):
+        """Three backends over dt x restitution: the title, the rotated dt ticks, the long
+        parameter label and the legend were cut by the figure's edge."""
+        import stability
+        cells = {(dt, v): o for dt, o in zip((0.001, 0.002, 0.004, 0.008),
+                                             ("stable", "stable", "energy_growth", "excessive_overlap"))
+                 for v in (0.1, 0.2, 0.3)}
+        png = stability.stability_map("box_gas_1000", "physics.restitution",
+                                      {"step": cells, "cpu": cells, "box2d[shipped]": cells},
+                                      ["stable", "energy_growth", "excessive_overlap", "tunnelling"])
+        self.assertEqual(figure_text.faults(png), [])
+
+    def test_a_flat_box(self):
+        """A box 1000 times longer than high (pi_billiard): equal scales put the y ticks on each
+        other; the panel is stretched and says so."""
+        snap = {"x": [2.0, 4.0], "y": [1.0, 1.0], "vx": [0.0, -1.0], "vy": [0.0, 0.0], "radius": [0.5, 0.5]}
+        result = {"initial": snap, "final": snap, "duration": 1000.0}
+        png = figures.configuration("flat", [0.0, 0.0, 2000.0, 2.0], ("event", result))
+        self.assertEqual(figure_text.faults(png), [])
+        self.assertTrue(any("stretched" in b[4] for b in figure_text.text_boxes(png)[0]))
+
+
+class EquationOfStateSolvers(unittest.TestCase):
+    """Issue 48, item 6: in the equation-of-state figure `event` hid under `event-plain` (they
+    agree to rounding). Every backend is drawn in its own colour and marker, a step aside in η,
+    and named in the legend with that step."""
+
+    def summary(self):
+        row = {"row": "equation_of_state", "scene": "fluid", "backend": "event", "group": "g",
+               "parameter_name": "area fraction", "measured": "Z", "replicates": 4,
+               "estimator": "collision virial, batch means per replicate, pooled by inverse variance",
+               "reference_uncertainty": 0.0017, "reference_name": "Kolafa & Rottner (2006)", "citation": "c",
+               "second_reference_name": "Henderson (1975)", "statistic": "z", "score": 0.5, "verdict": "pass",
+               "detail": ""}
+        rows = []
+        for eta, z, resolved in ((0.1, 1.2519, False), (0.3, 2.0306, False), (0.5, 4.1064, True),
+                                 (0.6, 6.4553, True), (0.65, 8.4080, True)):
+            for backend in ("event", "event-plain"):
+                rows.append(dict(row, backend=backend, parameter=eta, value=z * 1.0001, standard_error=0.002 * z,
+                                 reference=z, second_reference=z * 1.01, resolved=resolved))
+        curve = {"name": "Kolafa & Rottner (2006)", "citation": "c", "eta": [0.0, 0.1, 0.3, 0.5, 0.6, 0.65, 0.7],
+                 "z": [1.0, 1.2519, 2.0306, 4.1064, 6.4553, 8.4080, 10.3]}
+        henderson = dict(curve, name="Henderson (1975)", z=[1.0, 1.2519, 2.0310, 4.125, 6.52, 8.594, 11.2])
+        return {"physics": {"rows": rows, "curves": [curve, henderson], "z_max": 3}}
+
+    def drawn(self):
+        figures.assign_styles(["event", "event-plain"])
+        captured = []
+        saved = figures.png
+        figures.png = lambda fig: captured.append(fig) or b""
+        try:
+            physics.eos_figure(self.summary())
+        finally:
+            figures.png = saved
+        fig = captured[0]
+        fig.set_dpi(figures.DPI)
+        fig.canvas.draw()
+        return fig
+
+    def test_equal_values_side_by_side(self):
+        fig = self.drawn()
+        top = fig.axes[0]
+        centres = {}
+        for line in top.lines:
+            if line.get_marker() in ("None", "none", None, "") or not len(line.get_xdata()):
+                continue
+            xy = top.transData.transform(np.column_stack([line.get_xdata(), line.get_ydata()]).astype(float))
+            centres.setdefault(line.get_color(), []).extend(map(tuple, xy))
+        event, plain = centres[figures.colour("event")], centres[figures.colour("event-plain")]
+        self.assertNotEqual(figures.colour("event"), figures.colour("event-plain"))
+        self.assertEqual(len(event), 5)
+        for (x0, y0), (x1, y1) in zip(sorted(event), sorted(plain)):
+            # a marker of 6 pt is 6.7 px across at 80 dpi: centres at least that far apart
+            self.assertGreaterEqual(math.hypot(x1 - x0, y1 - y0), 6 * figures.DPI / 72, "one marker hides the other")
+        legend = [t.get_text() for t in top.get_legend().get_texts()]
+        for backend in ("event", "event-plain"):
+            self.assertTrue(any(t.startswith(backend + " (") and "drawn at η" in t for t in legend), legend)
+        plt.close(fig)
+
+
+class LargestError(unittest.TestCase):
+    """Issue 48, item 6: the configuration and the strips show the backend with the largest
+    measured error beside the reference, not the most accurate one."""
+
+    def test_picked_from_the_work_precision_lines(self):
+        def line(backend, errors, kind="trajectory error / r_min"):
+            return {"scene": "s", "backend": backend, "error_kind": kind,
+                    "points": [{"dt": 0.001 * (k + 1), "error": e, "error_standard_error": None, "replicates": 1}
+                               for k, e in enumerate(errors)]}
+        summary = {"reference": "event", "work_precision": [
+            line("event", [9.0]), line("step", [0.002, 0.004]), line("box2d[shipped]", [3.64, 3.63]),
+            line("opencl", [7.0]), line("cpu", [None, 0.5]), line("other", [0.1]) | {"scene": "t"}]}
+        worst = largest_error.largest_error(summary, "s", aliases={"opencl": "cpu"})
+        self.assertEqual(worst["backend"], "box2d[shipped]")
+        self.assertEqual(largest_error.error_at(worst, 0.001), "trajectory error / r_min = 3.64")
+        self.assertIsNone(largest_error.error_at(worst, 0.5))
+        self.assertEqual(largest_error.largest_error(summary, "s")["backend"], "opencl")
+        self.assertIsNone(largest_error.largest_error(summary, "no such scene"))
+
+    def test_the_configuration_names_it_and_its_error(self):
+        """The mini suite's glancing pair: Box2D as shipped sticks (1.6 r_min); its final state is
+        drawn beside the reference's, its name and error in the panel's title."""
+        with open(os.path.join(RESULTS, "summary.json"), encoding="utf-8") as f:
+            summary = json.load(f)
+        a = analysis.Analysis(summary)
+        worst = largest_error.largest_error(summary, "glancing", a.aliases)
+        self.assertEqual(worst["backend"], "box2d[shipped]")
+        captured = []
+        saved = figures.png
+        figures.png = lambda fig: captured.append(fig) or b""
+        try:
+            _, ids, outlined = scenes.configuration_figure(summary, a, "glancing",
+                                                           scenes.drawn_cases(summary, RESULTS, "glancing"))
+        finally:
+            figures.png = saved
+        self.assertEqual(len(ids), 2)
+        self.assertIn("__event__", ids[0])
+        self.assertIn("box2d", ids[1])
+        self.assertTrue(outlined, "a trajectory scene: the reference's disks outlined on the other's")
+        titles = [ax.get_title().replace("\n", " ") for ax in captured[0].axes if ax.get_title()]
+        self.assertTrue(any(t.startswith("box2d[shipped], final") and "trajectory error / r_min = 1.6" in t
+                            for t in titles), titles)
+        plt.close(captured[0])
 
 
 if __name__ == "__main__":

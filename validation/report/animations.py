@@ -1,6 +1,7 @@
-"""Strips of frames for the report: for each trajectory scene, one stepped backend against the
-exact reference drawn as outlines, at the largest and at the smallest time step of the sweep,
-so the sweep's error is seen and not only read. The pictures are drawn by `collide render`
+"""Strips of frames for the report: for each trajectory scene, the backend with the largest
+measured error on it (largest_error.py) against the exact reference drawn as outlines, at the
+largest and at the smallest time step of the sweep, so the sweep's error is seen and not only
+read. The pictures are drawn by `collide render`
 (the viewer's own drawing path, docs/viewer.md), never by a second drawing code here.
 
 Needs run files written with frames (`[output] frames = true` in the suite, as suites/full.toml
@@ -10,6 +11,7 @@ import os
 import subprocess
 import tempfile
 
+import largest_error
 from collide_program import collide_program
 
 FRAMES = 5          # panels per strip
@@ -28,8 +30,9 @@ def trajectory_scenes(summary):
     return {c["scene"] for c in summary["cases"] if c["id"] in ids or c.get("group") in ids}
 
 
-def chosen_pair(summary, directory, scene):
-    """(reference case, [backend case at largest dt, at smallest dt]) or None."""
+def chosen_pair(summary, directory, scene, aliases=()):
+    """(reference case, [case at largest dt, at smallest dt] of the backend with the largest
+    measured error, the worst backend's work-precision line) or None."""
     done = [c for c in summary["cases"] if c["scene"] == scene and c["status"] == "completed" and c.get("hdf5_file")]
     refs = [c for c in done if c["reference"]]
     if not refs:
@@ -39,15 +42,17 @@ def chosen_pair(summary, directory, scene):
     # `collide render`.
     if not has_frames(ref):
         return None
-    others = [c for c in done if not c["reference"] and c["seed"] == ref["seed"]]
-    if not others:
+    worst = largest_error.largest_error(summary, scene, aliases)
+    if worst is None:
         return None
-    backend = others[0]["backend"]
-    runs = sorted((c for c in others if c["backend"] == backend), key=lambda c: c["dt"])
+    runs = sorted((c for c in done if c["backend"] == worst["backend"] and c["seed"] == ref["seed"]),
+                  key=lambda c: c["dt"])
+    if not runs:
+        return None
     drawn = [runs[-1]] if len(runs) == 1 else [runs[-1], runs[0]]
     if not all(has_frames(c) for c in drawn):
         return None
-    return ref, drawn
+    return ref, drawn, worst
 
 
 def render_strip(collide, directory, case, ref):
@@ -62,17 +67,19 @@ def render_strip(collide, directory, case, ref):
             return f.read()
 
 
-def section(summary, directory, scene):
+def section(summary, directory, scene, aliases=()):
     """One scene's strips for templates/scene.html.j2: None for a scene that is not compared by
     trajectory, {"why": ...} where there are none, else {"frames", "reference", "strips": [{"png",
-    "backend", "dt"}]} (a strip `collide render` could not draw has no png)."""
+    "backend", "dt", "error"}]} (a strip `collide render` could not draw has no png; `error`: the
+    backend's measured error at that dt, largest_error.error_at)."""
     if scene not in trajectory_scenes(summary):
         return None
-    pair = chosen_pair(summary, directory, scene)
+    pair = chosen_pair(summary, directory, scene, aliases)
     collide = collide_program()
     if pair is None or collide is None:
         return {"why": "the suite stored no frames" if pair is None else "no collide program was found to draw them"}
-    ref, cases = pair
+    ref, cases, worst = pair
     return {"frames": FRAMES, "reference": ref["backend"],
             "strips": [{"png": render_strip(collide, directory, case, ref), "backend": case["backend"],
-                        "dt": f"{case['dt']:g}"} for case in cases]}
+                        "dt": f"{case['dt']:g}", "error": largest_error.error_at(worst, case["dt"])}
+                       for case in cases]}

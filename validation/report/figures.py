@@ -7,6 +7,8 @@ one summary.json or a case record holds. Axes carry units: lengths and times
 are in the scene's own units, run time in seconds of wall-clock time.
 """
 import io
+import json
+import textwrap
 
 import matplotlib
 
@@ -67,6 +69,20 @@ def marker(backend):
 STYLES = [("-", 3.2), ("--", 2.2), (":", 2.0), ("-.", 1.5), ((0, (1, 1)), 1.2), ((0, (5, 1)), 1.0)]
 
 
+# Markers of several backends at one abscissa (the same area fraction, the same time step) are
+# drawn this fraction of the axis' data range apart, centred on their abscissa (side_by_side).
+SIDE_STEP = 0.025
+
+
+def side_by_side(backends, step):
+    """{backend: offset along x} that draws the markers of `backends` at one abscissa `step`
+    apart, centred on it, in their order: values that agree (the two exact solvers, to rounding)
+    stay visible beside each other instead of one hidden under the other. A figure that uses it
+    states each backend's offset in its legend."""
+    middle = (len(backends) - 1) / 2
+    return {b: (k - middle) * step for k, b in enumerate(backends)}
+
+
 def smallest_text_px(fig, dpi):
     """The height in PNG pixels of the smallest visible text of `fig` saved at `dpi` (a point is
     1/72 inch): the browser test scales it to the displayed size and holds it to 10 px."""
@@ -75,20 +91,117 @@ def smallest_text_px(fig, dpi):
     return min(sizes) * dpi / 72 if sizes else None
 
 
-def png(fig, dpi=80):
-    """The figure as a 256-colour PNG whose text chunk `smallest-text-px` records its smallest
-    text (smallest_text_px)."""
+def _drawn_texts(fig):
+    """[(text artist, its box in display pixels)] of every text `fig` draws, recorded while the
+    canvas draws (the renderer is asked for every line of text it puts on the canvas), so a tick
+    label outside the view or a hidden text is not counted. The renderer names the artist of a
+    one-line text only; the artist being drawn names it for the lines of a longer one."""
+    from matplotlib.text import Text
+    renderer = fig.canvas.get_renderer()
+    drawn, being_drawn = {}, []
+    draw_text, text_draw = renderer.draw_text, Text.draw
+
+    def drawing(self, renderer_):
+        being_drawn.append(self)
+        try:
+            return text_draw(self, renderer_)
+        finally:
+            being_drawn.pop()
+
+    def recording(gc, x, y, s, prop, angle, ismath=False, mtext=None):
+        artist = mtext if mtext is not None else (being_drawn[-1] if being_drawn else None)
+        if artist is not None and s.strip():
+            drawn[id(artist)] = artist
+        return draw_text(gc, x, y, s, prop, angle, ismath=ismath, mtext=mtext)
+    renderer.draw_text, Text.draw = recording, drawing
+    try:
+        fig.canvas.draw()
+    finally:
+        del renderer.draw_text
+        Text.draw = text_draw
+    return [(text, text.get_window_extent(renderer)) for text in drawn.values()]
+
+
+def drawn_text_boxes(fig):
+    """[[left, top, right, bottom, text]] in pixels of the canvas (origin at the top left, as in
+    the PNG) of every text `fig` draws: tick labels, axis labels, titles, legend entries,
+    annotations."""
+    height = fig.bbox.height
+    return [[round(b.x0, 1), round(height - b.y1, 1), round(b.x1, 1), round(height - b.y0, 1), t.get_text()]
+            for t, b in _drawn_texts(fig)]
+
+
+def boxes_overlap(a, b, slack=1.0):
+    """Whether two boxes [left, top, right, bottom, ...] share more than `slack` pixels in both
+    directions (text boxes include the font's line spacing: touching is not overlapping)."""
+    return (min(a[2], b[2]) - max(a[0], b[0]) > slack) and (min(a[3], b[3]) - max(a[1], b[1]) > slack)
+
+
+# Where a point's label may go, in points from the point, with its alignment: right and above
+# first (the old fixed place), then the other corners and sides.
+LABEL_PLACES = [((4, 4), "left", "bottom"), ((4, -4), "left", "top"), ((-4, 4), "right", "bottom"),
+                ((-4, -4), "right", "top"), ((6, 0), "left", "center"), ((-6, 0), "right", "center"),
+                ((0, 7), "center", "bottom"), ((0, -7), "center", "top")]
+
+
+def _marker_boxes(ax):
+    """The boxes in display pixels of the markers of `ax`'s lines: a label is not put on a point."""
+    boxes = []
+    for line in ax.lines:
+        if line.get_marker() in (None, "None", "none", "") or not line.get_visible():
+            continue
+        half = line.get_markersize() * DPI / 72 / 2
+        xy = ax.transData.transform(np.column_stack([line.get_xdata(), line.get_ydata()]).astype(float))
+        boxes += [[x - half, y - half, x + half, y + half] for x, y in xy if np.isfinite(x) and np.isfinite(y)]
+    return boxes
+
+
+def place_labels(ax, labels):
+    """Annotates the points `labels` = [(x, y, text, colour)] in order, each at the first of
+    LABEL_PLACES where it overlaps no text already drawn and stays inside the axes; a label with
+    no such place is left out. Call after the figure's layout is final (the places are measured
+    on the canvas at the PNG's resolution). Returns how many were left out."""
+    fig = ax.figure
+    fig.set_dpi(DPI)
+    taken = [[b.x0, b.y0, b.x1, b.y1] for _, b in _drawn_texts(fig)] + _marker_boxes(ax)
+    renderer = fig.canvas.get_renderer()
+    inside = ax.get_window_extent(renderer)
+    left_out = 0
+    for x, y, text, colour_ in labels:
+        for offset, ha, va in LABEL_PLACES:
+            note = ax.annotate(text, (x, y), textcoords="offset points", xytext=offset, ha=ha, va=va,
+                               fontsize=TEXT_PT, color=colour_)
+            b = note.get_window_extent(renderer)
+            box = [b.x0, b.y0, b.x1, b.y1]
+            if (b.x0 >= inside.x0 and b.x1 <= inside.x1 and b.y0 >= inside.y0 and b.y1 <= inside.y1
+                    and not any(boxes_overlap(box, t, slack=-1.0) for t in taken)):
+                taken.append(box)
+                break
+            note.remove()
+        else:
+            left_out += 1
+    return left_out
+
+
+DPI = 80  # the PNGs' resolution: TEXT_PT = 9 pt is 10 px
+
+
+def png(fig, dpi=DPI):
+    """The figure as a 256-colour PNG whose text chunks record its smallest text
+    (`smallest-text-px`, smallest_text_px) and the box of every text it draws (`text-boxes`,
+    JSON of drawn_text_boxes): the report's tests hold them to 10 px at the displayed size,
+    to no two texts overlapping and to no text cut by the figure's edge."""
+    fig.set_dpi(dpi)  # the canvas is the PNG: drawn once, at the PNG's resolution
     smallest = smallest_text_px(fig, dpi)
-    buffer = io.BytesIO()
-    fig.savefig(buffer, format="png", dpi=dpi)
-    plt.close(fig)
-    buffer.seek(0)
+    boxes = drawn_text_boxes(fig)
     from PIL import Image, PngImagePlugin  # Debian's python3-pil, a dependency of matplotlib
-    with Image.open(buffer) as picture:
-        palette = picture.convert("RGB").quantize(colors=256, method=Image.Quantize.FASTOCTREE)
+    picture = Image.frombuffer("RGBA", fig.canvas.get_width_height(), fig.canvas.buffer_rgba(), "raw", "RGBA", 0, 1)
+    palette = picture.convert("RGB").quantize(colors=256, method=Image.Quantize.FASTOCTREE)
+    plt.close(fig)
     info = PngImagePlugin.PngInfo()
     if smallest is not None:
         info.add_text("smallest-text-px", f"{smallest:.2f}")
+    info.add_text("text-boxes", json.dumps(boxes, ensure_ascii=False))
     out = io.BytesIO()
     palette.save(out, format="PNG", pnginfo=info)
     return out.getvalue()
@@ -99,12 +212,14 @@ def tex(text):
     return str(text).replace("$", r"\$")
 
 
-def draw_points(ax, points, colour_, label, marker="o", annotate=True, label_unresolved=True):
+def draw_points(ax, points, colour_, label, marker="o", labels=None):
     """One line of a work-precision diagram. points: [{'x', 'y', 'se', 'resolved', 'upper'?,
     'label'}] sorted as they are to be joined. A resolved point is filled, with its error bar
     (±1 SE); an unresolved one (difference below 2 SE) is drawn hollow at its 95 % upper limit
-    'upper' = |Δ| + 1.96 SE (summary.json) and labelled "not resolved". Returns the resolved
-    points' line."""
+    'upper' = |Δ| + 1.96 SE (summary.json) and labelled "not resolved". The points' labels (dt,
+    "not resolved") are appended to `labels` as (x, y, text, colour) for place_labels, which
+    puts them where they overlap nothing once the layout is final; without `labels` the points
+    are not labelled. Returns the resolved points' line."""
     resolved = [p for p in points if p["resolved"]]
     line = None
     if resolved:
@@ -119,14 +234,13 @@ def draw_points(ax, points, colour_, label, marker="o", annotate=True, label_unr
         y = max(p["upper"], 1e-17)
         ax.plot([p["x"]], [y], linestyle="none", marker=marker, markerfacecolor="none", markeredgecolor=colour_,
                 markersize=7, label=None if (line or resolved or not label) else tex(label) + " (not resolved)")
-        if label_unresolved:
-            ax.annotate("not resolved", (p["x"], y), textcoords="offset points", xytext=(5, -9), fontsize=TEXT_PT,
-                        color=colour_)
-    if annotate:
+    if labels is not None:
         for p in points:
-            if p.get("label"):
-                ax.annotate(p["label"], (p["x"], p["y"] if p["resolved"] else max(p["upper"], 1e-17)),
-                            textcoords="offset points", xytext=(4, 4), fontsize=TEXT_PT)
+            y = p["y"] if p["resolved"] else max(p["upper"], 1e-17)
+            text = ", ".join(([p["label"]] if p.get("label") else []) +
+                             (["not resolved"] if not p["resolved"] else []))
+            if text:
+                labels.append((p["x"], y, text, colour_))
     return line
 
 
@@ -215,7 +329,7 @@ def _headline(summary, digest, aliases, lines, trajectory, statistical_scenes, p
         scenes = list(dict.fromkeys(l["scene"] for l in trajectory))
         for line in trajectory:
             marker = scene_marker(line["scene"])
-            draw_points(ax, trajectory_points(line), colour(line["backend"]), None, marker, annotate=False)
+            draw_points(ax, trajectory_points(line), colour(line["backend"]), None, marker)
         draw_reference_costs(ax, summary, scenes, with_names=False)
         ax.set_title("trajectory scenes: mean error ± SE over phase replicates")
         ax.set_ylabel("trajectory error / r_min [dimensionless]")
@@ -229,7 +343,7 @@ def _headline(summary, digest, aliases, lines, trajectory, statistical_scenes, p
             marker = scene_marker(scene)
             for backend, stats in digest.statistical_points(summary, scene, check).items():
                 points = statistical_line_points(stats)
-                draw_points(ax, points, colour(backend), None, marker, annotate=False, label_unresolved=False)
+                draw_points(ax, points, colour(backend), None, marker)
                 draw_prediction(ax, points, colour(backend))
         draw_reference_costs(ax, summary, statistical_scenes, with_names=False)
         ax.set_title(f"{title}: relative difference of means ± SE")
@@ -268,6 +382,7 @@ def work_precision(summary, scene, digest, aliases, fits=None):
     if not lines:
         return None
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    labels = []
     if fits is None:
         fits = {(f["scene"], f["backend"]): f for f in digest.orders(summary)}
     statistical = not lines[0]["error_kind"].startswith("trajectory")
@@ -279,7 +394,7 @@ def work_precision(summary, scene, digest, aliases, fits=None):
         if fit and fit["order"] is not None and b not in aliases:
             label += f" (order {fit['order']:.2f}" + (f" ± {fit['order_se']:.2f}" if fit["order_se"] is not None else "") + ")"
         points = statistical_line_points(stats.get(b, [])) if statistical else trajectory_points(line)
-        draw_points(ax, points, colour(b), label, annotate=b not in aliases)
+        draw_points(ax, points, colour(b), label, labels=None if b in aliases else labels)
         if statistical:
             draw_prediction(ax, points, colour(b))
     for _, cost in reference_costs(summary, [scene]):
@@ -295,7 +410,11 @@ def work_precision(summary, scene, digest, aliases, fits=None):
     handles, _ = ax.get_legend_handles_labels()
     if handles:
         ax.legend(title="backend", fontsize=TEXT_PT, title_fontsize=TEXT_PT, loc="upper left", bbox_to_anchor=(1.01, 1.0))
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0.05, 1, 1))  # the bottom strip: the note of labels left out
+    left_out = place_labels(ax, labels)
+    if left_out:
+        fig.text(0.01, 0.01, f"{left_out} of {len(labels)} point labels left out where they would overlap",
+                 fontsize=TEXT_PT, color="0.4")
     return png(fig)
 
 
@@ -385,6 +504,8 @@ def overlap_histogram(case_results, scene, labels=None):
         else:
             ax.hist(d, bins=bins, histtype="step", linewidth=1.6, color=colour(backend), label=label)
     ax.set_xscale("log")
+    # More than a decade: the log axis labels its decades only (its minor labels would overlap).
+    ax.set_xlim(bins[0] / 1.5, bins[-1] * 1.5)
     ax.set_xlabel("relative overlap depth (r_i + r_j - d) / (r_i + r_j) [dimensionless]")
     ax.set_ylabel("overlapping pairs [count]")
     from matplotlib.ticker import MaxNLocator
@@ -397,30 +518,86 @@ def overlap_histogram(case_results, scene, labels=None):
     return png(fig)
 
 
-def configuration(result, world, scene, backend):
-    """The disks at the start and at the end of one case, side by side, drawn to scale."""
-    fig, axes = plt.subplots(1, 2, figsize=(8, 3.9))
-    for ax, key, title in ((axes[0], "initial", "initial (t = 0)"),
-                           (axes[1], "final", f"final (t = {result['duration']:g})")):
-        snap = result[key]
-        diameters = 2 * np.asarray(snap["radius"], dtype=float)
-        speeds = np.hypot(snap["vx"], snap["vy"]) if snap["vx"] else np.zeros(0)
-        collection = EllipseCollection(diameters, diameters, np.zeros_like(diameters), units="xy",
-                                       offsets=np.column_stack([snap["x"], snap["y"]]), offset_transform=ax.transData,
-                                       cmap="viridis")
-        collection.set_array(speeds)
-        ax.add_collection(collection)
-        if world:
-            ax.set_xlim(world[0], world[2])
-            ax.set_ylim(world[1], world[3])
-        else:
-            r = float(diameters.max()) if diameters.size else 1.0
-            ax.set_xlim(min(snap["x"]) - r, max(snap["x"]) + r)
-            ax.set_ylim(min(snap["y"]) - r, max(snap["y"]) + r)
-        ax.set_aspect("equal")
-        ax.set_xlabel("x [scene length units]")
-        ax.set_ylabel("y [scene length units]")
-        ax.set_title(tex(f"{scene} ({backend}): {title}"), fontsize=TEXT_PT)
-        fig.colorbar(collection, ax=ax, label="speed |v| [length / time]", shrink=0.8)
-    fig.tight_layout()
+PANEL_INCHES = 3.0  # the width of one configuration panel
+TITLE_CHARACTERS = 38  # a panel title longer than this is wrapped: 3 in at 9 pt
+STRETCH = 10  # a box longer than this many times its height is drawn stretched, not to scale
+
+
+def _disks(ax, snap, norm, outlined=None, stretched=False):
+    """One snapshot's disks to scale, filled by speed; `outlined`: another snapshot drawn over
+    them as black outlines (the reference, so that a lag or a missed collision shows). In a
+    stretched panel a disk is a sliver: its centre is marked too."""
+    diameters = 2 * np.asarray(snap["radius"], dtype=float)
+    speeds = np.hypot(snap["vx"], snap["vy"]) if snap["vx"] else np.zeros(0)
+    if stretched:
+        ax.scatter(snap["x"], snap["y"], c=speeds, cmap="viridis", norm=norm, s=36, edgecolors="black", zorder=3)
+    filled = EllipseCollection(diameters, diameters, np.zeros_like(diameters), units="xy",
+                               offsets=np.column_stack([snap["x"], snap["y"]]), offset_transform=ax.transData,
+                               cmap="viridis", norm=norm)
+    filled.set_array(speeds)
+    ax.add_collection(filled)
+    if outlined is not None:
+        d = 2 * np.asarray(outlined["radius"], dtype=float)
+        ax.add_collection(EllipseCollection(d, d, np.zeros_like(d), units="xy", facecolors="none", edgecolors="black",
+                                            linewidths=1.0, offsets=np.column_stack([outlined["x"], outlined["y"]]),
+                                            offset_transform=ax.transData))
+    return filled
+
+
+def _frame(ax, world, snaps):
+    """The scene's box (or the disks' extent without one), equal scales unless the box is more
+    than STRETCH times longer than high; returns whether it was stretched."""
+    if world:
+        x0, y0, x1, y1 = world
+    else:
+        r = max([max(s["radius"]) for s in snaps if s["radius"]] + [1.0])
+        x0, x1 = min(min(s["x"]) for s in snaps) - r, max(max(s["x"]) for s in snaps) + r
+        y0, y1 = min(min(s["y"]) for s in snaps) - r, max(max(s["y"]) for s in snaps) + r
+    ax.set_xlim(x0, x1)
+    ax.set_ylim(y0, y1)
+    stretched = max(x1 - x0, y1 - y0) > STRETCH * max(min(x1 - x0, y1 - y0), 1e-300)  # layout: aspect of the panel
+    ax.set_aspect("auto" if stretched else "equal")
+    if stretched:
+        from matplotlib.ticker import MaxNLocator
+        ax.yaxis.set_major_locator(MaxNLocator(2))
+    return stretched
+
+
+def _aspect(world, snaps):
+    """Height over width of what a configuration panel shows."""
+    if world:
+        return (world[3] - world[1]) / max(world[2] - world[0], 1e-300)
+    xs = [x for s in snaps for x in s["x"]] or [0.0]
+    ys = [y for s in snaps for y in s["y"]] or [0.0]
+    return (max(ys) - min(ys) + 1.0) / (max(xs) - min(xs) + 1.0)
+
+
+def configuration(scene, world, reference, worst=None, outlines=True):
+    """The disks at the start and at the end of the reference case, and, where another backend
+    was compared with it, that backend's final state beside it, with the reference's final disks
+    as black outlines where `outlines` (trajectory scenes: in a many-body gas the positions
+    decorrelate and only statistics are compared). `reference`: (backend, case record);
+    `worst`: (backend, case record, label), the backend with the largest measured error
+    (largest_error.py) and what that error is."""
+    ref_name, ref = reference
+    panels = [(ref["initial"], None, "initial (t = 0)"),
+              (ref["final"], None, f"{ref_name}, final (t = {ref['duration']:g})")]
+    if worst is not None:
+        name, result, label = worst
+        title = f"{name}, final" + (f" (outlines: {ref_name})" if outlines else "") + f" {label}"
+        panels.append((result["final"], ref["final"] if outlines else None, textwrap.fill(title, TITLE_CHARACTERS)))
+    snaps = [p[0] for p in panels]
+    fastest = max([float(np.max(np.hypot(s["vx"], s["vy"]))) for s in snaps if s["vx"]] + [1e-300])
+    norm = matplotlib.colors.Normalize(vmin=0, vmax=fastest)
+    height = PANEL_INCHES * min(max(_aspect(world, snaps), 0.25), 1.0) + 1.5  # titles, labels
+    fig, axes = plt.subplots(1, len(panels), figsize=(PANEL_INCHES * len(panels) + 1.2, height), squeeze=False,
+                             layout="constrained")
+    for ax, (snap, outlined, title) in zip(axes[0], panels):
+        stretched = _frame(ax, world, snaps)
+        filled = _disks(ax, snap, norm, outlined, stretched)
+        ax.set_xlabel("x [length]" + (" (stretched: centres marked)" if stretched else ""))
+        ax.set_ylabel("y [length]")
+        ax.set_title(tex(title), fontsize=TEXT_PT)
+    fig.colorbar(filled, ax=list(axes[0]), label="speed |v| [length / time]", shrink=0.8)
+    fig.suptitle(tex(scene), fontsize=TEXT_PT)
     return png(fig)

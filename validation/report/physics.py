@@ -117,13 +117,17 @@ def citations(summary):
 def eos_figure(summary):
     """Z against area fraction: the published curves and the measured points (top), and the
     relative difference from Kolafa & Rottner (bottom), where Henderson's 2 % at 0.65 shows.
-    A point whose error bar cannot tell the two published values apart is drawn hollow."""
+    A point whose error bar cannot tell the two published values apart is drawn hollow. Each
+    backend has its colour and marker of every figure and is drawn a small step aside in η
+    (figures.side_by_side, said in its legend entry): `event` and `event-plain` agree to rounding
+    and would otherwise hide one under the other."""
     physics = summary.get("physics") or {}
     points = [r for r in rows(summary) if r["row"] == "equation_of_state" and r["value"] is not None]
     curves = physics.get("curves", [])
     if not points or not curves:
         return None
-    fig, (top, bottom) = plt.subplots(2, 1, figsize=(5.6, 5.2), sharex=True, gridspec_kw={"height_ratios": [3, 2]})
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(6.4, 6.6), sharex=True, gridspec_kw={"height_ratios": [3, 2]},
+                                      layout="constrained")
     best = curves[0]
     styles = ["-", "--"]
     for c, style in zip(curves, styles):
@@ -131,30 +135,31 @@ def eos_figure(summary):
     base = dict(zip(best["eta"], best["z"]))
     for c, style in zip(curves[1:], styles[1:]):
         bottom.plot(c["eta"], [100 * (z / base[e] - 1) for e, z in zip(c["eta"], c["z"])], style, color="grey",
-                    label=c["name"], linewidth=1.2)
+                    linewidth=1.2)
     bottom.axhline(0, color="grey", linewidth=1.2)
-    markers = {"event": "o"}
-    for backend in sorted({p["backend"] for p in points}):
+    backends = sorted({p["backend"] for p in points})
+    etas = sorted({p["parameter"] for p in points})
+    offsets = figures.side_by_side(backends, figures.SIDE_STEP * (etas[-1] - etas[0] if len(etas) > 1 else 1.0))
+    for backend in backends:
         mine = [p for p in points if p["backend"] == backend]
+        kw = dict(marker=figures.marker(backend), color=figures.colour(backend), linestyle="none", markersize=6)
         for p in mine:
-            filled = p["resolved"]
-            kw = dict(marker=markers.get(backend, "s"), color="black" if backend == "event" else "tab:blue",
-                      markerfacecolor=None if filled else "white", linestyle="none", markersize=5)
-            top.errorbar([p["parameter"]], [p["value"]], yerr=[p["standard_error"]], **kw)
+            style = dict(kw, markerfacecolor=None if p["resolved"] else "white")
+            x = p["parameter"] + offsets[backend]
+            top.errorbar([x], [p["value"]], yerr=[p["standard_error"]], **style)
             rel = 100 * (p["value"] / p["reference"] - 1)
-            bottom.errorbar([p["parameter"]], [rel], yerr=[100 * p["standard_error"] / p["reference"]], **kw)
-        top.plot([], [], marker=markers.get(backend, "s"), linestyle="none",
-                 color="black" if backend == "event" else "tab:blue",
-                 label=f"{backend} ({mine[0]['estimator'].split(' (')[0]})")
-    top.set_ylabel("Z = βP/ρ (dimensionless)")
+            bottom.errorbar([x], [rel], yerr=[100 * p["standard_error"] / p["reference"]], **style)
+        top.plot([], [], label=figures.tex(f"{backend} ({mine[0]['estimator'].split(',')[0].split(' (')[0]}), "
+                                           f"drawn at η {offsets[backend]:+.2g}"), **kw)
+    top.plot([], [], marker="o", color="0.3", markerfacecolor="white", linestyle="none",
+             label="hollow: error bar cannot tell the two curves apart")
+    top.set_ylabel("Z = βP/ρ [dimensionless]")
     top.legend(fontsize=figures.TEXT_PT, loc="upper left")
-    bottom.set_ylabel(f"Z / Z[{best['name']}] − 1 (%)", fontsize=figures.TEXT_PT)
-    bottom.set_xlabel("area fraction η = Nπr²/A (dimensionless)")
-    bottom.legend(fontsize=figures.TEXT_PT, loc="upper left")
+    bottom.set_ylabel(f"Z / Z[{best['name'].split(' (')[0]}] − 1 [%]", fontsize=figures.TEXT_PT)
+    bottom.set_xlabel("area fraction η = Nπr²/A [dimensionless]")
     rel_points = [100 * (p["value"] / p["reference"] - 1) for p in points]
     span = max([1.0] + [abs(v) + 100 * p["standard_error"] / p["reference"] for v, p in zip(rel_points, points)])
     bottom.set_ylim(-1.5 * span, 3 * span)  # Henderson's rise near 0.7 would hide the points
-    fig.tight_layout()
     return figures.png(fig)
 
 

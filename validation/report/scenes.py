@@ -11,6 +11,7 @@ from concurrent.futures import ProcessPoolExecutor, as_completed
 import animations
 import digest
 import figures
+import largest_error
 import progress
 import trajectory
 from safe_files import safe_output  # the input guard: no FIFO waited on
@@ -87,6 +88,26 @@ def left_out_reason(summary, scene, check):
     return None if judged or not reasons else reasons[0]
 
 
+def configuration_figure(summary, a, scene, chosen):
+    """The configuration figure of a scene, the ids of the cases it draws and whether the
+    reference is outlined on the other: the reference's drawn case (else the first drawn) and
+    beside it the drawn case of the backend with the largest measured error on the scene
+    (largest_error.py), labelled with that error."""
+    by_backend = {b: (c, r) for b, c, r in chosen}
+    first = summary["reference"] if summary["reference"] in by_backend else chosen[0][0]
+    ref_case, ref_result = by_backend[first]
+    worst = largest_error.largest_error(summary, scene, a.aliases)
+    beside = None
+    if worst is not None and worst["backend"] in by_backend:
+        case, result = by_backend[worst["backend"]]
+        label = f"at dt = {case['dt']:g}: " + (largest_error.error_at(worst, case["dt"]) or "no error measured")
+        beside = (worst["backend"], result, label)
+    outlines = beside is not None and worst["kind"].startswith("trajectory")
+    png = figures.configuration(scene, scene_box(summary.get("scene_files", {}).get(scene, "")),
+                                (first, ref_result), beside, outlines=outlines)
+    return png, [ref_case["id"]] + ([by_backend[beside[0]][0]["id"]] if beside else []), outlines
+
+
 def scene_section(summary, directory, a, scene, chosen, jumps):
     """One scene's figures (PNG bytes, None where a figure has nothing to show) and notes; the
     energy-jump notes are filled in by the process that lays the page out."""
@@ -95,16 +116,15 @@ def scene_section(summary, directory, a, scene, chosen, jumps):
         return section
     shown = [(b, r) for b, _, r in chosen if b not in a.aliases]
     labels = {b: " = ".join([b] + [x for x, y in a.aliases.items() if y == b]) for b, _ in shown}
-    backend, case, result = chosen[0]
+    configuration, configuration_cases, outlines = configuration_figure(summary, a, scene, chosen)
     section.update(
         work_precision=figures.work_precision(summary, scene, digest, a.aliases, a.fit),
         shown=", ".join(f"{b} at dt = {c['dt']:g}, seed {c['seed']}" for b, c, _ in chosen),
         conservation=figures.conservation(shown, scene, {b: j for b, (_, j) in jumps.items()}, labels,
                                           left_out_reason(summary, scene, "momentum_drift")),
         overlaps=figures.overlap_histogram(shown, scene, labels),
-        configuration=figures.configuration(result, scene_box(summary.get("scene_files", {}).get(scene, "")),
-                                            scene, backend),
-        configuration_case=case["id"], motion=animations.section(summary, directory, scene),
+        configuration=configuration, configuration_cases=configuration_cases, configuration_outlines=outlines,
+        motion=animations.section(summary, directory, scene, a.aliases),
         trajectory=trajectory.section([(b, c, r) for b, c, r in chosen if b not in a.aliases], scene, labels))
     return section
 

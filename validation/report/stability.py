@@ -5,6 +5,7 @@ A stability map is drawn for every scene swept over dt and one scene parameter (
 suite file): one panel per backend, one cell per (dt, value), coloured by the case's outcome.
 With several seeds per cell the most severe outcome is shown.
 """
+import textwrap
 import tomllib
 from collections import OrderedDict
 
@@ -96,7 +97,8 @@ def swept_scenes(summary):
 def stability_map(scene, path, backends, order):
     dts = sorted({k[0] for cells in backends.values() for k in cells})
     values = sorted({k[1] for cells in backends.values() for k in cells})
-    fig, axes = plt.subplots(1, len(backends), figsize=(3.2 * len(backends) + 1.5, 3.2), squeeze=False)
+    fig, axes = plt.subplots(1, len(backends), figsize=(3.2 * len(backends) + 1.5, 3.4), squeeze=False,
+                             layout="constrained")  # room for the rotated ticks, the title and the legend
     for ax, (backend, cells) in zip(axes[0], backends.items()):
         for i, dt in enumerate(dts):
             for j, v in enumerate(values):
@@ -110,11 +112,11 @@ def stability_map(scene, path, backends, order):
         ax.set_yticks([j + 0.5 for j in range(len(values))], [f"{v:g}" for v in values])
         ax.set_xlabel("time step dt (time)")
         ax.set_title(figures.tex(backend), color=figures.colour(backend))
-    axes[0][0].set_ylabel(figures.tex(parameter_label(path)))
+    axes[0][0].set_ylabel(figures.tex(textwrap.fill(parameter_label(path), 30)))  # taller than the panel else
     present = [o for o in order if any(o in cells.values() for cells in backends.values())]
-    fig.legend(handles=[Patch(facecolor=OUTCOME_COLOURS[o], label=o) for o in present],
-               loc="center left", bbox_to_anchor=(1.0, 0.5), frameon=False)
-    fig.suptitle(figures.tex(f"Stability map: {scene}"), y=1.04)
+    axes[0][-1].legend(handles=[Patch(facecolor=OUTCOME_COLOURS[o], label=o) for o in present],
+                       loc="center left", bbox_to_anchor=(1.02, 0.5), frameon=False)
+    fig.suptitle(figures.tex(f"Stability map: {scene}"))
     return figures.png(fig)
 
 
