@@ -17,7 +17,8 @@
                                         a slope in log-log gives, the pair's second meeting, the
                                         stable root's errors, step on a step boundary, multi-contact
                                         steps, paired differences, a correlated series, the
-                                        Lyapunov exponent, and wording found false
+                                        Lyapunov exponent, the five seeds' spreads and
+                                        drift, and wording found false
 
 An exercise is a "### Exercise" section of a chapter (docs/course/[1-9]-*.md): its first ```sh
 block is the command a student runs, with `collide` meaning the built program, in a scratch
@@ -482,6 +483,47 @@ def fact_correlated_series(collide, scratch):
     return failures
 
 
+def periodic_gas_seeds(collide, scratch, drift):
+    """periodic_gas on event from seeds 1-5, 2 time units, its Maxwell draw's drift `drift`:
+    per seed the pressure counter P, Z with kT = K_int/(N - 1) (the centre-of-mass frame's
+    kinetic energy over the degrees of freedom), Z with kT = K/N, and K_cm in units of kT."""
+    text = set_key((SCENES / "periodic_gas.toml").read_text(), "duration", "2.0")
+    text = text.replace("velocity = { maxwell = 1.0 }", f'velocity = {{ maxwell = 1.0, drift = "{drift}" }}')
+    rows = []
+    for seed in range(1, 6):
+        f = run(collide, set_key(text, "seed", str(seed)), "event", scratch, f"gas{seed}{drift}", frames=False)
+        c, m = f["stats/counters"].attrs, f["particles/mass"][:]
+        n, t = len(m), float(c["simulated_time"])
+        k_cm = (f["metrics/momentum_x"][0] ** 2 + f["metrics/momentum_y"][0] ** 2) / (2 * m.sum())
+        k, w = float(c["kinetic_integral"]) / t, float(c["virial_sum"]) / (2 * t)
+        kt = (k - k_cm) / (n - 1)
+        rows.append((float(c["pressure"]), 1 + w / (n * kt), 1 + w / k, k_cm / kt))
+    return np.array(rows)
+
+
+def fact_replicates(collide, scratch):
+    """Chapter 4's five seeds: the spread of the pressure and of Z with each seed's own kT, the
+    centre of mass a raw draw leaves, and how far reading kT as K/N moves Z."""
+    page = re.sub(r"\s+", " ", (COURSE / "4-validating-a-solver.md").read_text())
+    spreads = re.search(r"P spreads by ([\d.]+) % \(standard deviation over the mean\) and Z by ([\d.]+) %", page)
+    drift = re.search(r"K_cm = ([\d.]+) to ([\d.]+) kT.*?moves Z by at most ([\d.]+) %", page)
+    if not spreads or not drift:
+        return ["4-validating-a-solver.md: the five seeds' figure states no spread of P and of Z with each "
+                "seed's own kT, or no centre-of-mass drift of a raw draw"]
+    removed, raw = periodic_gas_seeds(collide, scratch, "removed"), periodic_gas_seeds(collide, scratch, "raw")
+    spread = lambda x: 100 * x.std(ddof=1) / x.mean()
+    measured = {"P's spread": (spreads.group(1), spread(removed[:, 0]), 0.05),
+                "Z's spread": (spreads.group(2), spread(removed[:, 1]), 0.05),
+                "the smallest K_cm": (drift.group(1), raw[:, 3].min(), 0.005),
+                "the largest K_cm": (drift.group(2), raw[:, 3].max(), 0.005),
+                "Z's shift with K/N": (drift.group(3), 100 * np.max(np.abs(raw[:, 2] / raw[:, 1] - 1)), 0.005)}
+    failures = [f"4-validating-a-solver.md: {what} is {said} on the page, {value:.3f} in the runs"
+                for what, (said, value, slack) in measured.items() if abs(float(said) - value) > slack + 1e-9]
+    if not np.allclose(raw[:, 1], removed[:, 1], rtol=1e-4):
+        failures.append(f"periodic_gas: Z with a raw drift {raw[:, 1]} differs from Z without {removed[:, 1]}")
+    return failures
+
+
 def fact_lyapunov():
     """Chapter 2.5: the Lyapunov exponent the page states, against one seed of the same
     tangent-dynamics measurement (docs/tools/lyapunov.py): within three of its per-seed spreads."""
@@ -519,8 +561,9 @@ def check_facts(collide):
                     + fact_cradle(collide, scratch) + fact_slope() + fact_reunion(collide, scratch)
                     + fact_root_rounding() + fact_step_boundary(collide, scratch)
                     + fact_multi_contact(collide, scratch) + fact_pairing(collide, scratch)
-                    + fact_correlated_series(collide, scratch) + fact_lyapunov() + fact_wording())
-    print("12 statements of the text measured")
+                    + fact_correlated_series(collide, scratch) + fact_lyapunov() + fact_wording()
+                    + fact_replicates(collide, scratch))
+    print("13 statements of the text measured")
     return failures
 
 
