@@ -127,8 +127,11 @@ def head_on_mass_ratio(lab, out):
     f = lab.run(SCENES / "head_on_mass_ratio_10.toml", "event", frames=True)
     t, v = f["frame_times"], f["velocities"][:, :, 0]
     fig, ax = plt.subplots(figsize=(6, 3.2))
-    ax.plot(t, v[:, 0], label="light disk (m = 1)")
-    ax.plot(t, v[:, 1], label="heavy disk (m = 10)")
+    # Velocities are constant between collisions: drawn as steps from each output time on, so the
+    # jump sits at the output time that first shows it (t = 3, the contact), not on a ramp
+    # between two output times.
+    ax.plot(t, v[:, 0], drawstyle="steps-post", label="light disk (m = 1)")
+    ax.plot(t, v[:, 1], drawstyle="steps-post", label="heavy disk (m = 10)")
     for value, text in ((-9 / 11, "-9/11"), (2 / 11, "2/11")):
         ax.axhline(value, color="grey", lw=0.6, ls=":")
         ax.text(t[-1], value, f" {text}", va="center", fontsize=8)
@@ -592,14 +595,17 @@ def threads(lab, out):
     fig, ax = plt.subplots(figsize=(6, 3.0))
     names, rates = [], []
     for backend, extra in (("step", ()), ("cpu", ("--threads", "1")), ("cpu", ("--threads", "2"))):
-        f = lab.run(scene, backend, extra=extra)
-        seconds = sum(float(s) for s in f["stats"]["phase_seconds"].values())
-        rates.append(1000 * int(f["stats"]["steps"]) / seconds)
+        best = 0.0
+        for _ in range(3):  # the best of three runs: other jobs on a shared machine only slow one down
+            f = lab.run(scene, backend, extra=extra)
+            seconds = sum(float(s) for s in f["stats"]["phase_seconds"].values())
+            best = max(best, 1000 * int(f["stats"]["steps"]) / seconds)
+        rates.append(best)
         names.append(backend + (f", {extra[1]} thread{'s' if extra[1] != '1' else ''}" if extra else ""))
     ax.barh(names, rates)
     ax.categorical = "y"
     finish(fig, ax, out, "ch5_threads",
-           "throughput (particle-steps per second)", None, "box_gas_1000, 2000 steps: step (double) and cpu (float)",
+           "throughput (particle-steps per second)", None, "box_gas_1000, 2000 steps, best of three runs",
            legend=False)
 
 
