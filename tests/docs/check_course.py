@@ -18,7 +18,8 @@
                                         stable root's errors, step on a step boundary, multi-contact
                                         steps, paired differences, a correlated series, the
                                         Lyapunov exponent, the five seeds' spreads and
-                                        drift, the walls' collision rate, and wording found false
+                                        drift, the walls' collision rate, the grid fitted to
+                                        small disks, and wording found false
 
 An exercise is a "### Exercise" section of a chapter (docs/course/[1-9]-*.md): its first ```sh
 block is the command a student runs, with `collide` meaning the built program, in a scratch
@@ -570,6 +571,45 @@ def fact_replicates(collide, scratch):
     return failures
 
 
+def small_disks_in_cells(collide, scratch, cell):
+    """Exercise 5.3's run: polydisperse_1_100 with its ten large disks made small (2010 disks of
+    radius 0.01), 10 time units on event in cells of edge `cell`: the cell crossings per
+    collision and the processor time per collision (the least of two runs, the process's)."""
+    import resource
+    text = (SCENES / "stiff/polydisperse_1_100.toml").read_text()
+    text = text.replace("radius = 1.0\nmass = 100.0", "radius = 0.01\nmass = 0.01")
+    text = set_key(set_key(text, "duration", "10.0"), "output_interval", "10.0") + f"\n[backend.event]\ncell_size = {cell}\n"
+    seconds = []
+    for attempt in range(2):
+        before = resource.getrusage(resource.RUSAGE_CHILDREN).ru_utime
+        f = run(collide, text, "event", scratch, f"cells{cell}_{attempt}", frames=False)
+        seconds.append(resource.getrusage(resource.RUSAGE_CHILDREN).ru_utime - before)
+    c = f["stats/counters"].attrs
+    return float(c["events_cell"]) / float(c["events_pair"]), min(seconds) / float(c["events_pair"])
+
+
+def fact_fitted_grid(collide, scratch):
+    """Chapter 5, exercise 5.3: cells fitted to the small disks (0.02) against the large disks'
+    (2): the crossings per collision the page states, and that the fine grid costs more per
+    collision by the page's factor (within 2x: the time of a shared machine)."""
+    page = re.sub(r"\s+", " ", (COURSE / "5-making-it-fast.md").read_text())
+    crossings = re.search(r"([\d.]+) crossings per collision with cells of 2, ([\d.]+) with 0\.45, ([\d.]+) with 0\.02", page)
+    dearer = re.search(r"the grid fitted to the small disks is ([\d.]+) times \*dearer\*", page)
+    if not crossings or not dearer:
+        return ["5-making-it-fast.md: exercise 5.3 states no measured crossings per collision or cost of the grid "
+                "fitted to the small disks"]
+    measured = {cell: small_disks_in_cells(collide, scratch, cell) for cell in ("2", "0.45", "0.02")}
+    failures = [f"5-making-it-fast.md: {said} crossings per collision with cells of {cell} on the page, "
+                f"{measured[cell][0]:.3g} in the run"
+                for cell, said in zip(("2", "0.45", "0.02"), crossings.groups())
+                if not close(float(said), measured[cell][0], 0.01)]
+    ratio = measured["0.02"][1] / measured["2"][1]
+    if not 0.5 <= float(dearer.group(1)) / ratio <= 2:
+        failures.append(f"5-making-it-fast.md: cells of 0.02 cost {dearer.group(1)} times cells of 2 per collision "
+                        f"on the page, {ratio:.1f} times in the runs")
+    return failures
+
+
 def fact_lyapunov():
     """Chapter 2.5: the Lyapunov exponent the page states, against one seed of the same
     tangent-dynamics measurement (docs/tools/lyapunov.py): within three of its per-seed spreads."""
@@ -608,8 +648,9 @@ def check_facts(collide):
                     + fact_root_rounding() + fact_step_boundary(collide, scratch)
                     + fact_multi_contact(collide, scratch) + fact_pairing(collide, scratch)
                     + fact_correlated_series(collide, scratch) + fact_lyapunov() + fact_wording()
-                    + fact_replicates(collide, scratch) + fact_enskog_walls(collide, scratch))
-    print("14 statements of the text measured")
+                    + fact_replicates(collide, scratch) + fact_enskog_walls(collide, scratch)
+                    + fact_fitted_grid(collide, scratch))
+    print("15 statements of the text measured")
     return failures
 
 
