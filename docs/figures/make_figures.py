@@ -544,6 +544,47 @@ def replicates(lab, out):
            "periodic_gas on event, five seeds of 2 time units", legend_loc="lower left")
 
 
+# The small periodic box the three routes to equilibrium share (chapter 4.6): 72 disks melted
+# from a 9 x 8 hexagonal lattice (spacing 0.955, inside the box's margins) in a 9 x 8 sqrt(3)/2
+# box, the radius for area fraction 0.5. The same changes as `--set` options in the chapter.
+SAMPLING_BOX = {"count": "72", "columns": "9", "spacing": "0.955", "radius": "0.37125762464284556",
+                "box": "[0.0, 0.0, 9.0, 6.928203230275509]", "duration": "2000.0", "output_interval": "10.0"}
+SAMPLING_ROUTES = (("event", "collision virial"), ("ecmc", "lifts"), ("metropolis", "contact histogram"))
+
+
+def sampling_routes(lab):
+    """beta P d^2, its batch-means error and the processor seconds of each route on the box."""
+    import resource
+    scene = lab.scene("physics/hard_disk_fluid.toml", **SAMPLING_BOX)
+    rows = []
+    for backend, _ in SAMPLING_ROUTES:
+        before = resource.getrusage(resource.RUSAGE_CHILDREN).ru_utime
+        c = lab.run(scene, backend)["stats"]["counters"]
+        seconds = resource.getrusage(resource.RUSAGE_CHILDREN).ru_utime - before
+        rows.append((float(c["beta_pressure"]), float(c["beta_pressure_error"]), seconds))
+    return rows
+
+
+def sampling(lab, out):
+    # Dynamics and two samplers on one box: the same equilibrium within the error bars; Kolafa &
+    # Rottner's N -> infinity equation of state beside them shows the finite-N pressure.
+    rows = sampling_routes(lab)
+    eta = 0.5
+    density_d2 = 72 / (9.0 * 6.928203230275509) * (2 * float(SAMPLING_BOX["radius"])) ** 2
+    fig, ax = plt.subplots(figsize=(6, 3.6))
+    names = [f"{backend}\n({how})" for backend, how in SAMPLING_ROUTES]
+    for k, ((p, se, seconds), name) in enumerate(zip(rows, names)):
+        ax.errorbar([name], [p], yerr=[se], fmt="o", capsize=4, color=f"C{k}",
+                    label=f"{name.splitlines()[0]}: {p:.4f} ± {se:.4f}, {seconds:.1f} s")
+    limit = kolafa_rottner(eta) * density_d2
+    ax.axhline(limit, color="k", ls="--", lw=0.8, label="Kolafa & Rottner, N → ∞")
+    lo = min(p - se for p, se, _ in rows)
+    ax.set_ylim(lo - 0.1 * (limit - lo), limit + 1.1 * (limit - lo))  # the legend above the line
+    ax.categorical = "x"
+    finish(fig, ax, out, "ch4_sampling", "route (a category, not a scale)", r"$\beta P d^2$ (dimensionless)",
+           "72 disks, periodic, η = 0.5: three routes to one pressure", legend_loc="upper center")
+
+
 # --- Chapter 5: making it fast ------------------------------------------------------------
 
 def bench_rows(lab, suite, extra=()):
@@ -611,7 +652,8 @@ def threads(lab, out):
 
 FIGURES = {f.__name__: f for f in (head_on_mass_ratio, glancing, pi_circle, maxwell, equation_of_state,
                                     snapshot, chaos, haff, convergence, cradle, energy_crowd, work_precision,
-                                    overlap_series, replicates, speed_ladder, stepped_throughput, threads)}
+                                    overlap_series, replicates, sampling, speed_ladder, stepped_throughput,
+                                    threads)}
 
 
 def main():

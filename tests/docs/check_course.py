@@ -19,7 +19,8 @@
                                         steps, paired differences, a correlated series, the
                                         Lyapunov exponent, the five seeds' spreads and
                                         drift, the walls' collision rate, the grid fitted to
-                                        small disks, and wording found false
+                                        small disks, three routes to one
+                                        equilibrium, and wording found false
 
 An exercise is a "### Exercise" section of a chapter (docs/course/[1-9]-*.md): its first ```sh
 block is the command a student runs, with `collide` meaning the built program, in a scratch
@@ -607,6 +608,48 @@ def fact_fitted_grid(collide, scratch):
     return failures
 
 
+SAMPLING_BOX = ["--set", "particles.0.count=72", "--set", "particles.0.columns=9", "--set", "particles.0.spacing=0.955",
+                "--set", "particles.0.radius=0.37125762464284556", "--set", "world.box=[0.0, 0.0, 9.0, 6.928203230275509]",
+                "--set", "run.duration=2000", "--set", "run.output_interval=10"]
+
+
+def route_pressure(collide, scratch, backend, name, extra=()):
+    """beta P d^2 and its batch-means error of the 72-disk box of chapter 4.6 on `backend`, with
+    the further `--set` options `extra`; the run file is scratch/NAME.h5."""
+    out = scratch / f"{name}.h5"
+    subprocess.run([collide, "run", str(SCENES / "physics/hard_disk_fluid.toml"), "--backend", backend,
+                    "--out", str(out), *SAMPLING_BOX, *extra], check=True, capture_output=True)
+    c = h5py.File(out, "r")["stats/counters"].attrs
+    return float(c["beta_pressure"]), float(c["beta_pressure_error"])
+
+
+def fact_sampling(collide, scratch):
+    """Chapter 4.6: the three routes' pressures and errors in its table, the z of each pair, and
+    ecmc's finite-size points at N = 72 (the 1152-disk ones are left to the page's command)."""
+    page = re.sub(r"\s+", " ", (COURSE / "4-validating-a-solver.md").read_text())
+    rows = {b: re.search(rf"\| `{b}`, [^|]*\| ([\d.]+) \| ([\d.]+) \|", page) for b in ("event", "ecmc", "metropolis")}
+    z = re.search(r"z = ([\d.]+) for `event` against `ecmc`, ([\d.]+) against `metropolis`, ([\d.]+) between", page)
+    small = re.search(r"2\.(\d+) and 2\.(\d+) \(± [\d.]+\) at N = 72", page)
+    if not all(rows.values()) or not z or not small:
+        return ["4-validating-a-solver.md: section 4.6 states no table of the three routes' pressures, their "
+                "z, or ecmc's pressure at N = 72"]
+    measured = {b: route_pressure(collide, scratch, b, f"route_{b}") for b in rows}
+    failures = [f"4-validating-a-solver.md: {b}: {rows[b].group(1)} ± {rows[b].group(2)} on the page, "
+                f"{p:.6g} ± {e:.3g} in the run" for b, (p, e) in measured.items()
+                if abs(float(rows[b].group(1)) - p) > 1e-5 or not close(float(rows[b].group(2)), e, 0.01)]
+    pairs = (("event", "ecmc"), ("event", "metropolis"), ("ecmc", "metropolis"))
+    for said, (a, b) in zip(z.groups(), pairs):
+        value = abs(measured[a][0] - measured[b][0]) / np.hypot(measured[a][1], measured[b][1])
+        if abs(float(said) - value) > 0.01:
+            failures.append(f"4-validating-a-solver.md: z = {said} for {a} against {b} on the page, {value:.2f} computed")
+    longer = ["--set", "run.duration=4000"]
+    for seed, digits in zip((1, 2), small.groups()):
+        p, _ = route_pressure(collide, scratch, "ecmc", f"ecmc_seed{seed}", longer + ["--set", f"seed={seed}"])
+        if abs(float(f"2.{digits}") - p) > 1e-4:
+            failures.append(f"4-validating-a-solver.md: ecmc at N = 72, seed {seed}: 2.{digits} on the page, {p:.5f} run")
+    return failures
+
+
 def fact_lyapunov():
     """Chapter 2.5: the Lyapunov exponent the page states, against one seed of the same
     tangent-dynamics measurement (docs/tools/lyapunov.py): within three of its per-seed spreads."""
@@ -650,8 +693,8 @@ def check_facts(collide):
                     + fact_multi_contact(collide, scratch) + fact_pairing(collide, scratch)
                     + fact_correlated_series(collide, scratch) + fact_lyapunov() + fact_wording()
                     + fact_replicates(collide, scratch) + fact_enskog_walls(collide, scratch)
-                    + fact_fitted_grid(collide, scratch))
-    print("15 statements of the text measured")
+                    + fact_fitted_grid(collide, scratch) + fact_sampling(collide, scratch))
+    print("16 statements of the text measured")
     return failures
 
 
