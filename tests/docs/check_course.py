@@ -531,7 +531,7 @@ def fact_correlated_series(collide, scratch):
 def periodic_gas_seeds(collide, scratch, drift):
     """periodic_gas on event from seeds 1-5, 2 time units, its Maxwell draw's drift `drift`:
     per seed the pressure counter P, Z with kT = K_int/(N - 1) (the centre-of-mass frame's
-    kinetic energy over the degrees of freedom), Z with kT = K/N, and K_cm in units of kT."""
+    kinetic energy over the degrees of freedom), Z with kT = K/N, K_cm in units of kT, and kT."""
     text = set_key((SCENES / "periodic_gas.toml").read_text(), "duration", "2.0")
     text = text.replace("velocity = { maxwell = 1.0 }", f'velocity = {{ maxwell = 1.0, drift = "{drift}" }}')
     rows = []
@@ -542,7 +542,7 @@ def periodic_gas_seeds(collide, scratch, drift):
         k_cm = (f["metrics/momentum_x"][0] ** 2 + f["metrics/momentum_y"][0] ** 2) / (2 * m.sum())
         k, w = float(c["kinetic_integral"]) / t, float(c["virial_sum"]) / (2 * t)
         kt = (k - k_cm) / (n - 1)
-        rows.append((float(c["pressure"]), 1 + w / (n * kt), 1 + w / k, k_cm / kt))
+        rows.append((float(c["pressure"]), 1 + w / (n * kt), 1 + w / k, k_cm / kt, kt))
     return np.array(rows)
 
 
@@ -552,7 +552,8 @@ def fact_replicates(collide, scratch):
     page = re.sub(r"\s+", " ", (COURSE / "4-validating-a-solver.md").read_text())
     spreads = re.search(r"P spreads by ([\d.]+) % \(standard deviation over the mean\) and Z by ([\d.]+) %", page)
     drift = re.search(r"K_cm = ([\d.]+) to ([\d.]+) kT.*?moves Z by at most ([\d.]+) %", page)
-    if not spreads or not drift:
+    temperatures = re.search(r"the seeds' temperatures, kT = ([\d.]+) to ([\d.]+),", page)
+    if not spreads or not drift or not temperatures:
         return ["4-validating-a-solver.md: the five seeds' figure states no spread of P and of Z with each "
                 "seed's own kT, or no centre-of-mass drift of a raw draw"]
     removed, raw = periodic_gas_seeds(collide, scratch, "removed"), periodic_gas_seeds(collide, scratch, "raw")
@@ -561,7 +562,9 @@ def fact_replicates(collide, scratch):
                 "Z's spread": (spreads.group(2), spread(removed[:, 1]), 0.05),
                 "the smallest K_cm": (drift.group(1), raw[:, 3].min(), 0.005),
                 "the largest K_cm": (drift.group(2), raw[:, 3].max(), 0.005),
-                "Z's shift with K/N": (drift.group(3), 100 * np.max(np.abs(raw[:, 2] / raw[:, 1] - 1)), 0.005)}
+                "Z's shift with K/N": (drift.group(3), 100 * np.max(np.abs(raw[:, 2] / raw[:, 1] - 1)), 0.005),
+                "the lowest kT": (temperatures.group(1), removed[:, 4].min(), 0.0005),
+                "the highest kT": (temperatures.group(2), removed[:, 4].max(), 0.0005)}
     failures = [f"4-validating-a-solver.md: {what} is {said} on the page, {value:.3f} in the runs"
                 for what, (said, value, slack) in measured.items() if abs(float(said) - value) > slack + 1e-9]
     if not np.allclose(raw[:, 1], removed[:, 1], rtol=1e-4):
