@@ -2,7 +2,8 @@
 """The course's lab bench: prints the numbers the exercises ask about from a run file.
 
     python3 docs/course/lab.py velocities RUN.h5... final velocity of every disk (needs --frames)
-    python3 docs/course/lab.py counters RUN.h5...   steps, contacts and the solver's counters
+    python3 docs/course/lab.py counters RUN.h5...   steps, contacts and the solver's counters (and an
+                                                    event solver's cell crossings per collision)
     python3 docs/course/lab.py energy RUN.h5...     kinetic energy drift and its largest jump
     python3 docs/course/lab.py error RUN.h5 REF.h5  largest position difference at the last frame
     python3 docs/course/lab.py same RUN.h5 OTHER.h5 whether the final states are bitwise identical
@@ -11,7 +12,7 @@
     python3 docs/course/lab.py sweep SUMMARY.json SCENE BACKEND    its error at each dt
     python3 docs/course/lab.py check EXERCISE FILE.py  checks the code a student wrote for a
                                         coding exercise (galperin, root, haff, tunnel, blocks,
-                                        counting_sort); exit status 0 when it is right
+                                        metropolis, counting_sort); exit status 0 when it is right
 
 Each reads the HDF5 layout of docs/output-format.md with h5py; nothing here simulates.
 """
@@ -44,8 +45,11 @@ def counters(run):
         stats = f["stats"]
         print(f"steps {int(stats.attrs['steps'])}")
         print(f"contacts {int(stats.attrs['contacts'])}")
-        for name, value in sorted(stats["counters"].attrs.items()):
+        counted = stats["counters"].attrs
+        for name, value in sorted(counted.items()):
             print(f"{name} {float(value):.6g}")
+        if "events_cell" in counted and counted["events_pair"] > 0:  # (the event solvers')
+            print(f"cell crossings per collision {float(counted['events_cell'] / counted['events_pair']):.3g}")
 
 
 def energy(run):

@@ -77,6 +77,13 @@ void EventSolver::load(const Scene& scene, const ParticleState<double>& initial)
         r_sum += disks_[i].radius;
         v2_sum += disks_[i].vx * disks_[i].vx + disks_[i].vy * disks_[i].vy;
     }
+    // Time scale: the time a typical disk needs to travel one diameter (from the rms speed or,
+    // for disks starting at rest under gravity, from the fall speed over one diameter).
+    const double diameter = n > 0 ? 2 * r_sum / double(n) : 1.0;
+    const double speed = std::max(n > 0 ? std::sqrt(v2_sum / double(n)) : 0.0, std::sqrt(std::hypot(gx_, gy_) * diameter));
+    time_scale_ = speed > 0 ? diameter / speed : 1.0;
+    const std::optional<double> cell_edge = read_options(r_max);
+
     // Cell size: at least the largest contact distance 2 r_max, so that the 3x3 cells around a
     // disk hold every disk it can touch. In a dilute gas such cells are nearly empty and a disk
     // crosses several of them between two collisions (at area fraction 0.1, 6 of the 7 events
@@ -84,14 +91,15 @@ void EventSolver::load(const Scene& scene, const ParticleState<double>& initial)
     // halve the events per collision and save instructions and cache misses; in a denser gas
     // they only add neighbours (+18 % instructions at area fraction 0.5). So they are used when
     // cells of 2 r_max would hold fewer than 1/4 disk on average (area fraction below ~0.2 for
-    // equal disks). docs/event-driven.md, "Performance", has the measurements.
+    // equal disks). docs/event-driven.md, "Performance", has the measurements. The option
+    // cell_size overrides the choice, to measure it (docs/course/5-making-it-fast.md, ex. 5.3).
     double cell_size = n > 0 ? 2 * r_max : 1.0;
     const double area_per_disk = n > 0 ? w.width() * w.height() / double(n) : 0.0;
     const double dilute_size = std::sqrt(area_per_disk);
     // (Only in a box at least 4 such cells wide: a periodic box needs 3 cells per axis.)
     if (n > 0 && cell_size < 0.5 * dilute_size && 4 * dilute_size < std::min(w.width(), w.height()))
         cell_size = dilute_size;
-    cells_.configure(w, cell_size, n);
+    cells_.configure(w, cell_edge.value_or(cell_size), n);
     if (scene.periodic() && (cells_.cells_x() < 3 || cells_.cells_y() < 3))
         throw std::runtime_error("event: periodic box " + round_trip_text(w.width()) + " x " + round_trip_text(w.height()) +
                                  " is narrower than 3 contact distances (2 r_max = " + round_trip_text(2 * r_max) +
@@ -99,12 +107,9 @@ void EventSolver::load(const Scene& scene, const ParticleState<double>& initial)
     for (std::uint32_t i = 0; i < n; ++i) cells_.insert(disks_, i, cells_.column_of(disks_[i].x), cells_.row_of(disks_[i].y));
     reject_overlaps();
 
-    // Time scale: the time a typical disk needs to travel one diameter (from the rms speed or,
-    // for disks starting at rest under gravity, from the fall speed over one diameter).
-    const double diameter = n > 0 ? 2 * r_sum / double(n) : 1.0;
-    const double speed = std::max(n > 0 ? std::sqrt(v2_sum / double(n)) : 0.0, std::sqrt(std::hypot(gx_, gy_) * diameter));
-    time_scale_ = speed > 0 ? diameter / speed : 1.0;
-    read_options(n);
+    // Stage 3 of the prefetch pipeline where the cells hold a disk or more on average.
+    const bool second_records = double(n) >= double(cells_.cells_x()) * double(cells_.cells_y());
+    prefetch_.configure(prefetch_choice_ == "auto" ? n >= prefetch_from_disks : prefetch_choice_ == "on", second_records);
 
     queue_.reset(n);
     for (std::uint32_t i = 0; i < n; ++i) queue_.payload(i).inv_mass = state_.inv_mass[i];
@@ -135,10 +140,12 @@ void EventSolver::renumber_if_due() {
 }
 
 // Reads [backend.event]: tc (the TC model's duration), renumber_interval (events between
-// renumberings) and prefetch ("auto": from prefetch_from_disks disks on, "on", "off"). The
-// defaults of the last two suit every scene; the options are there to test the renumbering
-// and the prefetching (neither may change a bit of the result) and to measure their effect.
-void EventSolver::read_options(std::size_t n) {
+// renumberings), prefetch ("auto": from prefetch_from_disks disks on, "on", "off") and
+// cell_size (the cell edge, at least the largest contact distance 2 r_max; returned, nullopt
+// when not set). The defaults of the last three suit every scene; the options are there to
+// test the renumbering, the prefetching and the cells (none may change the events) and to
+// measure their effect.
+std::optional<double> EventSolver::read_options(double r_max) {
     // TC model (S. Luding and S. McNamara, Granular Matter 1 (1998) 113): a collision that
     // follows another collision of the same disk within t_c is treated as elastic. This stops
     // the inelastic collapse of e < 1 (infinitely many collisions in finite time, McNamara &
@@ -150,14 +157,14 @@ void EventSolver::read_options(std::size_t n) {
     // `tc_elastic` says how many collisions were made elastic.
     OptionReader options("event", &scene_);
     tc_ = options.get_double("tc", 1e-4 * time_scale_, 0, "a duration >= 0");
-    const std::int64_t renumber_interval = options.get_int("renumber_interval", CellOrderRenumbering::default_interval(n),
+    const std::int64_t renumber_interval = options.get_int("renumber_interval", CellOrderRenumbering::default_interval(state_.size()),
                                                            1, INT64_MAX, "a whole number of events >= 1");
-    const std::string prefetch = options.get_choice("prefetch", {"auto", "on", "off"}, "auto");
+    prefetch_choice_ = options.get_choice("prefetch", {"auto", "on", "off"}, "auto");
+    const std::optional<double> cell_edge = options.find_double(
+        "cell_size", 2 * r_max, "a cell edge >= the largest contact distance 2 r_max = " + round_trip_text(2 * r_max));
     options.refuse_unknown();
     renumbering_.set_interval(renumber_interval);
-    // Stage 3 of the pipeline where the cells hold a disk or more on average.
-    const bool second_records = double(n) >= double(cells_.cells_x()) * double(cells_.cells_y());
-    prefetch_.configure(prefetch == "auto" ? n >= prefetch_from_disks : prefetch == "on", second_records);
+    return cell_edge;
 }
 
 // The checks are shared with the plain solver (hard_disk_input.h): both refuse the same starts.

@@ -112,7 +112,7 @@ private:
     void cross_cell(std::uint32_t i, std::uint32_t border);
     // Restitution for a collision now, after the TC model (Luding & McNamara 1998).
     double restitution_now(double e, std::uint32_t i, std::uint32_t j);
-    void read_options(std::size_t n);
+    std::optional<double> read_options(double r_max);
     double kinetic_energy_now() const;
 
     // Disks are numbered internally in cell order, not in the scene's order: every array below
@@ -134,6 +134,7 @@ private:
     bool gravity_ = false;             // gx_ or gy_ non-zero
     double now_ = 0;
     double tc_ = 0;
+    std::string prefetch_choice_ = "auto";  // [backend.event] prefetch: "auto", "on" or "off"
     double time_scale_ = 1;            // typical time between collisions, for the guards
 
     // Progress guard: events since simulated time last advanced noticeably.

@@ -17,7 +17,10 @@
                                         a slope in log-log gives, the pair's second meeting, the
                                         stable root's errors, step on a step boundary, multi-contact
                                         steps, paired differences, a correlated series, the
-                                        Lyapunov exponent, and wording found false
+                                        Lyapunov exponent, the five seeds' spreads and
+                                        drift, the walls' collision rate, the grid fitted to
+                                        small disks, three routes to one
+                                        equilibrium, and wording found false
 
 An exercise is a "### Exercise" section of a chapter (docs/course/[1-9]-*.md): its first ```sh
 block is the command a student runs, with `collide` meaning the built program, in a scratch
@@ -345,6 +348,49 @@ def fact_reunion(collide, scratch):
     return []
 
 
+def enskog_excess(collide, scratch, boundary, cut, end, seeds=8):
+    """box_gas_1000 on event from seeds 1-8: the collision rate over [0, cut] and over [cut, end]
+    relative to Enskog's, 2 rho sigma g(sigma) sqrt(pi kT/m) with g(sigma) from Kolafa-Rottner's
+    Z = 2.1517 (chapter 2.4), minus 1, in %: mean and standard error over the seeds of each."""
+    text = set_key((SCENES / "box_gas_1000.toml").read_text(), "boundary", f'"{boundary}"')
+    eta, free = 1000 * np.pi * 0.25 / 2500, 999 if boundary == "periodic" else 1000
+    rate = lambda kt: 2 * 0.4 * (2.1517 - 1) / (2 * eta) * np.sqrt(np.pi * kt)
+    rows = []
+    for seed in range(1, seeds + 1):
+        counts = []
+        for duration in (cut, end):
+            f = run(collide, set_key(set_key(text, "seed", str(seed)), "duration", repr(duration)), "event", scratch,
+                    f"enskog_{boundary}{seed}_{duration}", frames=False)
+            kt = float(f["metrics/kinetic_energy"][0]) / free  # (e = 1: K is conserved)
+            counts.append(float(f["stats/counters"].attrs["events_pair"]))
+        early, late = counts[0], counts[1] - counts[0]
+        rows.append((2 * early / (1000 * cut) / rate(kt) - 1, 2 * late / (1000 * (end - cut)) / rate(kt) - 1))
+    r = 100 * np.array(rows)
+    return r.mean(axis=0), r.std(axis=0, ddof=1) / np.sqrt(seeds)
+
+
+def fact_enskog_walls(collide, scratch):
+    """Chapter 2.4: box_gas_1000's collision rate against Enskog's, with its walls and in a
+    periodic box, over the first 10 time units and over 10-60, eight seeds (mean +- SE)."""
+    page = re.sub(r"\s+", " ", (COURSE / "2-many-disks-exactly.md").read_text())
+    walls = re.search(r"the first 10 left out, give a rate \+([\d.]+) ± ([\d.]+) % above Enskog", page)
+    periodic = re.search(r"give \+([\d.]+) ± ([\d.]+) % over the same window, Enskog's rate within its error, "
+                         r"and −([\d.]+) ± ([\d.]+) % over the first 10 time units", page)
+    if not walls or not periodic:
+        return ["2-many-disks-exactly.md: section 2.4 does not state the measured excess of box_gas_1000's "
+                "collision rate over Enskog's, with walls and in a periodic box"]
+    failures = []
+    (_, wall_late), (_, wall_se) = enskog_excess(collide, scratch, "reflect", 10.0, 60.0)
+    (per_early, per_late), (per_early_se, per_late_se) = enskog_excess(collide, scratch, "periodic", 10.0, 60.0)
+    for what, said, measured in (("walls, 10-60", walls.groups(), (wall_late, wall_se)),
+                                 ("periodic, 10-60", periodic.groups()[:2], (per_late, per_late_se)),
+                                 ("periodic, 0-10", periodic.groups()[2:], (-per_early, per_early_se))):
+        if any(abs(float(s) - m) > 0.006 for s, m in zip(said, measured)):
+            failures.append(f"2-many-disks-exactly.md: {what}: the page says {said[0]} ± {said[1]} %, the runs "
+                            f"{measured[0]:.2f} ± {measured[1]:.2f} %")
+    return failures
+
+
 def fact_root_rounding():
     """Chapter 2, the stable root: its numbers on the checker's second pair (a gap of 1e-10), for the
     stable and the textbook forms, against the exact root and the root of the rounded coefficients."""
@@ -482,6 +528,131 @@ def fact_correlated_series(collide, scratch):
     return failures
 
 
+def periodic_gas_seeds(collide, scratch, drift):
+    """periodic_gas on event from seeds 1-5, 2 time units, its Maxwell draw's drift `drift`:
+    per seed the pressure counter P, Z with kT = K_int/(N - 1) (the centre-of-mass frame's
+    kinetic energy over the degrees of freedom), Z with kT = K/N, K_cm in units of kT, and kT."""
+    text = set_key((SCENES / "periodic_gas.toml").read_text(), "duration", "2.0")
+    text = text.replace("velocity = { maxwell = 1.0 }", f'velocity = {{ maxwell = 1.0, drift = "{drift}" }}')
+    rows = []
+    for seed in range(1, 6):
+        f = run(collide, set_key(text, "seed", str(seed)), "event", scratch, f"gas{seed}{drift}", frames=False)
+        c, m = f["stats/counters"].attrs, f["particles/mass"][:]
+        n, t = len(m), float(c["simulated_time"])
+        k_cm = (f["metrics/momentum_x"][0] ** 2 + f["metrics/momentum_y"][0] ** 2) / (2 * m.sum())
+        k, w = float(c["kinetic_integral"]) / t, float(c["virial_sum"]) / (2 * t)
+        kt = (k - k_cm) / (n - 1)
+        rows.append((float(c["pressure"]), 1 + w / (n * kt), 1 + w / k, k_cm / kt, kt))
+    return np.array(rows)
+
+
+def fact_replicates(collide, scratch):
+    """Chapter 4's five seeds: the spread of the pressure and of Z with each seed's own kT, the
+    centre of mass a raw draw leaves, and how far reading kT as K/N moves Z."""
+    page = re.sub(r"\s+", " ", (COURSE / "4-validating-a-solver.md").read_text())
+    spreads = re.search(r"P spreads by ([\d.]+) % \(standard deviation over the mean\) and Z by ([\d.]+) %", page)
+    drift = re.search(r"K_cm = ([\d.]+) to ([\d.]+) kT.*?moves Z by at most ([\d.]+) %", page)
+    temperatures = re.search(r"the seeds' temperatures, kT = ([\d.]+) to ([\d.]+),", page)
+    if not spreads or not drift or not temperatures:
+        return ["4-validating-a-solver.md: the five seeds' figure states no spread of P and of Z with each "
+                "seed's own kT, or no centre-of-mass drift of a raw draw"]
+    removed, raw = periodic_gas_seeds(collide, scratch, "removed"), periodic_gas_seeds(collide, scratch, "raw")
+    spread = lambda x: 100 * x.std(ddof=1) / x.mean()
+    measured = {"P's spread": (spreads.group(1), spread(removed[:, 0]), 0.05),
+                "Z's spread": (spreads.group(2), spread(removed[:, 1]), 0.05),
+                "the smallest K_cm": (drift.group(1), raw[:, 3].min(), 0.005),
+                "the largest K_cm": (drift.group(2), raw[:, 3].max(), 0.005),
+                "Z's shift with K/N": (drift.group(3), 100 * np.max(np.abs(raw[:, 2] / raw[:, 1] - 1)), 0.005),
+                "the lowest kT": (temperatures.group(1), removed[:, 4].min(), 0.0005),
+                "the highest kT": (temperatures.group(2), removed[:, 4].max(), 0.0005)}
+    failures = [f"4-validating-a-solver.md: {what} is {said} on the page, {value:.3f} in the runs"
+                for what, (said, value, slack) in measured.items() if abs(float(said) - value) > slack + 1e-9]
+    if not np.allclose(raw[:, 1], removed[:, 1], rtol=1e-4):
+        failures.append(f"periodic_gas: Z with a raw drift {raw[:, 1]} differs from Z without {removed[:, 1]}")
+    return failures
+
+
+def small_disks_in_cells(collide, scratch, cell):
+    """Exercise 5.3's run: polydisperse_1_100 with its ten large disks made small (2010 disks of
+    radius 0.01), 10 time units on event in cells of edge `cell`: the cell crossings per
+    collision and the processor time per collision (the least of two runs, the process's)."""
+    import resource
+    text = (SCENES / "stiff/polydisperse_1_100.toml").read_text()
+    text = text.replace("radius = 1.0\nmass = 100.0", "radius = 0.01\nmass = 0.01")
+    text = set_key(set_key(text, "duration", "10.0"), "output_interval", "10.0") + f"\n[backend.event]\ncell_size = {cell}\n"
+    seconds = []
+    for attempt in range(2):
+        before = resource.getrusage(resource.RUSAGE_CHILDREN).ru_utime
+        f = run(collide, text, "event", scratch, f"cells{cell}_{attempt}", frames=False)
+        seconds.append(resource.getrusage(resource.RUSAGE_CHILDREN).ru_utime - before)
+    c = f["stats/counters"].attrs
+    return float(c["events_cell"]) / float(c["events_pair"]), min(seconds) / float(c["events_pair"])
+
+
+def fact_fitted_grid(collide, scratch):
+    """Chapter 5, exercise 5.3: cells fitted to the small disks (0.02) against the large disks'
+    (2): the crossings per collision the page states, and that the fine grid costs more per
+    collision by the page's factor (within 2x: the time of a shared machine)."""
+    page = re.sub(r"\s+", " ", (COURSE / "5-making-it-fast.md").read_text())
+    crossings = re.search(r"([\d.]+) crossings per collision with cells of 2, ([\d.]+) with 0\.45, ([\d.]+) with 0\.02", page)
+    dearer = re.search(r"the grid fitted to the small disks is ([\d.]+) times \*dearer\*", page)
+    if not crossings or not dearer:
+        return ["5-making-it-fast.md: exercise 5.3 states no measured crossings per collision or cost of the grid "
+                "fitted to the small disks"]
+    measured = {cell: small_disks_in_cells(collide, scratch, cell) for cell in ("2", "0.45", "0.02")}
+    failures = [f"5-making-it-fast.md: {said} crossings per collision with cells of {cell} on the page, "
+                f"{measured[cell][0]:.3g} in the run"
+                for cell, said in zip(("2", "0.45", "0.02"), crossings.groups())
+                if not close(float(said), measured[cell][0], 0.01)]
+    ratio = measured["0.02"][1] / measured["2"][1]
+    if not 0.5 <= float(dearer.group(1)) / ratio <= 2:
+        failures.append(f"5-making-it-fast.md: cells of 0.02 cost {dearer.group(1)} times cells of 2 per collision "
+                        f"on the page, {ratio:.1f} times in the runs")
+    return failures
+
+
+SAMPLING_BOX = ["--set", "particles.0.count=72", "--set", "particles.0.columns=9", "--set", "particles.0.spacing=0.955",
+                "--set", "particles.0.radius=0.37125762464284556", "--set", "world.box=[0.0, 0.0, 9.0, 6.928203230275509]",
+                "--set", "run.duration=2000", "--set", "run.output_interval=10"]
+
+
+def route_pressure(collide, scratch, backend, name, extra=()):
+    """beta P d^2 and its batch-means error of the 72-disk box of chapter 4.6 on `backend`, with
+    the further `--set` options `extra`; the run file is scratch/NAME.h5."""
+    out = scratch / f"{name}.h5"
+    subprocess.run([collide, "run", str(SCENES / "physics/hard_disk_fluid.toml"), "--backend", backend,
+                    "--out", str(out), *SAMPLING_BOX, *extra], check=True, capture_output=True)
+    c = h5py.File(out, "r")["stats/counters"].attrs
+    return float(c["beta_pressure"]), float(c["beta_pressure_error"])
+
+
+def fact_sampling(collide, scratch):
+    """Chapter 4.6: the three routes' pressures and errors in its table, the z of each pair, and
+    ecmc's finite-size points at N = 72 (the 1152-disk ones are left to the page's command)."""
+    page = re.sub(r"\s+", " ", (COURSE / "4-validating-a-solver.md").read_text())
+    rows = {b: re.search(rf"\| `{b}`, [^|]*\| ([\d.]+) \| ([\d.]+) \|", page) for b in ("event", "ecmc", "metropolis")}
+    z = re.search(r"z = ([\d.]+) for `event` against `ecmc`, ([\d.]+) against `metropolis`, ([\d.]+) between", page)
+    small = re.search(r"2\.(\d+) and 2\.(\d+) \(± [\d.]+\) at N = 72", page)
+    if not all(rows.values()) or not z or not small:
+        return ["4-validating-a-solver.md: section 4.6 states no table of the three routes' pressures, their "
+                "z, or ecmc's pressure at N = 72"]
+    measured = {b: route_pressure(collide, scratch, b, f"route_{b}") for b in rows}
+    failures = [f"4-validating-a-solver.md: {b}: {rows[b].group(1)} ± {rows[b].group(2)} on the page, "
+                f"{p:.6g} ± {e:.3g} in the run" for b, (p, e) in measured.items()
+                if abs(float(rows[b].group(1)) - p) > 1e-5 or not close(float(rows[b].group(2)), e, 0.01)]
+    pairs = (("event", "ecmc"), ("event", "metropolis"), ("ecmc", "metropolis"))
+    for said, (a, b) in zip(z.groups(), pairs):
+        value = abs(measured[a][0] - measured[b][0]) / np.hypot(measured[a][1], measured[b][1])
+        if abs(float(said) - value) > 0.01:
+            failures.append(f"4-validating-a-solver.md: z = {said} for {a} against {b} on the page, {value:.2f} computed")
+    longer = ["--set", "run.duration=4000"]
+    for seed, digits in zip((1, 2), small.groups()):
+        p, _ = route_pressure(collide, scratch, "ecmc", f"ecmc_seed{seed}", longer + ["--set", f"seed={seed}"])
+        if abs(float(f"2.{digits}") - p) > 1e-4:
+            failures.append(f"4-validating-a-solver.md: ecmc at N = 72, seed {seed}: 2.{digits} on the page, {p:.5f} run")
+    return failures
+
+
 def fact_lyapunov():
     """Chapter 2.5: the Lyapunov exponent the page states, against one seed of the same
     tangent-dynamics measurement (docs/tools/lyapunov.py): within three of its per-seed spreads."""
@@ -505,6 +676,10 @@ def fact_lyapunov():
 def fact_wording():
     """Statements that are false as worded, found by earlier reviews."""
     wrong = {"1-one-collision.md": ["The second law fixes J"],  # the contact law (restitution) fixes J
+             # shadowing is proved for uniformly hyperbolic systems, not for hard disks; the hexatic
+             # has short-range positional order, not none
+             "2-many-disks-exactly.md": ["the computed trajectory is an exact trajectory", "no positional order",
+                                         "within the 0.9 % statistical error"],
              # the golden-ratio phases are fixed, not a random sample: their spread does not shrink
              "4-validating-a-solver.md": ["shrink the standard errors as 1/√n"]}
     return [f"{name}: \"{phrase}\" is false as worded"
@@ -519,8 +694,10 @@ def check_facts(collide):
                     + fact_cradle(collide, scratch) + fact_slope() + fact_reunion(collide, scratch)
                     + fact_root_rounding() + fact_step_boundary(collide, scratch)
                     + fact_multi_contact(collide, scratch) + fact_pairing(collide, scratch)
-                    + fact_correlated_series(collide, scratch) + fact_lyapunov() + fact_wording())
-    print("12 statements of the text measured")
+                    + fact_correlated_series(collide, scratch) + fact_lyapunov() + fact_wording()
+                    + fact_replicates(collide, scratch) + fact_enskog_walls(collide, scratch)
+                    + fact_fitted_grid(collide, scratch) + fact_sampling(collide, scratch))
+    print("16 statements of the text measured")
     return failures
 
 

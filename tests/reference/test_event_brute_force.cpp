@@ -114,10 +114,11 @@ double area_fraction(const Gas& gas) {
 // printed when the test runs). A real discrepancy (a missed or mistimed collision, a wrong
 // impulse) shows up at once as a difference of order the disk size or the speed, and usually
 // as a different collision count.
-// renumber_interval: the event solver's option of that name, if not empty.
-void expect_same_run(const Gas& gas, double t_end, const char* label, const std::string& renumber_interval = "") {
+// options: the event solver's [backend.event] options (renumber_interval, cell_size).
+using Options = std::map<std::string, std::string>;
+void expect_same_run(const Gas& gas, double t_end, const char* label, const Options& options = {}) {
     Scene scene = gas.scene;
-    if (!renumber_interval.empty()) scene.backend_options["event"]["renumber_interval"] = renumber_interval;
+    for (const auto& [key, value] : options) scene.backend_options["event"][key] = value;
     EventSolver fast;
     fast.load(scene, gas.initial);
     fast.advance_to(t_end);
@@ -165,7 +166,10 @@ TEST(EventBruteForce, PeriodicEqualDisksMatchPlainSolver) {
     const std::vector<Species> equal = {{0.5, 1.0}};
     const Gas gas = lattice_gas(Boundary::periodic, 8, 8, spacing_for(0.45, equal), equal, 2024);
     expect_same_run(gas, 2.5, "periodic");
-    expect_same_run(gas, 2.5, "periodic, renumbered every 7 events", "7");
+    expect_same_run(gas, 2.5, "periodic, renumbered every 7 events", {{"renumber_interval", "7"}});
+    // Cells of any edge >= 2 r_max hold every partner in the 3x3 around a disk: 2.6 (4 x 4
+    // cells) finds the same collisions with fewer crossings.
+    expect_same_run(gas, 2.5, "periodic, cells of 2.6", {{"cell_size", "2.6"}});
 }
 
 TEST(EventBruteForce, ReflectingBidisperseUnequalMassesMatchPlainSolver) {
@@ -176,11 +180,9 @@ TEST(EventBruteForce, ReflectingBidisperseUnequalMassesMatchPlainSolver) {
     const std::vector<Species> two = {{0.35, 1.0}, {0.5, 3.5}};
     const Gas gas = lattice_gas(Boundary::reflect, 10, 7, spacing_for(0.45, two), two, 77);
     expect_same_run(gas, 1.5, "reflecting, bidisperse");
-    expect_same_run(gas, 1.5, "reflecting, bidisperse, renumbered every 7 events", "7");
+    expect_same_run(gas, 1.5, "reflecting, bidisperse, renumbered every 7 events", {{"renumber_interval", "7"}});
+    expect_same_run(gas, 1.5, "reflecting, bidisperse, cells of 1.7", {{"cell_size", "1.7"}});
 }
-
-// [backend.event] options for a run.
-using Options = std::map<std::string, std::string>;
 
 // The state (in the scene's order) and the collision count of the event solver at time t.
 std::pair<ParticleState<double>, std::int64_t> final_state(const Gas& gas, double t, const Options& options) {

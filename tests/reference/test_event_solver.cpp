@@ -137,6 +137,17 @@ TEST(EventSolverInput, RenumberIntervalMustBeAPositiveWholeNumber) {
     }
 }
 
+// Cells narrower than the largest contact distance would hide partners outside the 3x3 cells
+// around a disk: such a cell_size is refused, naming the smallest allowed edge.
+TEST(EventSolverInput, CellSizeBelowTheContactDistanceIsRefused) {
+    for (const char* bad : {"0.99", "0", "-1", "wide"}) {
+        Scene scene = box_scene(10, 10);
+        scene.backend_options["event"]["cell_size"] = bad;
+        expect_error([&] { run_to(scene, make_state({{5, 5, 0, 0, 0.5, 1}}), 1); },
+                     {"cell_size", bad, "largest contact distance 2 r_max = 1"});
+    }
+}
+
 TEST(EventSolverInput, PrefetchMustBeAutoOnOrOff) {
     for (const char* bad : {"yes", "1", "", "On"}) {
         Scene scene = box_scene(10, 10);
