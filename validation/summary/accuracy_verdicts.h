@@ -10,7 +10,7 @@
 //    even error - 1.96 SE exceeds the accuracy (else more replicates could still clear it);
 //  - checked only: scenes it runs with no error against the reference (conservation, overlaps),
 //    each with the reason: the detail of its comparison check left out (the reference cannot run
-//    the scene, ...), else that the suite compares the scene with nothing;
+//    the scene, ...), else that the suite sets no `compare` for the scene;
 //  - cannot run: scenes whose every `run` check is left out (the backend declined the scene);
 //  - a variant (NAME[preset]) judged against its own tolerances: how many of its checks fail under
 //    the limits of its base backend's tuned preset, by check.
