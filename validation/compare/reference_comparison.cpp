@@ -366,7 +366,7 @@ std::optional<std::string> contacts_unknown(const Group& g) {
 }
 
 // The statistic a many-body scene is compared by, seed by seed, where Z is not the point's
-// error (docs/validation.md, "Scenes judged seed by seed"): a cooling gas (e < 1) by the cooling
+// error (docs/validation.md, "Scenes compared seed by seed"): a cooling gas (e < 1) by the cooling
 // time tau of Haff's law T(t) = T0 / (1 + t / tau)^2 fitted to each run (haff_cooling_time,
 // physics_rows.h): the one number its inelastic dynamics sets; a scene whose Z is left out
 // (polydisperse: the stones among the gas) by its collision rate. None for the others.
