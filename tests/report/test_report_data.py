@@ -532,6 +532,46 @@ class EveryZRecomputesFromThePage(unittest.TestCase):
             recompute_every_z(self, "z = +2.86 from 14.845 ± 0.085 against 14.819 ± 0")
 
 
+class ScenesComparedSeedBySeed(unittest.TestCase):
+    """Issue 48, item 7: the cooling gas (by its Haff cooling time τ) and the gas past the stones
+    (by its collision rate ν) earn a use for / not for with the paired difference and its SE; a
+    scene still checked only says why (summary.json verdicts.B.accuracy, accuracy_verdicts.h)."""
+
+    ACCURACY = {
+        "use_for": [{"scene": "inelastic_gas", "error_kind": "|tau - tau_ref| / tau_ref", "accuracy": 0.005,
+                     "dt": 0.002, "error": 0.0011, "standard_error": 0.0017, "replicates": 8}],
+        "not_for": [{"scene": "inelastic_gas", "error_kind": "|tau - tau_ref| / tau_ref", "accuracy": 0.005,
+                     "dt_min": 0.004, "dt_max": 0.004, "dt": 0.004, "error": -0.012, "standard_error": 0.002,
+                     "sigmas": 6.0, "replicates": 8, "resolved": True},
+                    {"scene": "stones_and_gas", "error_kind": "|nu - nu_ref| / nu_ref", "accuracy": 0.005,
+                     "dt_min": 0.001, "dt_max": 0.004, "dt": 0.004, "error": 0.0168, "standard_error": 0.0056,
+                     "sigmas": 3.0, "replicates": 6, "resolved": True}],
+        "checked_only": ["far"], "checked_only_reasons": {"far": "the reference backend cannot run this scene: gravity"}}
+
+    def test_not_for_names_the_statistic_its_paired_difference_and_z(self):
+        text = verdicts.not_for_text(self.ACCURACY)
+        self.assertEqual(text[0], "inelastic_gas dt 0.004: τ -1.2 % ± 0.2 % (z = -6.00, 8 seeds paired), beyond")
+        self.assertEqual(text[1], "stones_and_gas dt 0.001–0.004: ν +1.68 % ± 0.56 % (z = +3.00, 6 seeds paired), beyond")
+        for t in text:  # z recomputes from the difference and SE printed beside it
+            d, se, z = re.search(r"([+-][\d.]+) % ± ([\d.]+) % \(z = ([+-][\d.]+)", t).groups()
+            self.assertAlmostEqual(float(d) / float(se), float(z), places=1)
+        self.assertNotIn("r_min", " ".join(text))
+
+    def test_use_for_says_which_statistic_earned_it(self):
+        self.assertEqual(verdicts.use_for_text(self.ACCURACY), ["inelastic_gas: dt ≤ 0.002 (τ, paired over 8 seeds)"])
+
+    def test_a_scene_checked_only_says_why(self):
+        text = verdicts.checked_only_text(["far"], self.ACCURACY["checked_only_reasons"])
+        self.assertEqual(text, ["far: checked only for conservation and overlaps, not against the reference "
+                                "(the reference backend cannot run this scene: gravity)"])
+
+    def test_paired_lines_have_their_own_order_class(self):
+        self.assertEqual(digest.statistic_of("|tau - tau_ref| / tau_ref"), "τ")
+        self.assertEqual(digest.statistic_of("|nu - nu_ref| / nu_ref"), "ν")
+        self.assertEqual(digest.statistic_of("|Z - Z_ref| / Z_ref"), "Z")
+        self.assertIsNone(digest.statistic_of("trajectory error / r_min"))
+
+
 class HtmlFromTemplates(unittest.TestCase):
     """The pages are laid out by templates/ (jinja2, autoescaped); the Python side hands them
     data and writes no markup of its own."""

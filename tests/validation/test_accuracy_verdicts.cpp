@@ -149,9 +149,61 @@ TEST(AccuracyVerdicts, CostAtTheStatedAccuracyIsInterpolatedOrNotReached) {
 
 TEST(AccuracyVerdicts, StatedAccuracyFollowsTheErrorKind) {
     VerdictThresholds t;
+    t.cooling_accuracy = 7e-3;
+    t.collision_rate_accuracy = 9e-3;
     EXPECT_DOUBLE_EQ(*stated_accuracy("trajectory error / r_min", t), 1e-2);
     EXPECT_DOUBLE_EQ(*stated_accuracy("|Z - Z_ref| / Z_ref", t), 5e-3);
+    EXPECT_DOUBLE_EQ(*stated_accuracy("|tau - tau_ref| / tau_ref", t), 7e-3);
+    EXPECT_DOUBLE_EQ(*stated_accuracy("|nu - nu_ref| / nu_ref", t), 9e-3);
     EXPECT_FALSE(stated_accuracy("something else", t));
+}
+
+// A cooling gas compared seed by seed: the point's error is |tau difference|, the verdict
+// states the signed paired difference (not Z's, which the point also carries) against the
+// cooling accuracy.
+WorkPrecisionPoint paired_point(double dt, double relative, double se) {
+    WorkPrecisionPoint p = pressure_point(dt, 0.5, 0.001);  // a Z far off: not what is judged
+    p.replicates = 8;
+    StatisticalDifference d;
+    d.paired = true;
+    d.relative = relative;
+    d.relative_standard_error = se;
+    d.replicates = 8;
+    p.paired = d;
+    p.error = std::fabs(relative);
+    p.error_standard_error = se;
+    return p;
+}
+
+TEST(AccuracyVerdicts, ACoolingGasEarnsUseForAndNotForFromItsPairedCoolingTime) {
+    WorkPrecisionLine line = pressure_line("step", {paired_point(0.004, -0.012, 0.002), paired_point(0.001, 0.001, 0.0006)});
+    line.scene = "inelastic_gas";
+    line.error_kind = "|tau - tau_ref| / tau_ref";
+    const std::vector<CheckResult> checks = {check("step", "inelastic_gas", "run", 0, 0)};
+    const AccuracyVerdict v = accuracy_verdicts("event", checks, {line}, VerdictThresholds{}).at("step");
+    EXPECT_TRUE(v.checked_only.empty());
+    ASSERT_EQ(v.use_for.size(), 1u);  // 0.1 % + 1.96 * 0.06 % within 0.5 %
+    EXPECT_EQ(v.use_for[0].scene, "inelastic_gas");
+    EXPECT_DOUBLE_EQ(v.use_for[0].dt, 0.001);
+    ASSERT_EQ(v.not_for.size(), 1u);  // -1.2 % +- 0.2 %: beyond 0.5 % at 95 %
+    EXPECT_DOUBLE_EQ(v.not_for[0].error, -0.012);
+    EXPECT_EQ(v.not_for[0].replicates, 8u);
+    EXPECT_TRUE(v.not_for[0].resolved);
+    VerdictThresholds loose;
+    loose.cooling_accuracy = 0.02;  // the cooling accuracy, not Z's, decides
+    EXPECT_TRUE(accuracy_verdicts("event", checks, {line}, loose).at("step").not_for.empty());
+}
+
+TEST(AccuracyVerdicts, CheckedOnlyScenesSayWhy) {
+    CheckResult refused = check("step", "far", "collision_rate", 0, 0, CheckStatus::left_out);
+    refused.detail = "the reference backend cannot run this scene: gravity with stones";
+    const std::vector<CheckResult> checks = {check("step", "far", "run", 0, 0), refused,
+                                             check("step", "near", "run", 0, 0), check("event", "near", "run", 0, 0)};
+    const auto v = accuracy_verdicts("event", checks, {}, VerdictThresholds{});
+    EXPECT_EQ(v.at("step").checked_only, (std::vector<std::string>{"far", "near"}));
+    EXPECT_EQ(v.at("step").checked_only_reasons.at("far"), refused.detail);
+    EXPECT_NE(v.at("step").checked_only_reasons.at("near").find("no `compare` for this scene"), std::string::npos);
+    EXPECT_NE(v.at("event").checked_only_reasons.at("near").find("the reference"), std::string::npos);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "validation/compare/convergence_order.h"
+#include "validation/compare/physics_rows.h"
 #include "validation/compare/predictability_horizon.h"
 #include "validation/compare/reference_runs.h"
 #include "validation/record/check_table.h"
@@ -364,6 +365,64 @@ std::optional<std::string> contacts_unknown(const Group& g) {
     return std::nullopt;
 }
 
+// The statistic a many-body scene is compared by, seed by seed, where Z is not the point's
+// error (docs/validation.md, "Scenes compared seed by seed"): a cooling gas (e < 1) by the cooling
+// time tau of Haff's law T(t) = T0 / (1 + t / tau)^2 fitted to each run (haff_cooling_time,
+// physics_rows.h): the one number its inelastic dynamics sets; a scene whose Z is left out
+// (polydisperse: the stones among the gas) by its collision rate. None for the others.
+struct PairedStatistic {
+    std::string error_kind;
+    std::function<double(const CaseResult&)> value;
+    bool counts_contacts = false;  // unknown where the solver does not report its contacts
+};
+std::optional<PairedStatistic> paired_statistic(const SceneFeatures& features) {
+    if (features.restitution < 1) {
+        const bool conserved = !momentum_left_out(features);
+        return PairedStatistic{"|tau - tau_ref| / tau_ref", [conserved](const CaseResult& r) {
+                                   return haff_cooling_time(r, r.duration, r.disks, conserved);
+                               }};
+    }
+    if (pressure_left_out(features)) return PairedStatistic{"|nu - nu_ref| / nu_ref", collision_rate, true};
+    return std::nullopt;
+}
+
+// The statistic's difference from the reference, paired by seed: a case and the reference's
+// case of the same seed start from one configuration, so their difference carries only what
+// the dynamics adds, not the scatter of initial states that the replicate means carry (common
+// random numbers: Glasserman, Monte Carlo Methods in Financial Engineering (2003), sec. 4.2).
+// The relative difference is mean(d) / mean(ref) with SE se(d) / |mean(ref)|. Empty with fewer
+// than 2 pairs of finished, finite values.
+std::optional<StatisticalDifference> paired_difference(const Group& g, const Group& ref,
+                                                       const std::function<double(const CaseResult&)>& value,
+                                                       double z_max) {
+    std::map<std::uint64_t, double> reference_by_seed;
+    for (const CaseResult* r : ref.cases)
+        if (r->finished()) reference_by_seed[r->spec.seed] = value(*r);
+    std::vector<double> a, b, d;
+    for (const CaseResult* r : g.cases) {
+        const auto it = reference_by_seed.find(r->spec.seed);
+        if (!r->finished() || it == reference_by_seed.end()) continue;
+        const double v = value(*r);
+        if (!std::isfinite(v) || !std::isfinite(it->second)) continue;
+        a.push_back(v), b.push_back(it->second), d.push_back(v - it->second);
+    }
+    const MeanAndError ma = mean_and_error(a), mb = mean_and_error(b), md = mean_and_error(d);
+    if (d.size() < 2 || mb.mean == 0) return std::nullopt;
+    StatisticalDifference s;
+    s.paired = true;
+    s.mean = ma.mean, s.standard_error = ma.standard_error;
+    s.reference = mb.mean, s.reference_standard_error = mb.standard_error;
+    s.difference = md.mean, s.difference_standard_error = md.standard_error;
+    s.relative = md.mean / mb.mean;
+    s.relative_standard_error = md.standard_error / std::fabs(mb.mean);
+    s.sigmas = md.standard_error > 0 ? std::fabs(md.mean) / md.standard_error : (md.mean == 0 ? 0 : INFINITY);
+    s.resolved = s.sigmas >= resolved_standard_errors;
+    s.upper_limit_95 = std::fabs(s.relative) + 1.96 * s.relative_standard_error;
+    s.detectable = z_max * s.relative_standard_error;
+    s.replicates = s.reference_replicates = d.size();
+    return s;
+}
+
 // The statistics comparison of a many-body group: pressure, collision_rate and
 // speed_distribution against the reference, each appended to `checks`. The work-precision
 // point gets the judged differences of the replicate means (what the check judges and the
@@ -390,7 +449,9 @@ void compare_statistics(const Group& g, const Group& ref, const SceneFeatures& f
     if (pressure.status != CheckStatus::left_out) point.pressure = statistical_difference(z, pressure, tol.statistics_z);
     if (rate.status != CheckStatus::left_out) point.collision_rate = statistical_difference(nu, rate, tol.statistics_z);
     checks.push_back(speed_distribution_check(g, ref, tol.speed_ks_p_value));
-    if (point.pressure)
+    if (const auto statistic = paired_statistic(features); statistic && !(statistic->counts_contacts && contacts_unknown(g)))
+        point.paired = paired_difference(g, ref, statistic->value, tol.statistics_z);
+    if (point.pressure || point.paired)
         for (const CaseResult* r : g.cases)
             if (r->finished()) seconds.push_back(r->wall_seconds / r->duration);
 }
@@ -405,23 +466,29 @@ WorkPrecisionPoint sweep_point(const Group& g) {
     return point;
 }
 
-// Sets the point's error and run time: Z's relative difference where it was judged, else the
-// mean of the per-seed trajectory errors. False when nothing was measured (no point).
-bool measure_point(WorkPrecisionPoint& point, const std::vector<double>& seconds, const std::vector<double>& errors) {
-    if (point.pressure && !seconds.empty()) {
-        point.error = std::fabs(point.pressure->relative);
-        point.error_standard_error = point.pressure->relative_standard_error;
-        point.replicates = point.pressure->replicates;
+// Sets the point's error and run time: the paired statistic's relative difference where the
+// scene has one (`paired_kind`, paired_statistic), else Z's where it was judged, else the mean of
+// the per-seed trajectory errors. Returns the error's kind, "" when nothing was measured (no point).
+std::string measure_point(WorkPrecisionPoint& point, const std::string& paired_kind, const std::vector<double>& seconds,
+                          const std::vector<double>& errors) {
+    std::string kind;
+    // (A scene with a paired statistic never falls back to Z: one line holds one kind of error.)
+    if (const auto& d = paired_kind.empty() ? point.pressure : point.paired; d && !seconds.empty()) {
+        point.error = std::fabs(d->relative);
+        point.error_standard_error = d->relative_standard_error;
+        point.replicates = d->replicates;
+        kind = point.paired ? paired_kind : "|Z - Z_ref| / Z_ref";
     } else if (!errors.empty()) {
         const auto e = mean_and_error(errors);
         point.error = e.mean;
         point.error_standard_error = e.standard_error;
         point.replicates = errors.size();
+        kind = "trajectory error / r_min";
     } else {
-        return false;
+        return "";
     }
     point.seconds_per_time_unit = mean_and_error(seconds).mean;
-    return true;
+    return kind;
 }
 
 // The work-precision lines, one per (scene, backend) in first-seen order, each with the
@@ -488,8 +555,9 @@ Comparisons compare_with_reference(const Suite& suite, const std::vector<CaseRes
         else
             compare_statistics(g, *ref, features[spec.scene_index], tol, *declared.at(spec.backend), out.checks, point,
                                seconds);
-        if (measure_point(point, seconds, errors))
-            lines.add(spec.scene, spec.backend, trajectory ? "trajectory error / r_min" : "|Z - Z_ref| / Z_ref", point);
+        const auto paired = trajectory ? std::nullopt : paired_statistic(features[spec.scene_index]);
+        if (const std::string kind = measure_point(point, paired ? paired->error_kind : "", seconds, errors); !kind.empty())
+            lines.add(spec.scene, spec.backend, kind, point);
     }
     out.work_precision = lines.fitted();
     return out;

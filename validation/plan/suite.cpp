@@ -314,12 +314,15 @@ VerdictThresholds read_verdict_thresholds(const toml::table& root, const std::st
     if (!node) return t;
     if (!node->is_table()) TomlFields(root, "", file).fail("verdicts", "a table");
     const TomlFields v(*node->as_table(), "verdicts", file);
-    v.allow_only({"loose_tolerance_ratio", "energy_drift", "pressure_sigmas", "trajectory_accuracy", "pressure_accuracy"});
+    v.allow_only({"loose_tolerance_ratio", "energy_drift", "pressure_sigmas", "trajectory_accuracy", "pressure_accuracy",
+                 "cooling_accuracy", "collision_rate_accuracy"});
     t.loose_tolerance_ratio = optional_positive(v, "loose_tolerance_ratio").value_or(t.loose_tolerance_ratio);
     t.energy_drift = optional_positive(v, "energy_drift").value_or(t.energy_drift);
     t.pressure_sigmas = optional_positive(v, "pressure_sigmas").value_or(t.pressure_sigmas);
     t.trajectory_accuracy = optional_positive(v, "trajectory_accuracy").value_or(t.trajectory_accuracy);
     t.pressure_accuracy = optional_positive(v, "pressure_accuracy").value_or(t.pressure_accuracy);
+    t.cooling_accuracy = optional_positive(v, "cooling_accuracy").value_or(t.cooling_accuracy);
+    t.collision_rate_accuracy = optional_positive(v, "collision_rate_accuracy").value_or(t.collision_rate_accuracy);
     return t;
 }
 

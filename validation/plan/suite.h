@@ -88,9 +88,12 @@ struct VerdictThresholds {
     double energy_drift = 0.01;        // a largest energy drift of at least this (1 %)
     double pressure_sigmas = 3;        // a resolved pressure difference of at least this many SE
     // The accuracy a backend's "use for" verdict states (accuracy_verdicts.h): its trajectory
-    // error within this many r_min, its Z within this relative difference of the reference's.
+    // error within this many r_min, its Z, a cooling gas's Haff cooling time tau and (where Z is
+    // left out) its collision rate within these relative differences of the reference's.
     double trajectory_accuracy = 1e-2;
     double pressure_accuracy = 5e-3;
+    double cooling_accuracy = 5e-3;
+    double collision_rate_accuracy = 5e-3;
 };
 
 struct Suite {

@@ -32,6 +32,12 @@ struct StatisticalDifference {
     double predicted = std::numeric_limits<double>::quiet_NaN();  // the stepped rule's absolute shift
     double predicted_uncertainty = std::numeric_limits<double>::quiet_NaN();
     std::size_t replicates = 0, reference_replicates = 0;
+    // Paired by seed (compare/reference_comparison.cpp, "paired_difference"): each seed of the
+    // backend started from the reference's configuration of that seed, so `relative` and its
+    // standard error come from the per-seed differences (their mean `difference` and its SE),
+    // not from the two means' scatters; replicates = reference_replicates = the pairs.
+    bool paired = false;
+    double difference = 0, difference_standard_error = 0;
 };
 constexpr double resolved_standard_errors = 2.0;
 
@@ -46,11 +52,17 @@ struct WorkPrecisionPoint {
     double error_standard_error = 0;
     std::size_t replicates = 0;
     std::optional<StatisticalDifference> pressure, collision_rate;  // statistical scenes
+    // The scene's own statistic, paired by seed, where the point's error is not Z (a cooling
+    // gas: Haff's cooling time; a scene whose Z is left out: the collision rate). Its error kind
+    // names it (paired_error_kind in reference_comparison.cpp).
+    std::optional<StatisticalDifference> paired;
 };
 
 struct WorkPrecisionLine {
     std::string scene, backend;
-    std::string error_kind;            // "trajectory error / r_min" or "|Z - Z_ref| / Z_ref"
+    // "trajectory error / r_min", "|Z - Z_ref| / Z_ref", or a paired statistic's
+    // "|tau - tau_ref| / tau_ref" (Haff cooling time) or "|nu - nu_ref| / nu_ref" (collision rate)
+    std::string error_kind;
     std::vector<WorkPrecisionPoint> points;
     ConvergenceOrder order;            // on the asymptotic range (convergence_order.h)
 };

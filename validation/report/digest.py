@@ -285,6 +285,16 @@ def digest(summary, exclude_quantised=False):
 
 OBSERVABLES = ("pressure", "collision_rate")
 
+# The statistic a relative error kind measures (reference_comparison.cpp, the error kinds): Z,
+# or for the scenes compared seed by seed (summary.json points[].paired) a cooling gas's Haff
+# cooling time τ or the collision rate ν where Z is not measured.
+STATISTICS = {"Z_ref": "Z", "tau_ref": "τ", "nu_ref": "ν"}
+
+
+def statistic_of(error_kind):
+    """'Z', 'τ' or 'ν' for a relative statistical error kind, None for a trajectory error."""
+    return next((s for key, s in STATISTICS.items() if key in error_kind), None)
+
 
 def statistical_points(summary, scene, observable):
     """Per backend, the work-precision points of a statistical observable: dt, run time per time
@@ -321,13 +331,13 @@ def floor_kind(summary, backend):
 
 
 def orders(summary):
-    """One per work-precision line: {'scene', 'backend', 'class' ('trajectory' or 'Z'), 'order',
+    """One per work-precision line: {'scene', 'backend', 'class' ('trajectory', 'Z', 'τ' or 'ν'), 'order',
     'order_se', 'used', 'points', 'h_coarse', 'h_fine', 'floor', 'bending', 'note', 'kind'}."""
     out = []
     for line in summary["work_precision"]:
         r = line.get("order_range") or {}
         out.append({"scene": line["scene"], "backend": line["backend"],
-                    "class": "trajectory" if line["error_kind"].startswith("trajectory") else "Z",
+                    "class": statistic_of(line["error_kind"]) or "trajectory",
                     "order": line.get("order"), "order_se": line.get("order_standard_error"),
                     "used": r.get("used", 0), "points": r.get("points", 0), "h_coarse": r.get("h_coarse"),
                     "h_fine": r.get("h_fine"), "floor": r.get("floor"), "bending": bool(r.get("bending")),

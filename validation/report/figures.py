@@ -385,8 +385,9 @@ def work_precision(summary, scene, digest, aliases, fits=None):
     labels = []
     if fits is None:
         fits = {(f["scene"], f["backend"]): f for f in digest.orders(summary)}
-    statistical = not lines[0]["error_kind"].startswith("trajectory")
-    stats = digest.statistical_points(summary, scene, "pressure") if statistical else {}
+    statistic = digest.statistic_of(lines[0]["error_kind"])  # Z, or τ / ν paired by seed
+    statistical = statistic is not None
+    stats = digest.statistical_points(summary, scene, "pressure" if statistic == "Z" else "paired") if statistical else {}
     for line in lines:
         b = line["backend"]
         label = alias_label(b, aliases)
@@ -403,8 +404,12 @@ def work_precision(summary, scene, digest, aliases, fits=None):
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("wall time per simulated time unit [s]")
-    ax.set_ylabel("|Z − Z_ref| / Z_ref (means ± SE) [dimensionless]" if statistical
-                  else "trajectory error / r_min, mean ± SE [dimensionless]")
+    if statistic == "Z":
+        ax.set_ylabel("|Z − Z_ref| / Z_ref (means ± SE) [dimensionless]")
+    elif statistical:
+        ax.set_ylabel(f"|{statistic} − {statistic}_ref| / {statistic}_ref (per-seed differences ± SE) [dimensionless]")
+    else:
+        ax.set_ylabel("trajectory error / r_min, mean ± SE [dimensionless]")
     ax.set_title(tex(f"{scene}: work against precision"))
     ax.grid(True, which="both", alpha=0.3)
     handles, _ = ax.get_legend_handles_labels()

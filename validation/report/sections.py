@@ -25,7 +25,9 @@ def digest_table(a):
             for r in digest_rows(a)]
     t = a.summary["verdict_thresholds"]
     accuracy = {"z": t.get("confidence_z", 1.96), "trajectory": f"{t.get('trajectory_accuracy', 1e-2):.2g}",
-                "pressure": f"{100 * t.get('pressure_accuracy', 5e-3):.2g}"}
+                "pressure": f"{100 * t.get('pressure_accuracy', 5e-3):.2g}",
+                "cooling": f"{100 * t.get('cooling_accuracy', 5e-3):.2g}",
+                "collision_rate": f"{100 * t.get('collision_rate_accuracy', 5e-3):.2g}"}
     return {"rows": rows, "checks": f"{c['pass']} passed, {c['fail']} failed, {c['left_out']} left out",
             "accuracy": accuracy, "reference": a.summary["reference"]}
 
@@ -134,10 +136,15 @@ def orders(a):
             measure = "trajectory error / r_min, mean ± SE over phase replicates"
             points = ["; ".join(f"{p['dt']:g}: {fmt(p['error'])} ± {fmt(p.get('error_standard_error'))}; "
                                 f"{fmt(p['seconds_per_time_unit'])} s" for p in line["points"])]
-        else:
+        elif fit["class"] == "Z":
             measure = "(Z − Z_ref) / Z_ref, means ± combined SE"
             points = [statistical_point_text(p)
                       for p in digest.statistical_points(s, line["scene"], "pressure").get(b, [])]
+        else:  # τ or ν, paired by seed (summary.json points[].paired)
+            x = fit["class"]
+            measure = f"({x} − {x}_ref) / {x}_ref, mean ± SE of the per-seed differences"
+            points = [statistical_point_text(p)
+                      for p in digest.statistical_points(s, line["scene"], "paired").get(b, [])]
         out.append({"scene": line["scene"], "backend": b, "same_as": a.aliases.get(b), "measure": measure,
                     "points": points, "order": digest.describe_order(fit), "floor": digest.describe_floor(fit)})
     return out

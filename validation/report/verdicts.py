@@ -86,27 +86,45 @@ def scene_status(summary, backend, by_combination=None):
 
 
 def use_for_text(accuracy):
-    """'periodic_gas: dt ≤ 0.002', one per measured scene, from summary.json's
+    """'periodic_gas: dt ≤ 0.002', one per measured scene ('inelastic_gas: dt ≤ 0.002 (τ)' where
+    the scene is judged by a statistic other than Z or the trajectory), from summary.json's
     verdicts.B.accuracy.use_for (accuracy_verdicts.h: decided there at 95 % confidence against
     the accuracy the digest's header states)."""
-    return [f"{u['scene']}: dt ≤ {u['dt']:.2g}" for u in accuracy.get("use_for", [])]
+    out = []
+    for u in accuracy.get("use_for", []):
+        s = digest.statistic_of(u["error_kind"])
+        by = f" ({s}, paired over {u['replicates']} seeds)" if s and s != "Z" else ""
+        out.append(f"{u['scene']}: dt ≤ {u['dt']:.2g}{by}")
+    return out
 
 
 def not_for_text(accuracy):
     """One entry per scene where some dt is not shown within the stated accuracy, naming the
-    measured error (the signed Z bias) with its SE, z and replicates: 'periodic_gas dt
-    0.0048–0.006: Z +1.15 % ± 0.217 % (z = +5.30, 64 rep.), beyond'; 'undecided' where the
-    error bar is too wide to tell (more replicates could clear it)."""
+    measured error (the signed relative bias of Z, of a cooling gas's τ or of ν) with its SE, z
+    and replicates: 'periodic_gas dt 0.0048–0.006: Z +1.15 % ± 0.217 % (z = +5.30, 64 rep.),
+    beyond'; 'stones_and_gas dt 0.004: ν +2.2 % ± 0.5 % (z = +4.40, 6 seeds paired), beyond';
+    'undecided' where the error bar is too wide to tell (more replicates could clear it)."""
     out = []
     for n in accuracy.get("not_for", []):
         span = f"{n['dt']:.2g}" if n["dt_min"] == n["dt_max"] else f"{n['dt_min']:.2g}–{n['dt_max']:.2g}"
-        if "Z_ref" in n["error_kind"]:
+        statistic = digest.statistic_of(n["error_kind"])
+        if statistic:
             z = f"z = {n['error'] / n['standard_error']:+.2f}, " if n["standard_error"] else ""
-            value = f"Z {100 * n['error']:+.3g} % ± {100 * n['standard_error']:.3g} % ({z}{n['replicates']} rep.)"
+            count = f"{n['replicates']} rep." if statistic == "Z" else f"{n['replicates']} seeds paired"
+            value = (f"{statistic} {100 * n['error']:+.3g} % ± {100 * n['standard_error']:.3g} % "
+                     f"({z}{count})")
         else:
             value = f"{n['error']:.2g} ± {n['standard_error']:.2g} r_min ({n['replicates']} rep.)"
         out.append(f"{n['scene']} dt {span}: {value}, {'beyond' if n['resolved'] else 'undecided'}")
     return out
+
+
+def checked_only_text(scenes, reasons):
+    """'stones: checked only for conservation and overlaps, not against the reference (the
+    reference backend cannot run this scene: ...)', one per scene, the reason from summary.json's
+    verdicts.B.accuracy.checked_only_reasons (accuracy_verdicts.h)."""
+    return [f"{s}: checked only for conservation and overlaps, not against the reference"
+            + (f" ({reasons[s]})" if reasons.get(s) else "") for s in scenes]
 
 
 def preset_text(accuracy):
@@ -159,9 +177,10 @@ def verdict(summary, row, aliases, by_combination=None, cheapest=None):
         not_for.append("fails its checks on " + ", ".join(failed))
     use_for = use_for_text(accuracy)
     checked = [s for s in accuracy.get("checked_only", []) if s in trusted]
-    if checked:
-        use_for.append(("every scene it runs (exact by construction; conservation checked)" if b == summary["reference"]
-                        else ", ".join(checked) + ": checked only for conservation and overlaps, not against the reference"))
+    if checked and b == summary["reference"]:
+        use_for.append("every scene it runs (exact by construction; conservation checked)")
+    elif checked:
+        use_for += checked_only_text(checked, accuracy.get("checked_only_reasons") or {})
     cannot_run = ", ".join(accuracy.get("cannot_run") or cannot) or "—"
     return {"backend": b, "verdict": "; ".join(parts), "trusted": "; ".join(use_for) or "none",
             "use_for": use_for, "not_for_list": not_for, "not_for": "; ".join(not_for) or "—", "cannot_run": cannot_run,

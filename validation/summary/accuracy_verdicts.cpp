@@ -9,9 +9,12 @@
 namespace collide::validation {
 namespace {
 
-// The point's error as the verdict states it: the signed relative pressure bias where the line
-// measures Z (its error is |bias|), else the error itself.
-double signed_error(const WorkPrecisionPoint& p) { return p.pressure ? p.pressure->relative : p.error; }
+// The point's error as the verdict states it: the signed relative difference where the line
+// measures a statistic (a paired one, else Z; its error is |difference|), else the error itself.
+double signed_error(const WorkPrecisionPoint& p) {
+    if (p.paired) return p.paired->relative;
+    return p.pressure ? p.pressure->relative : p.error;
+}
 
 bool within(const WorkPrecisionPoint& p, double accuracy) {
     return p.error + confidence_95 * p.error_standard_error <= accuracy;
@@ -111,6 +114,17 @@ std::optional<UnderPresetLimits> under_base_limits(const std::string& variant, c
     return u;
 }
 
+// Why the backend's scene has no error against the reference: the detail of a comparison check
+// of it that was left out, else that the suite asks for no comparison of the scene.
+std::string why_checked_only(const std::string& backend, const std::string& scene, const std::vector<CheckResult>& checks) {
+    static const std::set<std::string> comparisons = {"trajectory_error", "pressure", "collision_rate"};
+    for (const CheckResult& c : checks)
+        if (c.backend == backend && c.scene == scene && comparisons.count(c.check) && c.status == CheckStatus::left_out &&
+            !c.detail.empty())
+            return c.detail;
+    return "the suite sets no `compare` for this scene; where it has physics rows, they hold it against published values";
+}
+
 // Scenes whose every `run` check of the backend is left out, and scenes it ran.
 void scenes_run(const std::string& backend, const std::vector<CheckResult>& checks, std::set<std::string>& ran,
                 std::set<std::string>& declined) {
@@ -124,6 +138,8 @@ void scenes_run(const std::string& backend, const std::vector<CheckResult>& chec
 std::optional<double> stated_accuracy(const std::string& error_kind, const VerdictThresholds& thresholds) {
     if (error_kind.find("trajectory") != std::string::npos) return thresholds.trajectory_accuracy;
     if (error_kind.find("Z_ref") != std::string::npos) return thresholds.pressure_accuracy;
+    if (error_kind.find("tau_ref") != std::string::npos) return thresholds.cooling_accuracy;
+    if (error_kind.find("nu_ref") != std::string::npos) return thresholds.collision_rate_accuracy;
     return std::nullopt;
 }
 
@@ -146,7 +162,11 @@ std::map<std::string, AccuracyVerdict> accuracy_verdicts(const std::string& refe
         }
         scenes_run(b, checks, ran, declined);
         for (const std::string& s : ran)
-            if (!measured.count(s)) v.checked_only.push_back(s);
+            if (!measured.count(s)) {
+                v.checked_only.push_back(s);
+                v.checked_only_reasons[s] = b == reference ? "the reference: the other backends are compared with it"
+                                                           : why_checked_only(b, s, checks);
+            }
         v.cannot_run.assign(declined.begin(), declined.end());
         if (b != reference) v.under_preset_limits = under_base_limits(b, checks);
     }

@@ -2,12 +2,15 @@
 // docs/reading-a-report.md, "Choosing a backend for a stated accuracy"):
 //
 //  - use for: a scene and the largest dt at which its error against the reference is within the
-//    suite's stated accuracy ([verdicts] trajectory_accuracy, pressure_accuracy) at 95 %
-//    confidence: error + 1.96 SE <= accuracy;
+//    suite's stated accuracy ([verdicts] trajectory_accuracy, pressure_accuracy, and for the
+//    scenes compared seed by seed cooling_accuracy, collision_rate_accuracy) at 95 % confidence:
+//    error + 1.96 SE <= accuracy;
 //  - not for: a scene where some dt is not shown within it, with the measured error (the signed
 //    pressure bias where there is one), its SE and how many SE it lies from zero; `resolved` where
 //    even error - 1.96 SE exceeds the accuracy (else more replicates could still clear it);
-//  - checked only: scenes it runs with no error against the reference (conservation, overlaps);
+//  - checked only: scenes it runs with no error against the reference (conservation, overlaps),
+//    each with the reason: the detail of its comparison check left out (the reference cannot run
+//    the scene, ...), else that the suite sets no `compare` for the scene;
 //  - cannot run: scenes whose every `run` check is left out (the backend declined the scene);
 //  - a variant (NAME[preset]) judged against its own tolerances: how many of its checks fail under
 //    the limits of its base backend's tuned preset, by check.
@@ -43,7 +46,7 @@ struct NotFor {
     double accuracy = 0;
     double dt_min = 0, dt_max = 0;  // the dt range not shown within the accuracy
     double dt = 0;                  // the dt of the largest error in that range
-    double error = 0;               // signed: the relative pressure bias where measured, else the error
+    double error = 0;               // signed: the relative statistical difference where measured, else the error
     double standard_error = 0;
     double sigmas = 0;              // |error| / standard_error
     std::size_t replicates = 0;
@@ -74,6 +77,7 @@ struct AccuracyVerdict {
     std::vector<NotFor> not_for;
     std::vector<CostAtAccuracy> cost_at_accuracy;
     std::vector<std::string> checked_only, cannot_run;
+    std::map<std::string, std::string> checked_only_reasons;  // by scene of checked_only
     std::optional<UnderPresetLimits> under_preset_limits;
 };
 

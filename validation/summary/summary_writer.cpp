@@ -311,7 +311,9 @@ Json difference_json(const std::optional<StatisticalDifference>& d) {
         .number("detectable", d->detectable).field("predicted", nullable(d->predicted))
         .field("predicted_uncertainty", nullable(d->predicted_uncertainty))
         .integer("replicates", (long long)d->replicates)
-        .integer("reference_replicates", (long long)d->reference_replicates);
+        .integer("reference_replicates", (long long)d->reference_replicates).boolean("paired", d->paired);
+    if (d->paired)
+        o.number("difference", d->difference).number("difference_standard_error", d->difference_standard_error);
     return o.json();
 }
 
@@ -344,7 +346,8 @@ Json line_json(const WorkPrecisionLine& line) {
             .integer("iterations", p.iterations).number("seconds_per_time_unit", p.seconds_per_time_unit)
             .number("error", p.error).number("error_standard_error", p.error_standard_error)
             .integer("replicates", (long long)p.replicates)
-            .field("pressure", difference_json(p.pressure)).field("collision_rate", difference_json(p.collision_rate));
+            .field("pressure", difference_json(p.pressure)).field("collision_rate", difference_json(p.collision_rate))
+            .field("paired", difference_json(p.paired));
         return q.json();
     }));
     return o.json();
@@ -436,7 +439,8 @@ Json thresholds_json(const VerdictThresholds& t) {
     Object o;
     o.number("loose_tolerance_ratio", t.loose_tolerance_ratio).number("energy_drift", t.energy_drift)
         .number("pressure_sigmas", t.pressure_sigmas).number("trajectory_accuracy", t.trajectory_accuracy)
-        .number("pressure_accuracy", t.pressure_accuracy).number("confidence_z", confidence_95);
+        .number("pressure_accuracy", t.pressure_accuracy).number("cooling_accuracy", t.cooling_accuracy)
+        .number("collision_rate_accuracy", t.collision_rate_accuracy).number("confidence_z", confidence_95);
     return o.json();
 }
 
@@ -467,7 +471,10 @@ Json accuracy_json(const AccuracyVerdict& v) {
         if (c.reached) x.number("seconds_per_time_unit", c.seconds_per_time_unit).number("low", c.low).number("high", c.high);
         return x.json();
     }));
-    o.field("checked_only", strings_json(v.checked_only)).field("cannot_run", strings_json(v.cannot_run));
+    Object reasons;
+    for (const auto& [scene, why] : v.checked_only_reasons) reasons.text(scene, why);
+    o.field("checked_only", strings_json(v.checked_only)).field("checked_only_reasons", reasons.json())
+        .field("cannot_run", strings_json(v.cannot_run));
     if (v.under_preset_limits) {
         const UnderPresetLimits& u = *v.under_preset_limits;
         Object by_check;
