@@ -71,9 +71,10 @@ Tolerances default_tolerances(const BackendInfo& backend, const RoundingScale& s
     // A rule removes an overlap in the step that detects it, so at an output a pair is at most
     // as deep as its own approach in one step |v_i - v_j| h; what is left beyond that is the
     // rounding of the positions in the backend's precision (metrics.cpp: OverlapTally). A pair
-    // left overlapped one step more is |v_i - v_j| h / (r_i + r_j) deeper: 1e-3 at the default
-    // suite's finest sweep point (relative speed 2, h = 2.5e-4, r_i + r_j = 1), above the
-    // float rounding of 7.7e-5 there (L = 10).
+    // left overlapped one step more is up to |v_i - v_j| h / (r_i + r_j) deeper (half that on
+    // average over where in the step it met): 5e-4 at the default suite's finest sweep point
+    // (relative speed 2, h = 2.5e-4, r_i + r_j = 1), 6.6 x the float rounding of 7.6e-5 there
+    // (L = 10).
     if (const auto depth = contact_rounding(machine_epsilon(single), scale)) t.overlap_beyond_step = *depth;
     t.wall_penetration = 0.2;
     t.trajectory_error = 0.5;
