@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 
-#include "core/numerics/compensated_sum.h"
 #include "physics/stepping_laws.h"
 #include "parallel_chunks.h"
 
@@ -61,6 +60,7 @@ void OverlapFinder::gather_in_slot_order(const ParticleState<double>& s, int thr
 void OverlapFinder::find_from_slots(std::size_t begin, std::size_t end, std::vector<OverlapMark>& out) const {
     const bool periodic = world_.boundary == Boundary::periodic;
     const double lx = world_.width(), ly = world_.height();
+    const std::vector<std::uint32_t>& index = grid_.sorted_index();  // slot -> disk
     for (std::size_t a = begin; a < end; ++a) {
         const double xa = x_[a], ya = y_[a], ra = radius_[a];
         grid_.for_each_neighbour_range(grid_.cell_x(xa), grid_.cell_y(ya), [&](std::uint32_t first, std::uint32_t last) {
@@ -72,7 +72,8 @@ void OverlapFinder::find_from_slots(std::size_t begin, std::size_t end, std::vec
                 }
                 const double contact = ra + radius_[b], d2 = dx * dx + dy * dy;
                 if (!(d2 < contact * contact)) continue;
-                OverlapMark m{xa + dx / 2, ya + dy / 2, std::min(ra, radius_[b]), (contact - std::sqrt(d2)) / contact};
+                OverlapMark m{xa + dx / 2, ya + dy / 2, std::min(ra, radius_[b]), (contact - std::sqrt(d2)) / contact,
+                              index[a], index[b]};
                 if (periodic) {
                     m.x = wrap_into(m.x, world_.xmin, world_.xmax);
                     m.y = wrap_into(m.y, world_.ymin, world_.ymax);
@@ -86,13 +87,9 @@ void OverlapFinder::find_from_slots(std::size_t begin, std::size_t end, std::vec
 Metrics frame_metrics(const Scene& scene, const ParticleState<double>& state, double time,
                       const std::vector<OverlapMark>& overlaps) {
     Metrics m = compute_disk_metrics(scene, state, time);
-    CompensatedSum depth_sum;
-    for (const OverlapMark& o : overlaps) {
-        m.max_overlap = std::max(m.max_overlap, o.depth);
-        depth_sum.add(o.depth);
-    }
-    m.overlapping_pairs = std::int64_t(overlaps.size());
-    if (!overlaps.empty()) m.mean_overlap = depth_sum.value() / double(overlaps.size());
+    OverlapTally tally(scene, state);
+    for (const OverlapMark& o : overlaps) tally.add(o.i, o.j, o.depth);
+    tally.write_into(m);
     return m;
 }
 

@@ -19,6 +19,7 @@ struct OverlapMark {
     double x = 0, y = 0;  // the midpoint of the two centres (through the wrap when periodic)
     double radius = 0;    // the smaller disk's radius, to size the mark
     double depth = 0;     // (r_i + r_j - d) / (r_i + r_j), as in the metrics
+    std::uint32_t i = 0, j = 0;  // the two disks, as indices of the state
 };
 
 class OverlapFinder {
@@ -39,7 +40,7 @@ private:
 };
 
 // compute_metrics' figures for a state whose overlapping pairs are `overlaps`: the per-disk sums
-// and, from the list, the overlap count, largest and mean depth (no second pair search).
+// and, from the list, the overlap fields through core's OverlapTally (no second pair search).
 Metrics frame_metrics(const Scene& scene, const ParticleState<double>& state, double time,
                       const std::vector<OverlapMark>& overlaps);
 

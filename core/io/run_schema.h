@@ -54,6 +54,10 @@ inline constexpr MetricColumn metric_columns[] = {
      &Metrics::max_overlap, nullptr, true},
     {"mean_overlap", "1", "mean of (r_i + r_j - d)/(r_i + r_j) over the overlapping pairs, 0 without overlap",
      &Metrics::mean_overlap, nullptr, true},
+    {"max_overlap_beyond_step", "1",
+     "max over overlapping pairs of (r_i + r_j - d - |v_i - v_j| h)/(r_i + r_j), h = dt/substeps, 0 where none is "
+     "positive: depth that one step of the pair's relative motion cannot explain",
+     &Metrics::max_overlap_beyond_step, nullptr, true},
     {"max_wall_penetration", "1",
      "max over disks of the depth beyond a reflecting wall divided by the disk's radius, 0 in a periodic box",
      &Metrics::max_wall_penetration, nullptr, true},

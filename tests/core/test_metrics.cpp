@@ -51,6 +51,23 @@ TEST(Metrics, OverlapDepthsRelativeToContactDistance) {
     EXPECT_NEAR(m.mean_overlap, 0.175, 1e-15);
 }
 
+TEST(Metrics, OverlapBeyondOneStepOfTheApproach) {
+    Scene scene = test::box_scene(10, 10);
+    scene.run.dt = 0.02;
+    scene.run.substeps = 2;  // h = 0.01
+    // Pair A: contact 1, depth 0.1, relative speed 4: one step presses 0.04 in, 0.06 is beyond.
+    // Pair B: contact 1, depth 0.02, relative speed 3: within one step (0.03), nothing beyond.
+    const auto s = test::make_state({{2, 2, 2, 0, 0.5, 1}, {2.9, 2, -2, 0, 0.5, 1},
+                                     {7, 7, 0, 3, 0.5, 1}, {7, 7.98, 0, 0, 0.5, 1}});
+    const Metrics m = compute_metrics(scene, s, 0);
+    EXPECT_EQ(m.overlapping_pairs, 2);
+    EXPECT_NEAR(m.max_overlap_beyond_step, 0.06, 1e-12);
+    // Resting in contact (no relative motion): the whole depth is beyond one step.
+    const auto resting = test::make_state({{2, 2, 1, 1, 0.5, 1}, {2.95, 2, 1, 1, 0.5, 1}});
+    EXPECT_NEAR(compute_metrics(scene, resting, 0).max_overlap_beyond_step, 0.05, 1e-12);
+    EXPECT_EQ(compute_metrics(scene, test::make_state({{2, 2, 0, 0, 0.5, 1}}), 0).max_overlap_beyond_step, 0.0);
+}
+
 TEST(Metrics, PeriodicOverlapAcrossTheBoundary) {
     Scene scene = test::box_scene(10, 10, Boundary::periodic);
     const auto s = test::make_state({{0.2, 5, 0, 0, 0.5, 1}, {9.6, 5, 0, 0, 0.5, 1}});

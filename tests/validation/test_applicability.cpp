@@ -78,17 +78,36 @@ TEST(Applicability, PressureNeedsOneDiameter) {
     EXPECT_TRUE(pressure_left_out(f));
 }
 
-TEST(Applicability, OverlappingPairsOnlyWhereTheCountCanExceedItsLimit) {
+TEST(Applicability, OverlappingPairsOnlyWhereTheLimitAllowsTenPairs) {
     // Two disks overlap in at most 0.5 pairs per disk: a limit of 0.5 (or box2d's 1.0) passes
     // them overlapping at every step, so the check is left out with its reason.
-    const auto two = overlapping_pairs_cannot_fail(2, 0.5);
+    const auto two = overlapping_pairs_too_few(2, 0.5);
     ASSERT_TRUE(two);
     EXPECT_NE(two->find("2 disks overlap in at most 0.5 pairs per disk"), std::string::npos) << *two;
-    EXPECT_TRUE(overlapping_pairs_cannot_fail(3, 1.0)) << "3 disks: at most 1 pair per disk";
-    // Where every disk overlapping exceeds the limit, the check is judged and can fail.
-    EXPECT_FALSE(overlapping_pairs_cannot_fail(2, 0.25));
-    EXPECT_FALSE(overlapping_pairs_cannot_fail(4, 1.0));
-    EXPECT_FALSE(overlapping_pairs_cannot_fail(1000, 0.05));
+    EXPECT_TRUE(overlapping_pairs_too_few(3, 1.0)) << "3 disks: at most 1 pair per disk";
+    // Where the limit allows fewer than ten pairs, one pair fails it: a count of single pairs.
+    const auto single = overlapping_pairs_too_few(2, 0.25);
+    ASSERT_TRUE(single);
+    EXPECT_NE(single->find("a count of single pairs"), std::string::npos) << *single;
+    EXPECT_TRUE(overlapping_pairs_too_few(99, 0.1));
+    // Where the limit allows ten pairs or more, the check is judged and can fail.
+    EXPECT_FALSE(overlapping_pairs_too_few(100, 0.1));
+    EXPECT_FALSE(overlapping_pairs_too_few(10, 1.0));
+    EXPECT_FALSE(overlapping_pairs_too_few(1000, 0.05));
+}
+
+TEST(Applicability, OverlapBeyondStepJudgesExactlyWhereOverlappingPairsCannot) {
+    // The replacement: judged where the count is left out, left out (with its reason) where
+    // the count judges.
+    for (const auto& [disks, limit] : {std::pair<std::size_t, double>{2, 0.5}, {3, 1.0}, {2, 0.25}, {1000, 0.05}}) {
+        const bool count_left_out = overlapping_pairs_too_few(disks, limit).has_value();
+        const auto why = overlap_beyond_step_left_out(disks, limit);
+        EXPECT_NE(count_left_out, why.has_value()) << disks << " disks, limit " << limit;
+        if (why) {
+            EXPECT_NE(why->find("overlapping_pairs judges"), std::string::npos) << *why;
+        }
+    }
+    EXPECT_NE(overlapping_pairs_too_few(2, 0.5)->find("overlap_beyond_step judges in its place"), std::string::npos);
 }
 
 TEST(Applicability, FeaturesAreReadFromSceneAndState) {

@@ -96,9 +96,11 @@ TEST_P(FinderVsBruteForce, HudFiguresFromTheMarksEqualComputeMetrics) {
     OverlapFinder().find(scene.world, s, marks, 2);
     const Metrics want = compute_metrics(scene, s, 1.5), got = frame_metrics(scene, s, 1.5, marks);
     EXPECT_GT(want.overlapping_pairs, 0);
+    EXPECT_GT(want.max_overlap_beyond_step, 0);
     EXPECT_EQ(got.overlapping_pairs, want.overlapping_pairs);
     EXPECT_DOUBLE_EQ(got.max_overlap, want.max_overlap);
     EXPECT_NEAR(got.mean_overlap, want.mean_overlap, 1e-14);
+    EXPECT_DOUBLE_EQ(got.max_overlap_beyond_step, want.max_overlap_beyond_step);
     EXPECT_EQ(got.kinetic_energy, want.kinetic_energy);
     EXPECT_EQ(got.momentum_x, want.momentum_x);
     EXPECT_EQ(got.time, want.time);

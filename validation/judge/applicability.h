@@ -31,10 +31,19 @@ EnergyCheck energy_check(const SceneFeatures& f);
 // Periodic boxes have no walls to penetrate.
 std::optional<std::string> wall_penetration_left_out(const SceneFeatures& f);
 
-// A count per disk that cannot exceed its limit: N disks overlap in at most N (N - 1) / 2 pairs,
-// (N - 1) / 2 per disk, so with two disks (0.5) a limit of 0.5 passes every disk overlapping.
-// Such a check is left out (max_overlap and mean_overlap judge the depth there), not passed.
-std::optional<std::string> overlapping_pairs_cannot_fail(std::size_t disks, double limit_per_disk);
+// The count of overlapping pairs per disk judges a population: it is judged only where its limit
+// allows at least this many overlapping pairs (limit x N). Below that it counts single pairs
+// (0, 1/N, 2/N, ...): one honest pair met in the last step, which a stepping rule shows at an
+// output now and then, would fail it, and where (N - 1) / 2 is within the limit (two disks at
+// 0.5) nothing could. Such a count is left out, not passed, and overlap_beyond_step judges in
+// its place. The threshold, overlapping_pairs_counted_from, is in check_table.h (summary.json's
+// `quantised` marks the same counts).
+std::optional<std::string> overlapping_pairs_too_few(std::size_t disks, double limit_per_disk);
+
+// overlap_beyond_step (a pair overlapped deeper than one step of its approach: it stayed
+// overlapped for more than one step) replaces overlapping_pairs where that count cannot fail,
+// and is left out where it can.
+std::optional<std::string> overlap_beyond_step_left_out(std::size_t disks, double limit_per_disk);
 
 // The contact-value pressure estimator needs one disk diameter.
 std::optional<std::string> pressure_left_out(const SceneFeatures& f);

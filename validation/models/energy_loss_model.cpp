@@ -33,7 +33,8 @@ double enskog_collision_frequency(double area_fraction, double mean_radius, doub
 EnergyDriftPrediction stepped_energy_drift(double nu, double dt, double duration, double disks,
                                            double area_fraction) {
     const ModelParameters& p = area_fraction >= dense_area_fraction ? crystal : gas;
-    const double events = p.a * nu * nu * dt * duration * disks;  // expected multi-contact disk-steps
+    // expected multi-contact disk-steps: none where no disk can have two partners
+    const double events = disks < 3 ? 0.0 : p.a * nu * nu * dt * duration * disks;
     const double sigma = p.s * std::sqrt(events) / disks;
     // the model's own relative error (s and a enter as s sqrt(a))
     const double model_rel = std::hypot(p.s_err / p.s, 0.5 * p.a_err / p.a);

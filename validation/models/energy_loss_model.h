@@ -32,6 +32,9 @@ double enskog_collision_frequency(double area_fraction, double mean_radius, doub
 
 // nu: collisions per disk per time unit (measured on the case), dt: step, duration: T,
 // disks: N, area_fraction: of the disks in the box (above 0.6 the crystal fit applies).
+// With fewer than three disks no disk has two partners, so there is no multi-contact step and
+// the prediction and its tolerance are 0: rounding alone moves the energy there (the caller's
+// floor, exact_limits.h: conservation_rounding).
 EnergyDriftPrediction stepped_energy_drift(double nu, double dt, double duration, double disks,
                                            double area_fraction);
 

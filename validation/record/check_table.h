@@ -58,7 +58,13 @@ inline constexpr CheckDefinition check_table[] = {
      "mean_overlap", &Tolerances::mean_overlap, "every finished case", "checks.cpp: case_checks"},
     {"overlapping_pairs", CheckKind::case_check, "max_t (number of overlapping pairs) / N", "<= tolerance",
      "overlapping_pairs_per_disk", &Tolerances::overlapping_pairs_per_disk,
-     "every finished case where (N − 1) / 2 exceeds the tolerance", "checks.cpp: case_checks"},
+     "every finished case where the limit allows at least 10 overlapping pairs (limit × N ≥ 10)", "checks.cpp: case_checks"},
+    {"overlap_beyond_step", CheckKind::case_check,
+     "max_t max over overlapping pairs of (r_i + r_j - d - |v_i - v_j| h)/(r_i + r_j), h = dt / substeps",
+     "<= tolerance", "overlap_beyond_step", &Tolerances::overlap_beyond_step,
+     "where overlapping_pairs is left out (limit × N < 10: few disks), in its place: a pair deeper than one step of its approach "
+     "has stayed overlapped for more than one step",
+     "metrics.cpp: OverlapTally; applicability.cpp: overlap_beyond_step_left_out; checks.cpp: case_checks"},
     {"wall_penetration", CheckKind::case_check, "max_t max over disks of (depth beyond a wall) / r", "<= tolerance",
      "wall_penetration", &Tolerances::wall_penetration, "reflecting walls: a periodic box has none",
      "applicability.cpp: wall_penetration_left_out; checks.cpp: case_checks"},
@@ -87,6 +93,10 @@ inline constexpr CheckDefinition check_table[] = {
 };
 
 inline constexpr std::size_t check_count = std::size(check_table);
+
+// overlapping_pairs is judged only where its limit allows at least this many overlapping pairs
+// (limit x N): below that it counts single pairs (applicability.h: overlapping_pairs_too_few).
+inline constexpr double overlapping_pairs_counted_from = 10;
 
 // The check named `name`, or nullptr.
 inline const CheckDefinition* find_check(std::string_view name) {

@@ -21,17 +21,25 @@ RoundingScale rounding_scale(const CaseResult& result, const Scene& scene, const
 }
 
 void apply_exact_limits(Tolerances& t, double epsilon, const RoundingScale& scale) {
-    // + 1: the metric's own rounding of the sums, present with no collision at all.
-    const std::int64_t collisions = scale.collisions.value_or(collisions_without_reference);
-    const double drift = conservation_epsilons_per_collision * epsilon * double(collisions + 1);
+    const double drift = conservation_rounding(epsilon, scale.collisions.value_or(collisions_without_reference));
     t.momentum_drift = drift;
     t.energy_drift = drift;
-    if (scale.smallest_radius > 0 && scale.coordinate > 0) {
-        const double depth = position_epsilons * epsilon * scale.coordinate;  // absolute, in length
-        t.max_overlap = depth / (2 * scale.smallest_radius);
-        t.mean_overlap = t.max_overlap;
-        t.wall_penetration = depth / scale.smallest_radius;
+    if (const auto depth = contact_rounding(epsilon, scale)) {
+        t.max_overlap = *depth;
+        t.mean_overlap = *depth;
+        t.overlap_beyond_step = *depth;  // at most the depth itself
+        t.wall_penetration = 2 * *depth;  // relative to a radius, not to a contact distance
     }
+}
+
+double conservation_rounding(double epsilon, std::int64_t collisions) {
+    // + 1: the metric's own rounding of the sums, present with no collision at all.
+    return conservation_epsilons_per_collision * epsilon * double(std::max<std::int64_t>(collisions, 0) + 1);
+}
+
+std::optional<double> contact_rounding(double epsilon, const RoundingScale& scale) {
+    if (!(scale.smallest_radius > 0 && scale.coordinate > 0)) return std::nullopt;
+    return position_epsilons * epsilon * scale.coordinate / (2 * scale.smallest_radius);
 }
 
 }  // namespace collide::validation

@@ -49,10 +49,19 @@ RoundingScale rounding_scale(const CaseResult& result, const Scene& scene, const
 
 // Sets the conservation and overlap limits of `t` to what rounding allows in `scale`:
 //   momentum_drift, energy_drift <= conservation_epsilons_per_collision * eps * (C + 1)
-//   max_overlap, mean_overlap    <= position_epsilons * eps * L / (2 r_min)   (contact distance)
+//   max_overlap, mean_overlap,
+//   overlap_beyond_step          <= position_epsilons * eps * L / (2 r_min)   (contact distance)
 //   wall_penetration             <= position_epsilons * eps * L / r_min
 // C is collisions_without_reference when the count is unknown; the overlap limits keep their
 // value in `t` when the scale is (no disks).
 void apply_exact_limits(Tolerances& t, double epsilon, const RoundingScale& scale);
+
+// conservation_epsilons_per_collision * eps * (C + 1): how far rounding alone moves a conserved
+// sum over C collisions in the precision of `epsilon` (the + 1: the metric's own sums).
+double conservation_rounding(double epsilon, std::int64_t collisions);
+
+// position_epsilons * eps * L / (2 r_min): the relative depth at contact that rounding of the
+// positions alone can leave, in the precision of `epsilon`; nullopt when the scale is unknown.
+std::optional<double> contact_rounding(double epsilon, const RoundingScale& scale);
 
 }  // namespace collide::validation

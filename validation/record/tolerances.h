@@ -20,6 +20,7 @@ struct Tolerances {
     double max_overlap = 1e-9;
     double mean_overlap = 1e-9;
     double overlapping_pairs_per_disk = 0.01;
+    double overlap_beyond_step = 1e-9;
     double wall_penetration = 1e-9;
     double trajectory_error = 1e-6;   // in units of the smallest radius
     double statistics_z = 4.0;        // |difference| / combined standard error

@@ -147,12 +147,12 @@ double margin(const CheckResult& c) {
 }
 
 // A check whose value counts something per disk (overlapping pairs / N) can take only the
-// values k / N: with fewer than `few` steps below its tolerance, its margin is a count (for two
-// disks 0 or 0.5), not a measure of how close the backend came, and the report leaves it out of
-// the worst margin.
+// values k / N: with fewer than overlapping_pairs_counted_from steps below its tolerance, its
+// margin is a count (for two disks 0 or 0.5), not a measure of how close the backend came. The
+// judge leaves such a count out (overlap_beyond_step judges in its place), so a judged one is
+// never quantised; the flag stays in summary.json for the report that reads it.
 bool quantised(const CheckResult& c, long long disks) {
-    constexpr double few = 10;
-    return c.check == "overlapping_pairs" && disks > 0 && c.tolerance * double(disks) < few;
+    return c.check == "overlapping_pairs" && disks > 0 && c.tolerance * double(disks) < overlapping_pairs_counted_from;
 }
 
 Json check_json(const CheckResult& c, long long disks) {
