@@ -94,8 +94,7 @@ def work_precision_figure(summary):
                 ax.plot([p["seconds_per_time_unit"] for p in points], [p["error"] for p in points], "-",
                         marker=figures.marker(backend), color=figures.colour(backend), alpha=0.8)
         ax.plot([], [], "-", marker=figures.marker(backend), color=figures.colour(backend), label=figures.tex(backend))
-    ax.set_xscale("log")
-    ax.set_yscale("log")
+    figures.log_scale(ax, "x", "y")
     ax.set_xlabel("run time per simulated time unit (s)")
     ax.set_ylabel("trajectory error / r_min")
     ax.legend(fontsize=figures.TEXT_PT, ncol=2)

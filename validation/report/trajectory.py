@@ -58,7 +58,7 @@ def figure(cases, scene, labels=None):
             horizons.add(j["horizon"])
             ax.axvline(j["horizon"], color=c, linestyle="-.", linewidth=1.0,
                        label=figures.tex(f"T_h = {j['horizon']:g} (seed {case['seed']})"))
-    ax.set_yscale("log")
+    figures.log_scale(ax, "y")
     ax.set_xlabel("simulated time [scene time units]")
     ax.set_ylabel("position error / r_min [dimensionless]", fontsize=figures.TEXT_PT)
     ax.set_title(figures.tex(f"{scene}: trajectory error and the predictability horizon"), fontsize=figures.TEXT_PT)
