@@ -419,7 +419,8 @@ class LowPowerPasses(ResultsCopy):
 
     def test_a_low_power_pass_shows_its_detectable_bias_on_the_first_screen(self):
         s = copy.deepcopy(self.summary)
-        backend = next(b for b in digest.backends_in_order(s) if b != s["reference"])
+        twins = analysis.Analysis(s).aliases  # a twin's row says "as <other>"
+        backend = next(b for b in digest.backends_in_order(s) if b != s["reference"] and b not in twins)
         s["verdicts"][backend]["accuracy"]["low_power"] = [
             {"scene": "periodic_gas", "check": "pressure", "accuracy": 0.005, "dt_min": 0.002, "dt_max": 0.004,
              "detectable": 0.006, "replicates": 4, "passes": 2}]
@@ -428,6 +429,19 @@ class LowPowerPasses(ResultsCopy):
         self.assertEqual(r.returncode, 0, r.stderr)
         self.assertIn("Z passes, but could only detect a bias ≥ 0.6 % (periodic_gas, 4 rep.)",
                       self.first_screen_row(backend))
+
+    def test_a_bit_identical_backend_says_as_its_twin(self):
+        """A backend with the same numbers as another, bit for bit, has the same use-for, not-for
+        and low-power entries: its row says so in one line each instead of repeating them."""
+        a = analysis.Analysis(self.summary)
+        if not a.aliases:  # opencl gives cpu's numbers on PoCL; another device may not
+            self.skipTest("no two backends give the same numbers here")
+        v = {x["backend"]: x for x in a.verdicts}
+        for b, first in a.aliases.items():
+            same = f"as {first}"
+            self.assertEqual(v[b]["use_for"], [same] if v[first]["use_for"] else [])
+            self.assertEqual(v[b]["not_for_list"], [same] if v[first]["not_for_list"] else [])
+            self.assertEqual(v[b]["low_power"], f"Z passes with low power, {same}" if v[first]["low_power"] else None)
 
     def test_no_mark_without_a_low_power_pass(self):
         self.assertIsNone(verdicts.low_power_text({"low_power": []}))

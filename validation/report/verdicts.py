@@ -178,8 +178,13 @@ def verdict(summary, row, aliases, by_combination=None, cheapest=None):
     if checked:
         use_for.append(("every scene it runs (exact by construction; conservation checked)" if b == summary["reference"]
                         else ", ".join(checked) + ": conservation and overlaps only"))
+    low_power = low_power_text(accuracy)
+    if b in aliases:  # the same numbers bit for bit give the same entries: said once, the row stays short
+        same = f"as {aliases[b]}"
+        use_for, not_for = [same] if use_for else [], [same] if not_for else []
+        low_power = f"Z passes with low power, {same}" if low_power else None
     cannot_run = ", ".join(accuracy.get("cannot_run") or cannot) or "—"
-    return {"backend": b, "verdict": "; ".join(parts), "low_power": low_power_text(accuracy),
+    return {"backend": b, "verdict": "; ".join(parts), "low_power": low_power,
             "trusted": "; ".join(use_for) or "none",
             "use_for": use_for, "not_for_list": not_for, "not_for": "; ".join(not_for) or "—", "cannot_run": cannot_run,
             "cost": cost_text(summary, b, cheapest), "cost_at_accuracy": cost_at_accuracy_text(summary, b), "failed": bool(row["fail"]) or bool(physical),
