@@ -184,6 +184,13 @@ TEST(AccuracyVerdicts, ALowPowerPassIsListedWithTheSmallestBiasItCouldDetect) {
     VerdictThresholds loose;  // Z within 2 %: every pass could have seen it
     loose.pressure_accuracy = 0.02;
     EXPECT_TRUE(accuracy_verdicts("event", checks, {pressure_line("step", points)}, loose).at("step").low_power.empty());
+    // A line judged by another error (no stated accuracy for it here) still holds its Z to Z's.
+    WorkPrecisionLine other = pressure_line("step", points);
+    other.error_kind = "some other statistic";
+    const auto w = accuracy_verdicts("event", checks, {other}, VerdictThresholds{}).at("step");
+    ASSERT_EQ(w.low_power.size(), 1u);
+    EXPECT_DOUBLE_EQ(w.low_power[0].detectable, 0.006);
+    EXPECT_TRUE(w.not_for.empty());
 }
 
 TEST(AccuracyVerdicts, StatedAccuracyFollowsTheErrorKind) {
