@@ -440,7 +440,7 @@ class LowPowerPasses(ResultsCopy):
         for b, first in a.aliases.items():
             same = f"as {first}"
             self.assertEqual(v[b]["use_for"], [same] if v[first]["use_for"] else [])
-            self.assertEqual(v[b]["not_for_list"], [same] if v[first]["not_for_list"] else [])
+            self.assertEqual([n["text"] for n in v[b]["not_for_list"]], [same] if v[first]["not_for_list"] else [])
             self.assertEqual(v[b]["low_power"], f"Z passes with low power, {same}" if v[first]["low_power"] else None)
 
     def test_no_mark_without_a_low_power_pass(self):

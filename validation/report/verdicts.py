@@ -113,6 +113,31 @@ def not_for_text(accuracy):
     return out
 
 
+def _error_and_se(n):
+    """A not-for entry's measured error ± SE, short: 'Z +2.03 % ± 0.791 %', '0.0079 ± 0.0019 r_min'."""
+    if "Z_ref" in n["error_kind"]:
+        return f"Z {100 * n['error']:+.3g} % ± {100 * n['standard_error']:.3g} %"
+    return f"{n['error']:.2g} ± {n['standard_error']:.2g} r_min"
+
+
+def not_for_cell(accuracy, texts):
+    """The first screen's not-for entries, [{'text', 'title'}]: each entry beyond the accuracy in
+    full (`texts`: not_for_text(accuracy), one per summary.json not_for entry, in its order); the
+    undecided ones gathered into one entry that names their scenes, dt and error ± SE, their z
+    and replicates on hover ('title') as in §3 and summary.md. A suite with many compared scenes then keeps each
+    backend's row a few lines high (the first screen holds every row)."""
+    entries = list(zip(accuracy.get("not_for", []), texts))
+    out = [{"text": t, "title": None} for n, t in entries if n["resolved"]]
+    undecided = [(n, t) for n, t in entries if not n["resolved"]]
+    if undecided:
+        where = ", ".join(f"{n['scene']} dt " + (f"{n['dt']:.2g}" if n["dt_min"] == n["dt_max"] else
+                                                  f"{n['dt_min']:.2g}–{n['dt_max']:.2g}") + f" ({_error_and_se(n)})"
+                          for n, _ in undecided)
+        out.append({"text": f"undecided: {where}",
+                    "title": "; ".join(t for _, t in undecided)})
+    return out
+
+
 def low_power_text(accuracy):
     """'Z passes, but could only detect a bias ≥ 0.8 % (periodic_gas, 64 rep.), ≥ 2.4 %
     (box_gas_1000, 6 rep.)' from summary.json's verdicts.B.accuracy.low_power
@@ -171,8 +196,10 @@ def verdict(summary, row, aliases, by_combination=None, cheapest=None):
         parts.append(f"gas pressure off by up to {pressure['sigmas']:.0f} SE" +
                      (" (that check is left out)" if pressure["left_out"] else ""))
     not_for = not_for_text(accuracy)
+    cell = not_for_cell(accuracy, not_for)
     if failed:
         not_for.append("fails its checks on " + ", ".join(failed))
+        cell.append({"text": not_for[-1], "title": None})
     use_for = use_for_text(accuracy)
     checked = [s for s in accuracy.get("checked_only", []) if s in trusted]
     if checked:
@@ -181,12 +208,12 @@ def verdict(summary, row, aliases, by_combination=None, cheapest=None):
     low_power = low_power_text(accuracy)
     if b in aliases:  # the same numbers bit for bit give the same entries: said once, the row stays short
         same = f"as {aliases[b]}"
-        use_for, not_for = [same] if use_for else [], [same] if not_for else []
+        use_for, cell = [same] if use_for else [], [{"text": same, "title": None}] if cell else []
         low_power = f"Z passes with low power, {same}" if low_power else None
     cannot_run = ", ".join(accuracy.get("cannot_run") or cannot) or "—"
     return {"backend": b, "verdict": "; ".join(parts), "low_power": low_power,
             "trusted": "; ".join(use_for) or "none",
-            "use_for": use_for, "not_for_list": not_for, "not_for": "; ".join(not_for) or "—", "cannot_run": cannot_run,
+            "use_for": use_for, "not_for_list": cell, "not_for": "; ".join(not_for) or "—", "cannot_run": cannot_run,
             "cost": cost_text(summary, b, cheapest), "cost_at_accuracy": cost_at_accuracy_text(summary, b), "failed": bool(row["fail"]) or bool(physical),
             "anchor": digest.anchor("backend", b)}
 
