@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
 """Opens a rendered report the way a reader does: chromium, headless, at 1400 x 900, and checks
 that the first screen holds the verdict and the per-backend digest with a verdict and a cost
-for each backend, that the headline work-precision figure follows it at once, that no two
-pieces of text on the first screen overlap, that no two labels inside any figure overlap and
-none is cut by its edge (each PNG's record of its text boxes, tests/report/figure_text.py),
-and that every in-page link (table of contents, digest) resolves.
+for each backend (each low-power pass marked with the bias it could have detected), that the
+headline work-precision figure follows it at once, that no two pieces of text on the first
+screen overlap, that no two labels inside any figure overlap and none is cut by its edge (each
+PNG's record of its text boxes, tests/report/figure_text.py), and that every in-page link
+(table of contents, digest) resolves.
 
 usage: test_browser.py RESULTS_DIR [SCREENSHOT.png]
 
@@ -12,11 +13,14 @@ Needs the Debian packages chromium, chromium-driver and python3-selenium
 (scripts/install-deps.sh). A missing browser is a failure, not a skip: CI must run this.
 """
 import os
+import re
 import shutil
 import sys
 import unittest
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # figure_text.py beside this file
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "validation", "report"))
+import digest  # noqa: E402  (the report's anchors: a row's id from its backend's name)
 
 RESULTS = None
 SCREENSHOT = None
@@ -100,12 +104,11 @@ class FirstScreen(unittest.TestCase):
             self.assertTrue(row.is_displayed())
 
     def digest_row(self, backend):
+        """The cells of the backend's digest row (its name cell may add a note: 'opencl (= cpu)')."""
         from selenium.webdriver.common.by import By
-        for row in self.driver.find_elements(By.CSS_SELECTOR, "#digest tr[id^='verdict-']"):
-            cells = row.find_elements(By.TAG_NAME, "td")
-            if cells and cells[0].text.split("\n")[0] == backend:
-                return cells
-        self.fail(f"no digest row for {backend}")
+        rows = self.driver.find_elements(By.ID, "verdict-" + digest.anchor("backend", backend))
+        self.assertTrue(rows, f"no digest row for {backend}")
+        return rows[0].find_elements(By.TAG_NAME, "td")
 
     def test_not_for_names_a_measured_bias_for_step(self):
         """Issue 48: the stepped rules' measured error is on the first screen, with its SE."""
@@ -128,6 +131,29 @@ class FirstScreen(unittest.TestCase):
             verdict = self.digest_row(name)[1]
             self.assertIn("fail", verdict.get_attribute("class"), f"{name} is shown green")
             self.assertRegex(verdict.text, r"FAILS the physical model: \d+ of its \d+ checks fail under the limits of")
+
+    def test_low_power_passes_marked_on_first_screen(self):
+        """Issue 48, item 5: every backend whose summary.json lists a low-power pass (a Z check that
+        passed but could not have seen a bias of the stated accuracy) carries, in its verdict on the
+        first screen, the bias each such pass could have detected."""
+        import json
+        from selenium.webdriver.common.by import By
+        with open(os.path.join(RESULTS, "summary.json"), encoding="utf-8") as f:
+            summary = json.load(f)
+        low = {b: (v.get("accuracy") or {}).get("low_power") for b, v in summary["verdicts"].items()}
+        low = {b: l for b, l in low.items() if l}
+        if not low:
+            self.skipTest("no low-power pass in this suite")
+        for backend, passes in low.items():
+            cells = self.digest_row(backend)
+            marks = cells[1].find_elements(By.CSS_SELECTOR, "span.low-power")
+            self.assertEqual(len(marks), 1, f"{backend}'s low-power passes are not marked")
+            same = re.search(r"\(= (.+)\)", cells[0].text.split("\n")[0])  # 'opencl (= cpu)': its entries are cpu's
+            for p in passes:
+                self.assertRegex(marks[0].text, rf"as {re.escape(same.group(1))}$" if same else
+                                 rf"≥ [\d.]+ % \({re.escape(p['scene'])}, {p['replicates']} rep\.\)")
+            bottom = self.driver.execute_script("return arguments[0].getBoundingClientRect().bottom;", marks[0])
+            self.assertLessEqual(bottom, HEIGHT, f"{backend}'s low-power mark is below the first screen")
 
     def test_cost_at_accuracy_column_on_first_screen(self):
         if self.stability_suite():

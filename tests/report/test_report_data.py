@@ -307,7 +307,9 @@ class IdenticalBackends(unittest.TestCase):
         self.assertEqual(digest.identical_backends(summary), [("cpu", "opencl", 3)])
 
 
-class HostileInputs(unittest.TestCase):
+class ResultsCopy(unittest.TestCase):
+    """A copy of the mini suite's results whose summary.json a test rewrites and renders again."""
+
     def setUp(self):
         self.dir = tempfile.mkdtemp()
         shutil.copytree(RESULTS, os.path.join(self.dir, "r"), ignore=shutil.ignore_patterns("report", "runs"))
@@ -323,6 +325,8 @@ class HostileInputs(unittest.TestCase):
         with open(self.summary_path, "w", encoding="utf-8") as f:
             json.dump(summary, f)
 
+
+class HostileInputs(ResultsCopy):
     def test_invalid_json_names_the_file(self):
         with open(self.summary_path, "w") as f:
             f.write('{"suite": "x", ')
@@ -399,6 +403,52 @@ class HostileInputs(unittest.TestCase):
             self.assertNotIn("<b>bold</b>", page, name)
             self.assertIn("&lt;script&gt;alert(1)&lt;/script&gt; &lt;b&gt;bold&lt;/b&gt;", page, name)
             self.assertIn("&amp; more", page, name)
+
+
+class LowPowerPasses(ResultsCopy):
+    """Issue 48, item 5: a statistical pass that could not have seen a bias as large as the stated
+    accuracy is marked on the first screen with the bias it could have detected. Which passes
+    are low-power is decided by `collide validate` (summary.json's verdicts.B.accuracy.low_power,
+    tests/validation/test_accuracy_verdicts.cpp); the report states it in the backend's row."""
+
+    def first_screen_row(self, backend):
+        html = open(os.path.join(self.results, "report", "index.html"), encoding="utf-8").read()
+        first_screen = html[:html.index('id="headline"')]
+        start = first_screen.index(f'id="verdict-{digest.anchor("backend", backend)}"')
+        return first_screen[start:first_screen.index("</tr>", start)]
+
+    def test_a_low_power_pass_shows_its_detectable_bias_on_the_first_screen(self):
+        s = copy.deepcopy(self.summary)
+        twins = analysis.Analysis(s).aliases  # a twin's row says "as <other>"
+        backend = next(b for b in digest.backends_in_order(s) if b != s["reference"] and b not in twins)
+        s["verdicts"][backend]["accuracy"]["low_power"] = [
+            {"scene": "periodic_gas", "check": "pressure", "accuracy": 0.005, "dt_min": 0.002, "dt_max": 0.004,
+             "detectable": 0.006, "replicates": 4, "passes": 2}]
+        self.write(s)
+        r = render(self.results)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("Z passes, but could only detect a bias ≥ 0.6 % (periodic_gas, 4 rep.)",
+                      self.first_screen_row(backend))
+
+    def test_a_bit_identical_backend_says_as_its_twin(self):
+        """A backend with the same numbers as another, bit for bit, has the same use-for, not-for
+        and low-power entries: its row says so in one line each instead of repeating them."""
+        a = analysis.Analysis(self.summary)
+        if not a.aliases:  # opencl gives cpu's numbers on PoCL; another device may not
+            self.skipTest("no two backends give the same numbers here")
+        v = {x["backend"]: x for x in a.verdicts}
+        for b, first in a.aliases.items():
+            same = f"as {first}"
+            self.assertEqual(v[b]["use_for"], [same] if v[first]["use_for"] else [])
+            self.assertEqual([n["text"] for n in v[b]["not_for_list"]], [same] if v[first]["not_for_list"] else [])
+            self.assertEqual(v[b]["low_power"], f"Z passes with low power, {same}" if v[first]["low_power"] else None)
+
+    def test_no_mark_without_a_low_power_pass(self):
+        self.assertIsNone(verdicts.low_power_text({"low_power": []}))
+        self.assertIsNone(verdicts.low_power_text({}))
+        self.assertEqual(verdicts.low_power_text({"low_power": [
+            {"scene": "a", "detectable": 0.0123, "replicates": 6}, {"scene": "b", "detectable": 0.008, "replicates": 64}]}),
+            "Z passes, but could only detect a bias ≥ 1.2 % (a, 6 rep.), ≥ 0.8 % (b, 64 rep.)")
 
 
 class PhysicsSectionDrawsTheSummary(unittest.TestCase):

@@ -147,6 +147,52 @@ TEST(AccuracyVerdicts, CostAtTheStatedAccuracyIsInterpolatedOrNotReached) {
     EXPECT_DOUBLE_EQ(l.seconds_per_time_unit, 1.0);
 }
 
+// A Z point whose pressure check could detect a bias of `detectable` (relative to Z_ref).
+WorkPrecisionPoint z_point(const std::string& backend, double dt, double detectable, std::size_t replicates) {
+    WorkPrecisionPoint p = pressure_point(dt, 0.001, 0.001);
+    p.group = "gas__" + backend + "__dt" + std::to_string(dt);
+    p.pressure->detectable = detectable;
+    p.pressure->replicates = replicates;
+    return p;
+}
+
+TEST(AccuracyVerdicts, ALowPowerPassIsListedWithTheSmallestBiasItCouldDetect) {
+    // Z within 0.5 %: the passes at dt 0.004 (could detect 1.2 %, 4 replicates) and dt 0.002
+    // (0.6 %, 16) could not have seen a bias of 0.5 %; the pass at dt 0.001 (0.3 %) could, the
+    // failed check at dt 0.008 (2 %) is no pass and the left-out one at dt 0.016 no check.
+    const std::vector<WorkPrecisionPoint> points = {z_point("step", 0.016, 0.03, 4), z_point("step", 0.008, 0.02, 4),
+                                                    z_point("step", 0.004, 0.012, 4), z_point("step", 0.002, 0.006, 16),
+                                                    z_point("step", 0.001, 0.003, 64)};
+    std::vector<CheckResult> checks = {check("step", "gas", "run", 0, 0)};
+    const CheckStatus status[] = {CheckStatus::left_out, CheckStatus::fail, CheckStatus::pass, CheckStatus::pass,
+                                  CheckStatus::pass};
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        CheckResult c = check("step", "gas", "pressure", 0, 4, status[k]);
+        c.subject = points[k].group;
+        checks.push_back(c);
+    }
+    const auto v = accuracy_verdicts("event", checks, {pressure_line("step", points)}, VerdictThresholds{}).at("step");
+    ASSERT_EQ(v.low_power.size(), 1u);
+    const LowPowerPass& l = v.low_power[0];
+    EXPECT_EQ(l.scene, "gas");
+    EXPECT_EQ(l.check, "pressure");
+    EXPECT_EQ(l.passes, 2u);
+    EXPECT_DOUBLE_EQ(l.dt_min, 0.002);
+    EXPECT_DOUBLE_EQ(l.dt_max, 0.004);
+    EXPECT_DOUBLE_EQ(l.detectable, 0.006);
+    EXPECT_EQ(l.replicates, 16u);
+    VerdictThresholds loose;  // Z within 2 %: every pass could have seen it
+    loose.pressure_accuracy = 0.02;
+    EXPECT_TRUE(accuracy_verdicts("event", checks, {pressure_line("step", points)}, loose).at("step").low_power.empty());
+    // A line judged by another error (no stated accuracy for it here) still holds its Z to Z's.
+    WorkPrecisionLine other = pressure_line("step", points);
+    other.error_kind = "some other statistic";
+    const auto w = accuracy_verdicts("event", checks, {other}, VerdictThresholds{}).at("step");
+    ASSERT_EQ(w.low_power.size(), 1u);
+    EXPECT_DOUBLE_EQ(w.low_power[0].detectable, 0.006);
+    EXPECT_TRUE(w.not_for.empty());
+}
+
 TEST(AccuracyVerdicts, StatedAccuracyFollowsTheErrorKind) {
     VerdictThresholds t;
     t.cooling_accuracy = 7e-3;

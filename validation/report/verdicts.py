@@ -86,16 +86,18 @@ def scene_status(summary, backend, by_combination=None):
 
 
 def use_for_text(accuracy):
-    """'periodic_gas: dt ≤ 0.002', one per measured scene ('inelastic_gas: dt ≤ 0.002 (τ)' where
-    the scene is judged by a statistic other than Z or the trajectory), from summary.json's
+    """'dt ≤ 0.002: head_on_equal, head_on_mass_ratio_10', one entry per largest dt (and statistic:
+    'dt ≤ 0.002 (τ, paired over 8 seeds): inelastic_gas' where the scene is judged by a statistic
+    other than Z or the trajectory), the scenes in summary.json's order, from summary.json's
     verdicts.B.accuracy.use_for (accuracy_verdicts.h: decided there at 95 % confidence against
-    the accuracy the digest's header states)."""
-    out = []
+    the accuracy the digest's header states). Scenes that share an entry share it: the row stays
+    a few lines high."""
+    by_entry = OrderedDict()
     for u in accuracy.get("use_for", []):
         s = digest.statistic_of(u["error_kind"])
         by = f" ({s}, paired over {u['replicates']} seeds)" if s and s != "Z" else ""
-        out.append(f"{u['scene']}: dt ≤ {u['dt']:.2g}{by}")
-    return out
+        by_entry.setdefault(f"dt ≤ {u['dt']:.2g}{by}", []).append(u["scene"])
+    return [f"{entry}: {', '.join(scenes)}" for entry, scenes in by_entry.items()]
 
 
 def not_for_text(accuracy):
@@ -127,6 +129,45 @@ def checked_only_text(scenes, reasons):
             + (f" ({reasons[s]})" if reasons.get(s) else "") for s in scenes]
 
 
+def _error_and_se(n):
+    """A not-for entry's measured error ± SE, short: 'Z +2.03 % ± 0.791 %', 'τ +0.26 % ± 0.24 %',
+    '0.0079 ± 0.0019 r_min'."""
+    s = digest.statistic_of(n["error_kind"])
+    if s:
+        return f"{s} {100 * n['error']:+.3g} % ± {100 * n['standard_error']:.3g} %"
+    return f"{n['error']:.2g} ± {n['standard_error']:.2g} r_min"
+
+
+def not_for_cell(accuracy, texts):
+    """The first screen's not-for entries, [{'text', 'title'}]: each entry beyond the accuracy in
+    full (`texts`: not_for_text(accuracy), one per summary.json not_for entry, in its order); the
+    undecided ones gathered into one entry that names their scenes, dt and error ± SE, their z
+    and replicates on hover ('title') as in §3 and summary.md. A suite with many compared scenes then keeps each
+    backend's row a few lines high (the first screen holds every row)."""
+    entries = list(zip(accuracy.get("not_for", []), texts))
+    out = [{"text": t, "title": None} for n, t in entries if n["resolved"]]
+    undecided = [(n, t) for n, t in entries if not n["resolved"]]
+    if undecided:
+        where = ", ".join(f"{n['scene']} dt " + (f"{n['dt']:.2g}" if n["dt_min"] == n["dt_max"] else
+                                                  f"{n['dt_min']:.2g}–{n['dt_max']:.2g}") + f" ({_error_and_se(n)})"
+                          for n, _ in undecided)
+        out.append({"text": f"undecided: {where}",
+                    "title": "; ".join(t for _, t in undecided)})
+    return out
+
+
+def low_power_text(accuracy):
+    """'Z passes, but could only detect a bias ≥ 0.8 % (periodic_gas, 64 rep.), ≥ 2.4 %
+    (box_gas_1000, 6 rep.)' from summary.json's verdicts.B.accuracy.low_power
+    (accuracy_verdicts.h: the passing Z checks whose detectable bias exceeds the stated
+    accuracy, decided there); None where every pass could have seen a bias of the accuracy."""
+    low = accuracy.get("low_power") or []
+    if not low:
+        return None
+    each = [f"≥ {100 * l['detectable']:.2g} % ({l['scene']}, {l['replicates']} rep.)" for l in low]
+    return "Z passes, but could only detect a bias " + ", ".join(each)
+
+
 def preset_text(accuracy):
     """'fails the physical model: 68 of 540 checks fail under box2d's limits (energy drift 55, ...)'
     for a variant judged against its own tolerances; None where it fails none or has no base."""
@@ -139,7 +180,7 @@ def preset_text(accuracy):
 
 
 def verdict(summary, row, aliases, by_combination=None, cheapest=None):
-    """{'backend', 'verdict', 'trusted', 'not_for', 'cost', 'failed', 'anchor'} for one digest row;
+    """{'backend', 'verdict', 'low_power', 'trusted', 'not_for', 'cost', 'failed', 'anchor'} for one digest row;
     `by_combination` (digest.combinations) and `cheapest` (cheapest_by_scene), the same for every
     backend, are computed here when not given."""
     b = row["backend"]
@@ -173,17 +214,25 @@ def verdict(summary, row, aliases, by_combination=None, cheapest=None):
         parts.append(f"gas pressure off by up to {pressure['sigmas']:.0f} SE" +
                      (" (that check is left out)" if pressure["left_out"] else ""))
     not_for = not_for_text(accuracy)
+    cell = not_for_cell(accuracy, not_for)
     if failed:
         not_for.append("fails its checks on " + ", ".join(failed))
+        cell.append({"text": not_for[-1], "title": None})
     use_for = use_for_text(accuracy)
     checked = [s for s in accuracy.get("checked_only", []) if s in trusted]
     if checked and b == summary["reference"]:
         use_for.append("every scene it runs (exact by construction; conservation checked)")
     elif checked:
         use_for += checked_only_text(checked, accuracy.get("checked_only_reasons") or {})
+    low_power = low_power_text(accuracy)
+    if b in aliases:  # the same numbers bit for bit give the same entries: said once, the row stays short
+        same = f"as {aliases[b]}"
+        use_for, cell = [same] if use_for else [], [{"text": same, "title": None}] if cell else []
+        low_power = f"Z passes with low power, {same}" if low_power else None
     cannot_run = ", ".join(accuracy.get("cannot_run") or cannot) or "—"
-    return {"backend": b, "verdict": "; ".join(parts), "trusted": "; ".join(use_for) or "none",
-            "use_for": use_for, "not_for_list": not_for, "not_for": "; ".join(not_for) or "—", "cannot_run": cannot_run,
+    return {"backend": b, "verdict": "; ".join(parts), "low_power": low_power,
+            "trusted": "; ".join(use_for) or "none",
+            "use_for": use_for, "not_for_list": cell, "not_for": "; ".join(not_for) or "—", "cannot_run": cannot_run,
             "cost": cost_text(summary, b, cheapest), "cost_at_accuracy": cost_at_accuracy_text(summary, b), "failed": bool(row["fail"]) or bool(physical),
             "anchor": digest.anchor("backend", b)}
 

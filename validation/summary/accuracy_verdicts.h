@@ -11,6 +11,9 @@
 //  - checked only: scenes it runs with no error against the reference (conservation, overlaps),
 //    each with the reason: the detail of its comparison check left out (the reference cannot run
 //    the scene, ...), else that the suite sets no `compare` for the scene;
+//  - low-power passes: a scene whose statistical check of Z passed where it could not have
+//    detected a bias as large as the stated accuracy (its detectable bias exceeds it): the pass
+//    bounds the bias only by the detectable one, which the first screen states beside it;
 //  - cannot run: scenes whose every `run` check is left out (the backend declined the scene);
 //  - a variant (NAME[preset]) judged against its own tolerances: how many of its checks fail under
 //    the limits of its base backend's tuned preset, by check.
@@ -65,6 +68,22 @@ struct CostAtAccuracy {
     double seconds_per_time_unit = 0, low = 0, high = 0;
 };
 
+// A scene's passing `pressure` checks that could not have failed on a bias as large as the stated
+// Z accuracy: each point's detectable bias (StatisticalDifference::detectable: the check's z
+// limit times the combined standard error over |Z_ref|, the bias it fails with probability about
+// one half) exceeds the accuracy. Such a pass says the bias is probably below `detectable`, not
+// below the accuracy; more replicates shrink `detectable` as 1/sqrt(replicates). `detectable`
+// and `replicates` are the most sensitive of these points' (the smallest detectable bias), so
+// "could only detect a bias >= detectable" holds for every one of them.
+struct LowPowerPass {
+    std::string scene, check;
+    double accuracy = 0;
+    double dt_min = 0, dt_max = 0;  // the dt range of these passes
+    double detectable = 0;
+    std::size_t replicates = 0;
+    std::size_t passes = 0;  // how many sweep points passed with low power
+};
+
 // A variant's checks judged again under its base backend's limits (same scene, check and case).
 struct UnderPresetLimits {
     std::string preset;            // the base backend whose limits were applied
@@ -76,6 +95,7 @@ struct AccuracyVerdict {
     std::vector<UseFor> use_for;
     std::vector<NotFor> not_for;
     std::vector<CostAtAccuracy> cost_at_accuracy;
+    std::vector<LowPowerPass> low_power;
     std::vector<std::string> checked_only, cannot_run;
     std::map<std::string, std::string> checked_only_reasons;  // by scene of checked_only
     std::optional<UnderPresetLimits> under_preset_limits;

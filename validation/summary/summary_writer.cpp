@@ -471,6 +471,13 @@ Json accuracy_json(const AccuracyVerdict& v) {
         if (c.reached) x.number("seconds_per_time_unit", c.seconds_per_time_unit).number("low", c.low).number("high", c.high);
         return x.json();
     }));
+    o.field("low_power", array(v.low_power, [](const LowPowerPass& l) {
+        Object x;
+        x.text("scene", l.scene).text("check", l.check).number("accuracy", l.accuracy).number("dt_min", l.dt_min)
+            .number("dt_max", l.dt_max).number("detectable", l.detectable)
+            .integer("replicates", (long long)l.replicates).integer("passes", (long long)l.passes);
+        return x.json();
+    }));
     Object reasons;
     for (const auto& [scene, why] : v.checked_only_reasons) reasons.text(scene, why);
     o.field("checked_only", strings_json(v.checked_only)).field("checked_only_reasons", reasons.json())
