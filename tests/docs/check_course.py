@@ -7,8 +7,9 @@
                                         quoted line range (<!-- quote PATH:A-B -->) matches its file
     check_course.py figures COLLIDE     docs/figures/make_figures.py runs on the library scenes,
                                         every axis of every figure is labelled with a unit, >= 150 dpi
-    check_course.py lab                 every coding exercise's worked solution passes
-                                        `lab.py check` and a typical wrong answer
+    check_course.py lab COLLIDE         every coding exercise's worked solution passes
+                                        `lab.py check` (with COLLIDE on the PATH: exercise 2.7
+                                        runs `collide validate`) and a typical wrong answer
                                         (tests/docs/wrong_answers/NAME[--WHAT].py) is rejected,
                                         naming its slip (its "# hint:" line); other right answers
                                         (tests/docs/right_answers/) are accepted
@@ -38,6 +39,8 @@ import tempfile
 import h5py
 import numpy as np
 
+from worked_solution import SOLUTION  # <!-- solution: FILE --> and its ```python block
+
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 SCENES = ROOT / "data" / "scenes"
 COURSE = ROOT / "docs" / "course"
@@ -54,9 +57,6 @@ def chapters():
     if not BEFORE_YOU_START.exists():
         sys.exit(f"{BEFORE_YOU_START} is missing (install, PATH, scratch folder, units, notation)")
     return pages
-
-
-SOLUTION = re.compile(r"<!-- solution: (\S+) -->\n```python\n(.*?)```", re.S)
 
 
 def exercises(page):
@@ -701,9 +701,11 @@ def check_facts(collide):
     return failures
 
 
-def check_lab():
+def check_lab(collide):
     """Every coding exercise: its worked solution is accepted, its wrong answer rejected."""
     wrong_dir = ROOT / "tests/docs/wrong_answers"
+    env = dict(os.environ)
+    env["PATH"] = f"{pathlib.Path(collide).resolve().parent}{os.pathsep}{env['PATH']}"
     found = coding_exercises()
     failures = []
     if len(found) < MIN_CODING_EXERCISES:
@@ -715,15 +717,16 @@ def check_lab():
         with tempfile.TemporaryDirectory(prefix="collide-lab-") as scratch:
             right = pathlib.Path(scratch) / f"{name}.py"
             right.write_text(solution)
-            done = subprocess.run(["/usr/bin/python3", str(lab), "check", name, str(right)], capture_output=True, text=True)
+            done = subprocess.run(["/usr/bin/python3", str(lab), "check", name, str(right)], capture_output=True,
+                                  text=True, env=env)
         if done.returncode != 0 or f"{name}: right" not in done.stdout:
             failures.append(f"{page.name}: the worked solution of '{name}' is not accepted:\n{done.stdout}{done.stderr}")
         if not (wrong_dir / f"{name}.py").exists():
             failures.append(f"'{name}' has no wrong answer in {wrong_dir} to prove its checker rejects one")
         for wrong in answers(wrong_dir, name):
-            failures += judged(lab, name, wrong, "wrong", 1)
+            failures += judged(lab, name, wrong, "wrong", 1, env)
         for right in answers(ROOT / "tests/docs/right_answers", name):
-            failures += judged(lab, name, right, "right", 0)
+            failures += judged(lab, name, right, "right", 0, env)
         print(f"{name}: solution and {len(answers(ROOT / 'tests/docs/right_answers', name))} other right answers "
               f"accepted, {len(answers(wrong_dir, name))} wrong answers rejected")
     return failures
@@ -734,10 +737,11 @@ def answers(folder, name):
     return sorted(p for p in folder.glob(f"{name}*.py") if p.stem == name or p.stem.startswith(f"{name}--"))
 
 
-def judged(lab, name, answer, verdict, status):
+def judged(lab, name, answer, verdict, status, env):
     """The checker's verdict on answer must be `verdict`, and its message must hold the answer's
     `# hint: TEXT` line if it has one (a rejection that names the wrong slip misleads)."""
-    done = subprocess.run(["/usr/bin/python3", str(lab), "check", name, str(answer)], capture_output=True, text=True)
+    done = subprocess.run(["/usr/bin/python3", str(lab), "check", name, str(answer)], capture_output=True, text=True,
+                          env=env)
     if done.returncode != status or f"{name}: {verdict}" not in done.stdout:
         return [f"the checker of '{name}' does not find {answer.name} {verdict}:\n{done.stdout}{done.stderr}"]
     hints = re.findall(r"(?m)^# hint: (.*)$", answer.read_text())
@@ -755,8 +759,8 @@ def main():
         failures = check_figures(sys.argv[2])
     elif what == "facts" and len(sys.argv) == 3:
         failures = check_facts(sys.argv[2])
-    elif what == "lab":
-        failures = check_lab()
+    elif what == "lab" and len(sys.argv) == 3:
+        failures = check_lab(sys.argv[2])
     else:
         sys.exit(__doc__)
     for failure in failures:
