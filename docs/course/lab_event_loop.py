@@ -116,10 +116,19 @@ def run_probe(EventLoop, what, scene_dict, initial, t_end, x_want, v_want, hint)
     if x.shape != (len(x_want), 2) or v.shape != (len(x_want), 2):
         raise Wrong(f"{what}: positions {x.shape} and velocities {v.shape}, expected ({len(x_want)}, 2) each")
     for i in range(len(x_want)):
-        if np.max(np.abs(x[i] - x_want[i])) > TOLERANCE or np.max(np.abs(v[i] - v_want[i])) > TOLERANCE:
+        x_off, v_off = np.max(np.abs(x[i] - x_want[i])), np.max(np.abs(v[i] - v_want[i]))
+        if x_off > TOLERANCE or v_off > TOLERANCE:
             raise Wrong(f"{what}: at t = {t_end:g} disk {i} is at ({x[i][0]:.6g}, {x[i][1]:.6g}) with v = "
                         f"({v[i][0]:.6g}, {v[i][1]:.6g}), exact dynamics puts it at ({x_want[i][0]:.6g}, "
-                        f"{x_want[i][1]:.6g}) with v = ({v_want[i][0]:.6g}, {v_want[i][1]:.6g}): {hint}")
+                        f"{x_want[i][1]:.6g}) with v = ({v_want[i][0]:.6g}, {v_want[i][1]:.6g}): "
+                        + (NUDGED.format(x_off) if v_off <= TOLERANCE and x_off < 1e-6 else hint))
+
+
+# Right velocities and a position a hair off: not a wrong rule, but a contact moved in time or space.
+NUDGED = ("its velocity is right but its position is off by {:.1e}: an event a little late or early, or "
+          "disks pushed apart after a contact so as not to find it again; exact dynamics takes every event "
+          "at its time and moves nothing else (a pair that has just collided moves apart, b > 0: it is not "
+          "found again)")
 
 
 # --- 2. The suite, through collide validate ------------------------------------------------
@@ -135,7 +144,7 @@ MEANING = {
                      "masses, the shares are 2 m_j / (m_i + m_j) and 2 m_i / (m_i + m_j))"),
     "momentum_drift": "the total momentum changed: the two disks' impulses must be equal and opposite",
     "trajectory_error": ("the disks are not where exact dynamics puts them: an event missed, one at the wrong "
-                         "time, or disks not moved to the event's time"),
+                         "time, disks not moved to the event's time, or disks pushed apart after a contact"),
 }
 PERIODIC_OVERLAP = ("two disks overlap in the periodic box: a pair meets across the box's edge too, so try "
                     "each pair through the images of the other disk (shifted by -L, 0, +L in x and y) and "
@@ -192,7 +201,10 @@ def refused(summary):
 def check_event_loop(path):
     """EventLoop, a whole event-driven solver: probes known by hand, then the few-body suite as an
     exact solver to the predictability horizon."""
-    EventLoop = load(path, "EventLoop")
+    try:
+        EventLoop = load(path, "EventLoop")
+    except Wrong as e:
+        raise Wrong(str(e).replace("no function EventLoop()", "no class EventLoop")) from None
     probes = list(wall_probes()) + list(pair_probes())
     for probe in probes:
         run_probe(EventLoop, *probe)
