@@ -21,7 +21,8 @@
                                         Lyapunov exponent, the five seeds' spreads and
                                         drift, the walls' collision rate, the grid fitted to
                                         small disks, three routes to one
-                                        equilibrium, and wording found false
+                                        equilibrium, an event loop's 1e-9 push (caught in every
+                                        scene only when declared exact), and wording found false
 
 An exercise is a "### Exercise" section of a chapter (docs/course/[1-9]-*.md): its first ```sh
 block is the command a student runs, with `collide` meaning the built program, in a scratch
@@ -29,6 +30,7 @@ folder that sees the repository's data/ and docs/. A coding exercise also holds 
 solution as `<!-- solution: FILE -->` and a ```python block, written to FILE in the scratch folder
 before the commands run (its commands call `python3 docs/course/lab.py check NAME FILE`).
 """
+import json
 import os
 import pathlib
 import re
@@ -687,6 +689,28 @@ def fact_wording():
             if phrase in re.sub(r"\s+", " ", (COURSE / name).read_text())]
 
 
+def fact_declared_exact(collide, scratch):
+    """Exercise 2.7: the event loop that pushes each pair 1e-9 apart after its collision fails only
+    the periodic scene held to a stepped solver's limits, and every scene declared exact."""
+    failures = []
+    nudge = ROOT / "tests/docs/wrong_answers/event_loop--nudge.py"
+    suite = COURSE / "event_loop_suite.toml"
+    for declared, want in ((False, {"chaotic_periodic"}),
+                           (True, {"head_on_equal", "glancing", "head_on_mass_ratio_10", "newtons_cradle",
+                                   "chaotic_walled", "chaotic_periodic"})):
+        out = scratch / f"nudge-{declared}"
+        subprocess.run([collide, "validate", str(suite), "--out", str(out), "--jobs", "2", "--python-solver",
+                        f"you={nudge}:EventLoop"] + (["--solver-exact", "you"] if declared else []),
+                       capture_output=True, text=True)
+        checks = json.loads((out / "summary.json").read_text())["checks"]
+        failed = {c["scene"] for c in checks if c["backend"] == "you" and c["status"] == "fail"}
+        if failed != want:
+            claim = "declared exact" if declared else "declared as nothing"
+            failures.append(f"2-many-disks-exactly.md: the pushed-apart event loop {claim} fails in "
+                            f"{sorted(failed)}, the text says in {sorted(want)}")
+    return failures
+
+
 def check_facts(collide):
     with tempfile.TemporaryDirectory(prefix="collide-facts-") as scratch:
         scratch = pathlib.Path(scratch)
@@ -696,8 +720,9 @@ def check_facts(collide):
                     + fact_multi_contact(collide, scratch) + fact_pairing(collide, scratch)
                     + fact_correlated_series(collide, scratch) + fact_lyapunov() + fact_wording()
                     + fact_replicates(collide, scratch) + fact_enskog_walls(collide, scratch)
-                    + fact_fitted_grid(collide, scratch) + fact_sampling(collide, scratch))
-    print("16 statements of the text measured")
+                    + fact_fitted_grid(collide, scratch) + fact_sampling(collide, scratch)
+                    + fact_declared_exact(collide, scratch))
+    print("17 statements of the text measured")
     return failures
 
 
