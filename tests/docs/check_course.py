@@ -691,19 +691,20 @@ def fact_wording():
 
 def fact_declared_exact(collide, scratch):
     """Exercise 2.7: the event loop that pushes each pair 1e-9 apart after its collision fails only
-    the periodic scene held to a stepped solver's limits, and every scene declared exact."""
+    the periodic scene held to a stepped solver's limits, and every scene as lab.py check runs it,
+    declared exact."""
+    sys.path.insert(0, str(COURSE))
+    import lab_event_loop  # the checker's own validate(), so a checker that stops declaring exact fails here
     failures = []
     nudge = ROOT / "tests/docs/wrong_answers/event_loop--nudge.py"
-    suite = COURSE / "event_loop_suite.toml"
-    for declared, want in ((False, {"chaotic_periodic"}),
-                           (True, {"head_on_equal", "glancing", "head_on_mass_ratio_10", "newtons_cradle",
-                                   "chaotic_walled", "chaotic_periodic"})):
-        out = scratch / f"nudge-{declared}"
-        subprocess.run([collide, "validate", str(suite), "--out", str(out), "--jobs", "2", "--python-solver",
-                        f"you={nudge}:EventLoop"] + (["--solver-exact", "you"] if declared else []),
-                       capture_output=True, text=True)
-        checks = json.loads((out / "summary.json").read_text())["checks"]
-        failed = {c["scene"] for c in checks if c["backend"] == "you" and c["status"] == "fail"}
+    undeclared = scratch / "nudge-undeclared"
+    subprocess.run([collide, "validate", str(lab_event_loop.SUITE), "--out", str(undeclared), "--jobs", "2",
+                    "--python-solver", f"you={nudge}:EventLoop"], capture_output=True, text=True)
+    for declared, want, summary in (
+            (False, {"chaotic_periodic"}, json.loads((undeclared / "summary.json").read_text())),
+            (True, {"head_on_equal", "glancing", "head_on_mass_ratio_10", "newtons_cradle", "chaotic_walled",
+                    "chaotic_periodic"}, lab_event_loop.validate(nudge, scratch / "nudge-declared", collide))):
+        failed = {c["scene"] for c in summary["checks"] if c["backend"] == "you" and c["status"] == "fail"}
         if failed != want:
             claim = "declared exact" if declared else "declared as nothing"
             failures.append(f"2-many-disks-exactly.md: the pushed-apart event loop {claim} fails in "
