@@ -12,7 +12,8 @@
     python3 docs/course/lab.py sweep SUMMARY.json SCENE BACKEND    its error at each dt
     python3 docs/course/lab.py check EXERCISE FILE.py  checks the code a student wrote for a
                                         coding exercise (galperin, root, haff, tunnel, blocks,
-                                        metropolis, counting_sort); exit status 0 when it is right
+                                        metropolis, counting_sort, event_loop: this one runs
+                                        `collide validate`); exit status 0 when it is right
 
 Each reads the HDF5 layout of docs/output-format.md with h5py; nothing here simulates.
 """

@@ -7,8 +7,9 @@
                                         quoted line range (<!-- quote PATH:A-B -->) matches its file
     check_course.py figures COLLIDE     docs/figures/make_figures.py runs on the library scenes,
                                         every axis of every figure is labelled with a unit, >= 150 dpi
-    check_course.py lab                 every coding exercise's worked solution passes
-                                        `lab.py check` and a typical wrong answer
+    check_course.py lab COLLIDE         every coding exercise's worked solution passes
+                                        `lab.py check` (with COLLIDE on the PATH: exercise 2.7
+                                        runs `collide validate`) and a typical wrong answer
                                         (tests/docs/wrong_answers/NAME[--WHAT].py) is rejected,
                                         naming its slip (its "# hint:" line); other right answers
                                         (tests/docs/right_answers/) are accepted
@@ -20,7 +21,8 @@
                                         Lyapunov exponent, the five seeds' spreads and
                                         drift, the walls' collision rate, the grid fitted to
                                         small disks, three routes to one
-                                        equilibrium, and wording found false
+                                        equilibrium, an event loop's 1e-9 push (caught in every
+                                        scene only when declared exact), and wording found false
 
 An exercise is a "### Exercise" section of a chapter (docs/course/[1-9]-*.md): its first ```sh
 block is the command a student runs, with `collide` meaning the built program, in a scratch
@@ -28,6 +30,7 @@ folder that sees the repository's data/ and docs/. A coding exercise also holds 
 solution as `<!-- solution: FILE -->` and a ```python block, written to FILE in the scratch folder
 before the commands run (its commands call `python3 docs/course/lab.py check NAME FILE`).
 """
+import json
 import os
 import pathlib
 import re
@@ -37,6 +40,8 @@ import tempfile
 
 import h5py
 import numpy as np
+
+from worked_solution import SOLUTION  # <!-- solution: FILE --> and its ```python block
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 SCENES = ROOT / "data" / "scenes"
@@ -54,9 +59,6 @@ def chapters():
     if not BEFORE_YOU_START.exists():
         sys.exit(f"{BEFORE_YOU_START} is missing (install, PATH, scratch folder, units, notation)")
     return pages
-
-
-SOLUTION = re.compile(r"<!-- solution: (\S+) -->\n```python\n(.*?)```", re.S)
 
 
 def exercises(page):
@@ -687,6 +689,29 @@ def fact_wording():
             if phrase in re.sub(r"\s+", " ", (COURSE / name).read_text())]
 
 
+def fact_declared_exact(collide, scratch):
+    """Exercise 2.7: the event loop that pushes each pair 1e-9 apart after its collision fails only
+    the periodic scene held to a stepped solver's limits, and every scene as lab.py check runs it,
+    declared exact."""
+    sys.path.insert(0, str(COURSE))
+    import lab_event_loop  # the checker's own validate(), so a checker that stops declaring exact fails here
+    failures = []
+    nudge = ROOT / "tests/docs/wrong_answers/event_loop--nudge.py"
+    undeclared = scratch / "nudge-undeclared"
+    subprocess.run([collide, "validate", str(lab_event_loop.SUITE), "--out", str(undeclared), "--jobs", "2",
+                    "--python-solver", f"you={nudge}:EventLoop"], capture_output=True, text=True)
+    for declared, want, summary in (
+            (False, {"chaotic_periodic"}, json.loads((undeclared / "summary.json").read_text())),
+            (True, {"head_on_equal", "glancing", "head_on_mass_ratio_10", "newtons_cradle", "chaotic_walled",
+                    "chaotic_periodic"}, lab_event_loop.validate(nudge, scratch / "nudge-declared", collide))):
+        failed = {c["scene"] for c in summary["checks"] if c["backend"] == "you" and c["status"] == "fail"}
+        if failed != want:
+            claim = "declared exact" if declared else "declared as nothing"
+            failures.append(f"2-many-disks-exactly.md: the pushed-apart event loop {claim} fails in "
+                            f"{sorted(failed)}, the text says in {sorted(want)}")
+    return failures
+
+
 def check_facts(collide):
     with tempfile.TemporaryDirectory(prefix="collide-facts-") as scratch:
         scratch = pathlib.Path(scratch)
@@ -696,14 +721,17 @@ def check_facts(collide):
                     + fact_multi_contact(collide, scratch) + fact_pairing(collide, scratch)
                     + fact_correlated_series(collide, scratch) + fact_lyapunov() + fact_wording()
                     + fact_replicates(collide, scratch) + fact_enskog_walls(collide, scratch)
-                    + fact_fitted_grid(collide, scratch) + fact_sampling(collide, scratch))
-    print("16 statements of the text measured")
+                    + fact_fitted_grid(collide, scratch) + fact_sampling(collide, scratch)
+                    + fact_declared_exact(collide, scratch))
+    print("17 statements of the text measured")
     return failures
 
 
-def check_lab():
+def check_lab(collide):
     """Every coding exercise: its worked solution is accepted, its wrong answer rejected."""
     wrong_dir = ROOT / "tests/docs/wrong_answers"
+    env = dict(os.environ)
+    env["PATH"] = f"{pathlib.Path(collide).resolve().parent}{os.pathsep}{env['PATH']}"
     found = coding_exercises()
     failures = []
     if len(found) < MIN_CODING_EXERCISES:
@@ -715,15 +743,16 @@ def check_lab():
         with tempfile.TemporaryDirectory(prefix="collide-lab-") as scratch:
             right = pathlib.Path(scratch) / f"{name}.py"
             right.write_text(solution)
-            done = subprocess.run(["/usr/bin/python3", str(lab), "check", name, str(right)], capture_output=True, text=True)
+            done = subprocess.run(["/usr/bin/python3", str(lab), "check", name, str(right)], capture_output=True,
+                                  text=True, env=env)
         if done.returncode != 0 or f"{name}: right" not in done.stdout:
             failures.append(f"{page.name}: the worked solution of '{name}' is not accepted:\n{done.stdout}{done.stderr}")
         if not (wrong_dir / f"{name}.py").exists():
             failures.append(f"'{name}' has no wrong answer in {wrong_dir} to prove its checker rejects one")
         for wrong in answers(wrong_dir, name):
-            failures += judged(lab, name, wrong, "wrong", 1)
+            failures += judged(lab, name, wrong, "wrong", 1, env)
         for right in answers(ROOT / "tests/docs/right_answers", name):
-            failures += judged(lab, name, right, "right", 0)
+            failures += judged(lab, name, right, "right", 0, env)
         print(f"{name}: solution and {len(answers(ROOT / 'tests/docs/right_answers', name))} other right answers "
               f"accepted, {len(answers(wrong_dir, name))} wrong answers rejected")
     return failures
@@ -734,10 +763,11 @@ def answers(folder, name):
     return sorted(p for p in folder.glob(f"{name}*.py") if p.stem == name or p.stem.startswith(f"{name}--"))
 
 
-def judged(lab, name, answer, verdict, status):
+def judged(lab, name, answer, verdict, status, env):
     """The checker's verdict on answer must be `verdict`, and its message must hold the answer's
     `# hint: TEXT` line if it has one (a rejection that names the wrong slip misleads)."""
-    done = subprocess.run(["/usr/bin/python3", str(lab), "check", name, str(answer)], capture_output=True, text=True)
+    done = subprocess.run(["/usr/bin/python3", str(lab), "check", name, str(answer)], capture_output=True, text=True,
+                          env=env)
     if done.returncode != status or f"{name}: {verdict}" not in done.stdout:
         return [f"the checker of '{name}' does not find {answer.name} {verdict}:\n{done.stdout}{done.stderr}"]
     hints = re.findall(r"(?m)^# hint: (.*)$", answer.read_text())
@@ -755,8 +785,8 @@ def main():
         failures = check_figures(sys.argv[2])
     elif what == "facts" and len(sys.argv) == 3:
         failures = check_facts(sys.argv[2])
-    elif what == "lab":
-        failures = check_lab()
+    elif what == "lab" and len(sys.argv) == 3:
+        failures = check_lab(sys.argv[2])
     else:
         sys.exit(__doc__)
     for failure in failures:
