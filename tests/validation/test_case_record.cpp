@@ -115,5 +115,26 @@ TEST(CaseRecord, ChangedOrUnsignedRecordsAreDamaged) {
     EXPECT_NE(refusal(path).find("no checksum line"), std::string::npos) << refusal(path);
 }
 
+TEST(CaseRecord, ARecordOfAnotherBuildIsNamedAsSuchNotAsDamage) {
+    // A build with a run-schema column more or less writes another format: its records have
+    // fields this build does not read. The checksum holds, so the record is intact; the message
+    // says which build wrote it, and --resume runs the case again.
+    test::ScratchDirectory dir;
+    const std::string path = dir.file("r.toml");
+    write_case_result(sample(), path);
+    const std::string format = std::regex_replace(read_text(path), std::regex("(?:.|\n)*\nrecord_format = ['\"]([^'\"]*)['\"](?:.|\n)*"), "$1");
+    EXPECT_NE(format.find(':'), std::string::npos) << format;
+    edit_record(path, std::regex("\nrecord_format = [^\n]*"), "\nrecord_format = \"1:crc32:00000000\"", true);
+    const std::string other = refusal(path);
+    EXPECT_NE(other.find("a case record of another build of collide (record format 1:crc32:00000000, this build's " + format),
+              std::string::npos) << other;
+    EXPECT_NE(other.find("--resume"), std::string::npos) << other;
+    EXPECT_EQ(other.find("damaged"), std::string::npos) << other;
+    // A record from before the format was stated reads the same way.
+    write_case_result(sample(), path);
+    edit_record(path, std::regex("\nrecord_format = [^\n]*\n"), "\n", true);
+    EXPECT_NE(refusal(path).find("record format none"), std::string::npos) << refusal(path);
+}
+
 }  // namespace
 }  // namespace collide::validation

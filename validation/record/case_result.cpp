@@ -71,6 +71,21 @@ constexpr std::string_view checksum_prefix = "checksum = \"crc32:";
 
 std::string checksum_line(std::string_view body) { return "checksum = \"" + crc32_text(body) + "\"\n"; }
 
+// The record's layout, as the record states it: the fields this build writes and reads (bump
+// `layout` when one is added, removed or retyped) and the columns of [series], which follow the
+// run schema (core/io/run_schema.h) by themselves. A record of another layout was written by
+// another build of collide: refused as such, not as damage and not read field by field.
+constexpr int layout = 1;
+
+const std::string& record_format() {
+    static const std::string format = [] {
+        std::string columns;
+        for (const MetricColumn& column : metric_columns) columns += std::string(column.name) + ",";
+        return std::to_string(layout) + ":" + crc32_text(columns);
+    }();
+    return format;
+}
+
 // The record's [spec] table (left_out is not in it: a left-out case's record says why in its
 // status and diagnostic).
 toml::table spec_table(const CaseSpec& c) {
@@ -108,7 +123,8 @@ void write_case_result(const CaseResult& r, const std::string& path) {
     series.insert("total_energy", total_energy);
     toml::array trajectory;
     for (const auto& s : r.trajectory) trajectory.push_back(to_table(s));
-    toml::table root{{"spec", spec},
+    toml::table root{{"record_format", record_format()},
+                     {"spec", spec},
                      {"status", to_string(r.status)},
                      {"diagnostic", r.diagnostic},
                      {"disks", std::int64_t(r.disks)},
@@ -266,6 +282,19 @@ CaseSpec read_spec(const RecordReader& in, const toml::table& root) {
     return spec;
 }
 
+// A record whose checksum holds but whose format is not this build's: written by another
+// collide, before or after a change of the record's fields. --resume runs such a case again.
+void refuse_another_format(const RecordReader& in, const toml::table& root, const std::string& path) {
+    const toml::node* format = root.get("record_format");
+    const std::string theirs = format && format->is_string() ? format->value<std::string>().value() : "none";
+    if (theirs == "none" && format) in.damaged("field 'record_format' is not text");
+    if (theirs != record_format())
+        throw std::runtime_error(path + ": a case record of another build of collide (record format " + theirs +
+                                 ", this build's " + record_format() +
+                                 "): its fields differ from this build's; run the suite again, or run `collide validate "
+                                 "... --resume` to run that case again");
+}
+
 MetricSeries read_series(const RecordReader& in, const toml::table& root) {
     const toml::table& s = in.table(root, "series");
     const std::string w = "series.";
@@ -307,6 +336,7 @@ CaseResult read_case_result(const std::string& path) {
         throw std::runtime_error(path + ": unreadable case result: " + std::string(e.description()));
     }
     const RecordReader in(path);
+    refuse_another_format(in, root, path);
     CaseResult r;
     r.spec = read_spec(in, root);
     try {
