@@ -240,19 +240,17 @@ GasDraw restitution_0_99(GasDraw d) {
     return {d.z_mean, d.rate_factor, d.kt * std::exp(-(1 - 0.99 * 0.99) / 2 * nu * 4.8)};
 }
 
-// The statistics checks of `backend`'s group against `event`'s on periodic_gas.
-CheckResult judged_statistics(const GasDraw& draw, const std::string& backend, const std::string& check) {
-    const Scene s = periodic_scene();
+// The check `check` of `backend`'s cases against `event`'s in a one-scene suite comparing by
+// `comparison`, judged by the real comparison (compare_with_reference) at the default tolerances.
+CheckResult judged_against_event(const Scene& s, Comparison comparison, const std::vector<CaseResult>& results,
+                                 const std::string& backend, const std::string& check) {
     Suite suite;
     suite.reference = "event";
     SuiteScene entry;
     entry.name = s.name;
     entry.scene = s;
-    entry.comparison = Comparison::statistics;
+    entry.comparison = comparison;
     suite.scenes.push_back(entry);
-    std::vector<CaseResult> results = periodic_group(s, "event", true, {periodic_z, 1, 1}, 1);
-    const auto tested = periodic_group(s, backend, false, draw, 2);
-    results.insert(results.end(), tested.begin(), tested.end());
     std::map<std::string, Tolerances> tolerances;
     std::map<std::string, const BackendInfo*> declared;
     for (const std::string& b : {std::string("event"), backend}) {
@@ -267,35 +265,25 @@ CheckResult judged_statistics(const GasDraw& draw, const std::string& backend, c
     return {};
 }
 
+// The statistics checks of `backend`'s group against `event`'s on periodic_gas.
+CheckResult judged_statistics(const GasDraw& draw, const std::string& backend, const std::string& check) {
+    const Scene s = periodic_scene();
+    std::vector<CaseResult> results = periodic_group(s, "event", true, {periodic_z, 1, 1}, 1);
+    const auto tested = periodic_group(s, backend, false, draw, 2);
+    results.insert(results.end(), tested.begin(), tested.end());
+    return judged_against_event(s, Comparison::statistics, results, backend, check);
+}
+
 // --- trajectories: head_on_equal against the reference run of its seed -----------------------
 
 CheckResult judged_trajectory(const CaseResult& tested) {
     const Scene s = scene_file("head_on_equal");
-    Suite suite;
-    suite.reference = "event";
-    SuiteScene entry;
-    entry.name = s.name;
-    entry.scene = s;
-    entry.comparison = Comparison::trajectory;
-    suite.scenes.push_back(entry);
     CaseResult ref = head_on_case(s, HeadOn::honest, "event");
     ref.spec.reference = true;
     ref.spec.dt = tested.spec.dt;
     // Twins one ulp apart stay within rounding of each other through one collision.
     ref.twin_separation.assign(ref.trajectory_time.size(), 1e-14);
-    const std::vector<CaseResult> results = {ref, tested};
-    std::map<std::string, Tolerances> tolerances;
-    std::map<std::string, const BackendInfo*> declared;
-    for (const std::string& b : {std::string("event"), tested.spec.backend}) {
-        tolerances[b] = ToleranceTable{}.for_backend(find_backend(b));
-        declared[b] = &find_backend(b);
-    }
-    const Comparisons c = compare_with_reference(suite, results, {scene_features(s, generate_initial_state(s))},
-                                                 tolerances, declared);
-    for (const CheckResult& r : c.checks)
-        if (r.check == "trajectory_error") return r;
-    ADD_FAILURE() << "no trajectory_error check";
-    return {};
+    return judged_against_event(s, Comparison::trajectory, {ref, tested}, tested.spec.backend, "trajectory_error");
 }
 
 // The collision resolved one step (dt = 1e-3) after the contact time, as an exact solver whose
