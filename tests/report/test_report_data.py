@@ -608,7 +608,7 @@ class ScenesComparedSeedBySeed(unittest.TestCase):
         self.assertNotIn("r_min", " ".join(text))
 
     def test_use_for_says_which_statistic_earned_it(self):
-        self.assertEqual(verdicts.use_for_text(self.ACCURACY), ["inelastic_gas: dt ≤ 0.002 (τ, paired over 8 seeds)"])
+        self.assertEqual(verdicts.use_for_text(self.ACCURACY), ["dt ≤ 0.002 (τ, paired over 8 seeds): inelastic_gas"])
 
     def test_a_scene_checked_only_says_why(self):
         text = verdicts.checked_only_text(["far"], self.ACCURACY["checked_only_reasons"])
