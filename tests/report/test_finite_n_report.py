@@ -97,6 +97,12 @@ class TheRoutesStandSideBySide(unittest.TestCase):
         html = templating.render("physics.html.j2", physics=physics.section(routes_summary(7.8450, "fail")))
         self.assertIn("ecmc − event: z = +10.04 from 7.845 ± 0.0021 against 7.82305 ± 0.00061 (FAIL)", html)
 
+    def test_the_figure_has_no_text_over_text_or_cut(self):
+        # The legends sat over the points and the frame cut the top ones; now under the panels.
+        import figure_text
+        self.assertEqual(figure_text.faults(finite_n.figure(summary())), [])
+        self.assertEqual(figure_text.faults(finite_n.figure(routes_summary(7.8262, "pass"))), [])
+
     def test_every_route_has_its_own_marker(self):
         self.assertEqual(len(set(finite_n.ROUTE_MARKERS.values())), len(finite_n.ROUTE_MARKERS))
         self.assertTrue(finite_n.figure(routes_summary(7.8262, "pass")).startswith(b"\x89PNG"))

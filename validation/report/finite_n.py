@@ -99,7 +99,8 @@ def figure(summary):
         return None
     sizes = sorted({int(r["facts"]["disks"]) for r in points})
     backends = sorted({r["backend"] for r in points}, key=lambda b: (b != "event", b))
-    fig, axes = plt.subplots(1, len(sizes), figsize=(4.2 * len(sizes), 3.6), squeeze=False)
+    # The legends under the panels (constrained layout makes room): above them they hid points.
+    fig, axes = plt.subplots(1, len(sizes), figsize=(4.6 * len(sizes), 5.2), squeeze=False, layout="constrained")
     for ax, n in zip(axes[0], sizes):
         mine = [r for r in points if int(r["facts"]["disks"]) == n]
         for box in sorted({r["box"] for r in mine}):
@@ -116,13 +117,13 @@ def figure(summary):
                 ax.errorbar([r["parameter"] + shift], [r["value"]], yerr=[r["standard_error"]],
                             marker=ROUTE_MARKERS.get(r["backend"], "s"), linestyle="none",
                             color=colour if mixed else "grey")
-        for b in backends:
+        for b in [b for b in backends if any(r["backend"] == b for r in mine)]:  # the routes of this panel
             ax.plot([], [], marker=ROUTE_MARKERS.get(b, "s"), linestyle="none", color="black", label=f"{b} (± 1 SE)")
         ax.set_title(f"N = {n}")
         ax.set_xlabel("area fraction η = Nπr²/A")
         ax.set_ylabel("βPd² (d the diameter)")
-        ax.legend(fontsize=figures.TEXT_PT, loc="upper left")
-    fig.tight_layout()
+        ax.margins(x=0.08, y=0.12)  # no point on the frame
+        ax.legend(fontsize=figures.TEXT_PT, loc="upper center", bbox_to_anchor=(0.5, -0.2))
     return figures.png(fig)
 
 
