@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "conformance.h"
+#include "core/run_driver.h"
 #include "core/scene/scene_loader.h"
 #include "core/thermo/kinetic_temperature.h"
 
@@ -168,6 +169,23 @@ TEST(FourDiskBox, ExactSolversAndMetropolisGiveTheSameWallPressureAndPairContact
         expect_agree(md.wall_force, mc.wall_force, std::string(backend) + " wall pressure beta F");
         expect_agree(md.pair_contact, mc.pair_contact, std::string(backend) + " pair contact density");
     }
+}
+
+// The course's and the suites' `metropolis` backend (sampling/metropolis_sampler.h) in the same
+// box: its wall pressure (the density of centres at contact with a wall, extrapolated by its own
+// parabola over 5 % of sigma, per unit wall length, times sigma^2) against `event`'s momentum
+// flux through the walls, beta F / perimeter * sigma^2: the fourth route of this box.
+TEST(FourDiskBox, TheMetropolisBackendGivesEventsWallPressure) {
+    Scene scene = four_disk_scene();
+    scene.run.sweeps = 2'000'000;
+    scene.run.duration = 1;
+    scene.run.output_interval = 1;
+    auto sampler = find_backend("metropolis").create(BackendOptions{});
+    const RunResult sampled = run_scene(scene, *sampler, generate_initial_state(scene));
+    const Estimate mc{sampled.stats.counters.at("beta_pressure"), sampled.stats.counters.at("beta_pressure_error")};
+    const Estimate force = molecular_dynamics("event", 20000).wall_force;
+    const double per_length = sigma * sigma / (4 * side);
+    expect_agree({force.mean * per_length, force.error * per_length}, mc, "metropolis backend wall pressure beta P d^2");
 }
 
 }  // namespace
