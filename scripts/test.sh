@@ -17,5 +17,5 @@ trap 'rm -rf "$out"' EXIT
 build/release/collide validate validation/suites/full.toml --out "$out/full" --jobs "$(nproc)"
 build/release/collide validate validation/suites/default.toml --out "$out/default" --jobs "$(nproc)"
 build/release/collide report "$out/default"
-python="$(sed -n 's/^Python3_EXECUTABLE:[A-Z]*=//p' build/release/CMakeCache.txt)"  # ctest's interpreter
+python="$(sed -n 's/^_\{0,1\}Python3_EXECUTABLE:[A-Z]*=//p' build/release/CMakeCache.txt | head -n 1)"  # ctest's interpreter (FindPython3 caches it as _Python3_EXECUTABLE)
 "${python:-python3}" tests/report/test_browser.py "$out/default"

@@ -417,7 +417,7 @@ def work_precision(summary, scene, digest, aliases, fits=None):
     if statistic == "Z":
         ax.set_ylabel("|Z − Z_ref| / Z_ref (means ± SE) [dimensionless]")
     elif statistical:
-        ax.set_ylabel(f"|{statistic} − {statistic}_ref| / {statistic}_ref (per-seed differences ± SE) [dimensionless]")
+        ax.set_ylabel(f"|{statistic} − {statistic}_ref| / {statistic}_ref (paired ± SE)")
     else:
         ax.set_ylabel("trajectory error / r_min, mean ± SE [dimensionless]")
     ax.set_title(tex(f"{scene}: work against precision"))

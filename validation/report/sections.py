@@ -17,7 +17,7 @@ FAILURES_SHOWN = 200  # failed checks listed on the page; every one is on checks
 def digest_table(a):
     c = a.summary["counts"]
     verdict_of = {v["backend"]: v for v in a.verdicts}
-    empty = {"verdict": "", "low_power": None, "trusted": "", "use_for": [], "not_for": "", "not_for_list": [], "cannot_run": "", "cost": "", "cost_at_accuracy": [],
+    empty = {"verdict": "", "low_power": None, "trusted": "", "use_for": [], "use_for_cell": [], "not_for": "", "not_for_list": [], "cannot_run": "", "cost": "", "cost_at_accuracy": [],
              "failed": False}
     what = {b["backend"]: b["short"] for b in backend_lines.backend_lines(a.summary)}
     rows = [dict(r, what=what.get(r["backend"], ""), **{k: v for k, v in verdict_of.get(r["backend"], empty).items()

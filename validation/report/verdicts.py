@@ -219,20 +219,27 @@ def verdict(summary, row, aliases, by_combination=None, cheapest=None):
         not_for.append("fails its checks on " + ", ".join(failed))
         cell.append({"text": not_for[-1], "title": None})
     use_for = use_for_text(accuracy)
+    use_cell = [{"text": u, "title": None} for u in use_for]
     checked = [s for s in accuracy.get("checked_only", []) if s in trusted]
     if checked and b == summary["reference"]:
         use_for.append("every scene it runs (exact by construction; conservation checked)")
+        use_cell.append({"text": use_for[-1], "title": None})
     elif checked:
-        use_for += checked_only_text(checked, accuracy.get("checked_only_reasons") or {})
+        reasons = accuracy.get("checked_only_reasons") or {}
+        use_for += checked_only_text(checked, reasons)
+        # On the first screen in short, the reason on hover (the row stays a few lines high).
+        use_cell += [{"text": f"{s}: checked only (conservation, overlaps)", "title": t}
+                     for s, t in zip(checked, checked_only_text(checked, reasons))]
     low_power = low_power_text(accuracy)
     if b in aliases:  # the same numbers bit for bit give the same entries: said once, the row stays short
         same = f"as {aliases[b]}"
         use_for, cell = [same] if use_for else [], [{"text": same, "title": None}] if cell else []
+        use_cell = [{"text": same, "title": None}] if use_cell else []
         low_power = f"Z passes with low power, {same}" if low_power else None
     cannot_run = ", ".join(accuracy.get("cannot_run") or cannot) or "—"
     return {"backend": b, "verdict": "; ".join(parts), "low_power": low_power,
             "trusted": "; ".join(use_for) or "none",
-            "use_for": use_for, "not_for_list": cell, "not_for": "; ".join(not_for) or "—", "cannot_run": cannot_run,
+            "use_for": use_for, "use_for_cell": use_cell, "not_for_list": cell, "not_for": "; ".join(not_for) or "—", "cannot_run": cannot_run,
             "cost": cost_text(summary, b, cheapest), "cost_at_accuracy": cost_at_accuracy_text(summary, b), "failed": bool(row["fail"]) or bool(physical),
             "anchor": digest.anchor("backend", b)}
 
