@@ -106,6 +106,22 @@ TEST(ChipmunkSolver, CountsEachPairCollisionOnce) {
     EXPECT_EQ(lone.stats().contacts, 0);  // it hit the wall only
 }
 
+TEST(ChipmunkSolver, ATouchingRowIsStruckOneContactAtATime) {
+    // Newton's cradle: five equal disks touching in a row, struck by a sixth at speed 1.
+    // Chipmunk's circle test makes a contact only for |d| < r_a + r_b, strictly, so exactly
+    // touching disks are not in contact until the struck one moves into its neighbour: the
+    // collisions come one at a time, each an isolated contact solved exactly, and the last disk
+    // leaves at 1 (the textbook answer; Box2D, which counts touching as contact, does not:
+    // Box2dSolver.ATouchingRowIsOneIslandAndLosesEnergyAsASimultaneousImpact).
+    Scene scene = test::box_scene(20, 4);
+    scene.run.dt = 1e-3;
+    std::vector<test::DiskSpec> disks{{2.0, 2.0, 1.0, 0.0, 0.5, 1.0}};
+    for (int k = 0; k < 5; ++k) disks.push_back({4.0 + k, 2.0, 0.0, 0.0, 0.5, 1.0});
+    const auto s = run_to(scene, test::make_state(disks), 3.0);
+    for (int i = 0; i < 5; ++i) EXPECT_NEAR(s.vx[i], 0.0, kDouble) << "disk " << i;
+    EXPECT_NEAR(s.vx[5], 1.0, kDouble);
+}
+
 TEST(ChipmunkSolver, StoneNeverMovesAndDeflects) {
     Scene scene = test::box_scene(10, 4);
     scene.run.dt = 1e-3;
