@@ -233,12 +233,18 @@ std::vector<ContactGroup> attribute_change(const Scene& scene, const ParticleSta
     return groups;
 }
 
+std::vector<double> step_times(double from, double dt, double t_end) {
+    std::vector<double> times;
+    const std::int64_t first = std::int64_t(std::llround(from / dt)), last = std::int64_t(std::floor(t_end / dt + 1e-9));
+    for (std::int64_t k = first; k < last; ++k) times.push_back(double(k + 1) * dt);
+    return times;
+}
+
 EnergyJump largest_energy_change(Solver& solver, const Scene& scene, double t_end,
                                  const std::function<void(double, double)>& on_step) {
     const double dt = scene.run.dt;
-    std::int64_t k = std::int64_t(std::llround(solver.time() / dt));
-    const std::int64_t last = std::int64_t(std::floor(t_end / dt + 1e-9));
-    if (last <= k) {
+    const std::vector<double> times = step_times(solver.time(), dt, t_end);
+    if (times.empty()) {
         char text[200];
         std::snprintf(text, sizeof text, "no whole step of dt = %g lies between t = %g and t = %g", dt, solver.time(),
                       t_end);
@@ -248,9 +254,10 @@ EnergyJump largest_energy_change(Solver& solver, const Scene& scene, double t_en
     EnergyJump jump;
     bool found = false;
     solver.read_state(before);
-    for (; k < last; ++k) {
-        solver.advance_to(double(k + 1) * dt);
-        if (on_step) on_step(double(k + 1) * dt, t_end);
+    std::int64_t k = std::int64_t(std::llround(solver.time() / dt));
+    for (const double t : times) {
+        solver.advance_to(t);
+        if (on_step) on_step(t, t_end);
         solver.read_state(after);
         const double change = total_energy(scene, after) - total_energy(scene, before);
         const bool nonfinite = !std::isfinite(change);
@@ -262,6 +269,7 @@ EnergyJump largest_energy_change(Solver& solver, const Scene& scene, double t_en
         }
         if (nonfinite) break;  // later steps only carry the NaN on
         std::swap(before, after);
+        ++k;
     }
     if (!jump.nonfinite) jump.groups = attribute_change(scene, worst_before, worst_after);
     return jump;

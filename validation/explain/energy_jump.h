@@ -60,6 +60,12 @@ std::string contact_kind(std::size_t disks, std::size_t pairs, std::size_t walls
 std::vector<ContactGroup> attribute_change(const Scene& scene, const ParticleState<double>& before,
                                            const ParticleState<double>& after);
 
+// The times largest_energy_change advances a solver at time `from` to: each whole multiple of dt
+// after `from` up to t_end (empty when none lies there). Exposed so that a caller can announce
+// them first (Solver::plan_outputs): an outside solver then makes one program call for the whole
+// search instead of one per step.
+std::vector<double> step_times(double from, double dt, double t_end);
+
 // Steps a loaded solver from its current time to t_end one dt at a time (advance_to the next
 // whole multiple of dt) and returns the step whose mechanical energy change is largest in
 // magnitude, attributed; or the first step after which the state is not finite. Throws

@@ -34,14 +34,23 @@ std::optional<IntervalJump> largest_interval_jump(const MetricSeries& series, do
 
 namespace {
 
-// Advances the solver to the last output time at or before t and checks its kinetic energy
-// against the record's (relative 1e-9: the same code on the same input retraces the run).
-void require_same_path(Solver& solver, const ReplayedCase& c, const CaseResult& record, double t) {
+// The output time at or before t at which the replay is checked against the record (0 when
+// there is none to check: then nothing is advanced), on the step grid.
+double path_check_time(const ReplayedCase& c, const CaseResult& record, double t) {
     const double interval = c.scene.run.output_interval, dt = c.scene.run.dt;
     const double check = std::floor(t / interval + 1e-9) * interval;
+    if (check <= 0 || !recorded_kinetic_energy(record, check)) return 0;
+    return std::round(check / dt) * dt;
+}
+
+// Advances the solver to `at` (path_check_time) and checks its kinetic energy against the
+// record's (relative 1e-9: the same code on the same input retraces the run).
+void require_same_path(Solver& solver, const ReplayedCase& c, const CaseResult& record, double at) {
+    const double interval = c.scene.run.output_interval;
+    const double check = std::floor(at / interval + 0.5) * interval;  // the output time `at` stands for
     const auto recorded = recorded_kinetic_energy(record, check);
     if (!recorded) return;
-    if (check > 0) solver.advance_to(std::round(check / dt) * dt);
+    solver.advance_to(at);
     ParticleState<double> state;
     solver.read_state(state);
     const double k = compute_disk_metrics(c.scene, state, check).kinetic_energy;  // as the run recorded it
@@ -49,6 +58,17 @@ void require_same_path(Solver& solver, const ReplayedCase& c, const CaseResult& 
         throw std::runtime_error("case " + c.spec.id + ": the rerun does not retrace the recorded run (kinetic energy " +
                                  std::to_string(k) + " at t = " + std::to_string(check) + ", recorded " +
                                  std::to_string(*recorded) + "); was the program or a file changed since the run?");
+}
+
+// The output times from `from` up to `start` (which ends the list), the replay's way to the
+// search window: one advance per output interval, so that a long approach shows progress.
+std::vector<double> approach_times(double from, double start, double interval) {
+    std::vector<double> times;
+    for (double t = from; t < start;) {
+        t = std::min(start, (std::floor(t / interval + 1e-9) + 1) * interval);
+        times.push_back(t);
+    }
+    return times;
 }
 
 // A case run by an outside solver that the suite file does not name (`validate --solver`,
@@ -91,10 +111,18 @@ ExplainedCase explain_case(const std::string& dir, const Suite& suite, const std
     auto solver = c.backend.create(c.options);
     solver->load(c.scene, c.initial);
     const double start = std::floor(from / dt + 1e-9) * dt;
-    if (!what_if) require_same_path(*solver, c, record, start);
-    const double interval = c.scene.run.output_interval;
-    for (double t = solver->time(); t < start;) {
-        t = std::min(start, (std::floor(t / interval + 1e-9) + 1) * interval);
+    const double check = what_if ? 0 : path_check_time(c, record, start);
+    const std::vector<double> approach = approach_times(check, start, c.scene.run.output_interval);
+    // Every time the replay will stop at, announced first: an outside solver then runs them all in
+    // one program call from t = 0, as the recorded run did (a call per step would start Node and
+    // the engine each time, and an engine restarted from a state has lost its contact history).
+    std::vector<double> planned;
+    if (check > 0) planned.push_back(check);
+    for (const double t : approach) planned.push_back(t);
+    for (const double t : step_times(start, dt, end)) planned.push_back(t);
+    solver->plan_outputs(planned);
+    if (check > 0) require_same_path(*solver, c, record, check);
+    for (const double t : approach) {
         solver->advance_to(t);
         if (on_progress) on_progress(t, end);
     }
