@@ -240,6 +240,37 @@ TEST(AccuracyVerdicts, ACoolingGasEarnsUseForAndNotForFromItsPairedCoolingTime) 
     EXPECT_TRUE(accuracy_verdicts("event", checks, {line}, loose).at("step").not_for.empty());
 }
 
+TEST(AccuracyVerdicts, AFewSeedPairedErrorIsBoundedWithStudentsTNotTheNormal196) {
+    // 0.2 % +- 0.1 % from 4 paired seeds: within 0.5 % by the normal bound (0.2 + 1.96 * 0.1 =
+    // 0.396 %) but not by Student's t with 3 degrees of freedom (0.2 + 3.182 * 0.1 = 0.518 %):
+    // the standard error comes from the scatter of 4 differences. With 8 seeds (t = 2.365:
+    // 0.437 %) it is within.
+    auto line_of = [](std::size_t seeds) {
+        WorkPrecisionPoint p = paired_point(0.002, 0.002, 0.001);
+        p.replicates = seeds;
+        p.paired->replicates = seeds;
+        WorkPrecisionLine line = pressure_line("step", {p});
+        line.scene = "inelastic_gas";
+        line.error_kind = "|tau - tau_ref| / tau_ref";
+        return line;
+    };
+    const std::vector<CheckResult> checks = {check("step", "inelastic_gas", "run", 0, 0)};
+    const AccuracyVerdict four = accuracy_verdicts("event", checks, {line_of(4)}, VerdictThresholds{}).at("step");
+    EXPECT_TRUE(four.use_for.empty());
+    ASSERT_EQ(four.not_for.size(), 1u);
+    EXPECT_NEAR(four.not_for[0].confidence_factor, 3.182, 1e-3);
+    EXPECT_FALSE(four.not_for[0].resolved);  // 0.2 % - 3.18 * 0.1 % is not beyond 0.5 %: undecided
+    const AccuracyVerdict eight = accuracy_verdicts("event", checks, {line_of(8)}, VerdictThresholds{}).at("step");
+    ASSERT_EQ(eight.use_for.size(), 1u);
+    EXPECT_NEAR(eight.use_for[0].confidence_factor, 2.365, 1e-3);
+}
+
+TEST(AccuracyVerdicts, AnUnpairedErrorKeepsTheNormal196) {
+    WorkPrecisionPoint p = paired_point(0.002, 0.002, 0.001);
+    p.paired.reset();  // a Z error from many batches: the normal bound
+    EXPECT_DOUBLE_EQ(confidence_factor(p), confidence_95);
+}
+
 TEST(AccuracyVerdicts, CheckedOnlyScenesSayWhy) {
     CheckResult refused = check("step", "far", "collision_rate", 0, 0, CheckStatus::left_out);
     refused.detail = "the reference backend cannot run this scene: gravity with stones";

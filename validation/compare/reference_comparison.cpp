@@ -417,7 +417,7 @@ std::optional<StatisticalDifference> paired_difference(const Group& g, const Gro
     s.relative_standard_error = md.standard_error / std::fabs(mb.mean);
     s.sigmas = md.standard_error > 0 ? std::fabs(md.mean) / md.standard_error : (md.mean == 0 ? 0 : INFINITY);
     s.resolved = s.sigmas >= resolved_standard_errors;
-    s.upper_limit_95 = std::fabs(s.relative) + 1.96 * s.relative_standard_error;
+    s.upper_limit_95 = std::fabs(s.relative) + student_t_95(double(d.size() - 1)) * s.relative_standard_error;  // n seeds: t, n - 1 dof
     s.detectable = z_max * s.relative_standard_error;
     s.replicates = s.reference_replicates = d.size();
     return s;

@@ -47,6 +47,11 @@ double normal_equivalent_of_t(double t, double dof) {
     return gsl_cdf_ugaussian_Qinv(q);
 }
 
+double student_t_95(double dof) {
+    if (!(dof > 0) || !std::isfinite(dof)) return gsl_cdf_ugaussian_Qinv(0.025);
+    return gsl_cdf_tdist_Qinv(0.025, dof);
+}
+
 double z_score(const MeanAndError& a, const MeanAndError& b) {
     const double difference = std::fabs(a.mean - b.mean);
     const double error = std::hypot(a.standard_error, b.standard_error);

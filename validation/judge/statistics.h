@@ -35,6 +35,12 @@ PooledEstimate pool_inverse_variance(const std::vector<Estimate>& replicates);
 // against 0.27 % for a normal score; judging the converted z at 3 keeps the 0.27 %.
 double normal_equivalent_of_t(double t, double dof);
 
+// The two-sided 95 % point of Student's t with `dof` degrees of freedom: the factor of the
+// standard error in a 95 % bound on a mean of dof + 1 replicates that estimates its own error
+// (12.71 at dof 1, 3.18 at 3, 2.36 at 7, 1.96 as dof grows). The normal 1.96 for dof <= 0 or
+// infinite (an error known from elsewhere).
+double student_t_95(double dof);
+
 // |a - b| / sqrt(se_a^2 + se_b^2): how many combined standard errors apart two means are.
 // Infinity when they differ with zero error bars, 0 when equal.
 double z_score(const MeanAndError& a, const MeanAndError& b);

@@ -25,7 +25,7 @@ struct StatisticalDifference {
     double relative_standard_error = 0;  // sqrt(se^2 + se_ref^2) / |reference|
     double sigmas = 0;                 // |mean - reference| / sqrt(se^2 + se_ref^2)
     bool resolved = false;             // sigmas >= resolved_standard_errors
-    double upper_limit_95 = 0;         // |relative| + 1.96 relative_standard_error
+    double upper_limit_95 = 0;         // |relative| + 1.96 relative_standard_error (paired over n seeds: Student's t point, n - 1 dof)
     // The smallest |relative difference - prediction| the check fails (power about one half):
     // its z limit times the combined standard error (with the prediction's uncertainty), / |reference|.
     double detectable = 0;

@@ -4,9 +4,16 @@
 #include <cmath>
 #include <set>
 
+#include "validation/judge/statistics.h"
 #include "validation/plan/backend_variant.h"
 
 namespace collide::validation {
+
+double confidence_factor(const WorkPrecisionPoint& p) {
+    if (p.paired && p.paired->paired && p.paired->replicates >= 2) return student_t_95(double(p.paired->replicates - 1));
+    return confidence_95;
+}
+
 namespace {
 
 // The point's error as the verdict states it: the signed relative difference where the line
@@ -17,7 +24,7 @@ double signed_error(const WorkPrecisionPoint& p) {
 }
 
 bool within(const WorkPrecisionPoint& p, double accuracy) {
-    return p.error + confidence_95 * p.error_standard_error <= accuracy;
+    return p.error + confidence_factor(p) * p.error_standard_error <= accuracy;
 }
 
 void judge_line(const WorkPrecisionLine& line, double accuracy, AccuracyVerdict& v) {
@@ -36,12 +43,12 @@ void judge_line(const WorkPrecisionLine& line, double accuracy, AccuracyVerdict&
     }
     if (best)
         v.use_for.push_back({line.scene, line.error_kind, accuracy, best->dt, best->error, best->error_standard_error,
-                             best->replicates});
+                             best->replicates, confidence_factor(*best)});
     if (worst) {
         NotFor n{line.scene, line.error_kind, accuracy, dt_min, dt_max, worst->dt, signed_error(*worst),
-                 worst->error_standard_error, 0, worst->replicates, false};
+                 worst->error_standard_error, 0, worst->replicates, false, confidence_factor(*worst)};
         n.sigmas = n.standard_error > 0 ? std::fabs(n.error) / n.standard_error : INFINITY;
-        n.resolved = std::fabs(n.error) - confidence_95 * n.standard_error > accuracy;
+        n.resolved = std::fabs(n.error) - n.confidence_factor * n.standard_error > accuracy;
         v.not_for.push_back(n);
     }
 }

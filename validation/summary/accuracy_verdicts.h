@@ -4,7 +4,8 @@
 //  - use for: a scene and the largest dt at which its error against the reference is within the
 //    suite's stated accuracy ([verdicts] trajectory_accuracy, pressure_accuracy, and for the
 //    scenes compared seed by seed cooling_accuracy, collision_rate_accuracy) at 95 % confidence:
-//    error + 1.96 SE <= accuracy;
+//    error + 1.96 SE <= accuracy (Student's t point for the replicates instead of 1.96 where the
+//    error is a seed-paired mean that estimates its own standard error from few seeds);
 //  - not for: a scene where some dt is not shown within it, with the measured error (the signed
 //    pressure bias where there is one), its SE and how many SE it lies from zero; `resolved` where
 //    even error - 1.96 SE exceeds the accuracy (else more replicates could still clear it);
@@ -42,6 +43,7 @@ struct UseFor {
     double dt = 0;  // the largest dt within the accuracy
     double error = 0, standard_error = 0;
     std::size_t replicates = 0;
+    double confidence_factor = 0;  // the SE's factor in the 95 % bound: 1.96, or Student's t point
 };
 
 struct NotFor {
@@ -53,7 +55,8 @@ struct NotFor {
     double standard_error = 0;
     double sigmas = 0;              // |error| / standard_error
     std::size_t replicates = 0;
-    bool resolved = false;          // |error| - 1.96 SE > accuracy: beyond it at 95 % confidence
+    bool resolved = false;          // |error| - factor SE > accuracy: beyond it at 95 % confidence
+    double confidence_factor = 0;   // as UseFor's
 };
 
 // What a backend's work-precision line costs at the stated accuracy: wall seconds per simulated
@@ -108,5 +111,11 @@ std::map<std::string, AccuracyVerdict> accuracy_verdicts(const std::string& refe
 
 // 1.96: the two-sided 95 % point of the normal distribution.
 constexpr double confidence_95 = 1.96;
+
+// The factor of a work-precision point's standard error in its 95 % bound: Student's t point
+// with n - 1 degrees of freedom for a difference paired over n seeds (its standard error comes
+// from the scatter of those n differences: with 4 seeds the bound is 3.18 SE, not 1.96), else
+// confidence_95 (an error from many batches or replicates).
+double confidence_factor(const WorkPrecisionPoint& p);
 
 }  // namespace collide::validation

@@ -453,7 +453,7 @@ Json accuracy_json(const AccuracyVerdict& v) {
         Object x;
         x.text("scene", u.scene).text("error_kind", u.error_kind).number("accuracy", u.accuracy).number("dt", u.dt)
             .number("error", u.error).number("standard_error", u.standard_error)
-            .integer("replicates", (long long)u.replicates);
+            .integer("replicates", (long long)u.replicates).number("confidence_factor", u.confidence_factor);
         return x.json();
     }));
     o.field("not_for", array(v.not_for, [](const NotFor& n) {
@@ -461,7 +461,8 @@ Json accuracy_json(const AccuracyVerdict& v) {
         x.text("scene", n.scene).text("error_kind", n.error_kind).number("accuracy", n.accuracy)
             .number("dt_min", n.dt_min).number("dt_max", n.dt_max).number("dt", n.dt).number("error", n.error)
             .number("standard_error", n.standard_error).field("sigmas", nullable(n.sigmas))
-            .integer("replicates", (long long)n.replicates).boolean("resolved", n.resolved);
+            .integer("replicates", (long long)n.replicates).boolean("resolved", n.resolved)
+            .number("confidence_factor", n.confidence_factor);
         return x.json();
     }));
     o.field("cost_at_accuracy", array(v.cost_at_accuracy, [](const CostAtAccuracy& c) {
