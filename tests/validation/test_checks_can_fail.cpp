@@ -391,6 +391,8 @@ std::vector<FaultCase> fault_cases() {
          head_on(HeadOn::restitution_0_999, "step", "energy_drift")},
         {"energy_drift", "event", "head_on_equal", "restitution 0.999 at its one collision",
          head_on(HeadOn::restitution_0_999, "event", "energy_drift")},
+        {"energy_drift", "box2d", "head_on_equal", "restitution 0.999 at its one collision",
+         head_on(HeadOn::restitution_0_999, "box2d", "energy_drift")},
         {"max_overlap", "step", "head_on_equal", missed, head_on(HeadOn::missed, "step", "max_overlap")},
         {"max_overlap", "event", "head_on_equal", missed, head_on(HeadOn::missed, "event", "max_overlap")},
         {"mean_overlap", "step", "head_on_equal", missed, head_on(HeadOn::missed, "step", "mean_overlap")},

@@ -123,6 +123,22 @@ double collision_frequency(const CaseResult& r, const SceneFeatures& f) {
     return enskog_collision_frequency(f.area_fraction, sum_r / m, sum_r2 / m, kt_over_m);
 }
 
+// A contact solver of its own (Box2D, Chipmunk: BackendInfo::limits) solves an isolated contact
+// as one constraint, exactly up to rounding (the first sequential-impulse iteration; a wall
+// contact likewise). In a scene of fewer than 3 disks every contact is isolated, so at e = 1 its
+// kinetic energy moves by the rounding of each collision alone (conservation_rounding: 1.9e-6
+// for one float collision, against 2.4e-7 measured on head_on_equal), not by its general 5e-2,
+// which a restitution of 0.999 (2e-3 lost) would pass. A suite that sets the backend's energy
+// limit (box2d[shipped]: a restitution threshold makes slow collisions inelastic) keeps its own.
+std::optional<double> isolated_contact_energy_limit(const CaseResult& r, const BackendInfo& backend,
+                                                    const Tolerances& tol) {
+    if (backend.stepping_rule() || r.disks >= 3) return std::nullopt;
+    const auto own = std::find_if(backend.limits.begin(), backend.limits.end(),
+                                  [](const auto& kv) { return kv.first == "energy_drift"; });
+    if (own == backend.limits.end() || tol.energy_drift != own->second) return std::nullopt;
+    return conservation_rounding(machine_epsilon(backend.single_precision()), r.contacts);
+}
+
 }  // namespace
 
 std::vector<CheckResult> case_checks(const CaseResult& r, const SceneFeatures& f, const Tolerances& tol,
@@ -173,6 +189,10 @@ std::vector<CheckResult> case_checks(const CaseResult& r, const SceneFeatures& f
         c.at_most("energy_drift", energy_drift(r, energy.kind), std::max(p.tolerance, rounding),
                   "relative kinetic-energy drift");
         c.predicted(p.predicted, p.uncertainty);
+    } else if (const auto isolated = energy.kind == EnergyKind::kinetic ? isolated_contact_energy_limit(r, backend, tol)
+                                                                        : std::nullopt) {
+        c.at_most("energy_drift", energy_drift(r, energy.kind), *isolated,
+                  "relative kinetic-energy drift (fewer than 3 disks: every contact isolated, exact to rounding)");
     } else c.at_most("energy_drift", energy_drift(r, energy.kind), tol.energy_drift,
                    energy.kind == EnergyKind::total ? "relative total-energy drift" : "relative kinetic-energy drift");
 
