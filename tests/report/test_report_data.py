@@ -25,6 +25,7 @@ sys.path.insert(0, HERE)  # figure_text.py
 
 import analysis  # noqa: E402
 import digest  # noqa: E402
+import engines_page  # noqa: E402
 import figures  # noqa: E402
 import figure_text  # noqa: E402
 import largest_error  # noqa: E402
@@ -149,6 +150,33 @@ class JumpExplained(unittest.TestCase):
         note = scenes.explanation_text({"change": -0.01, "scale": 1.0, "explained": None,
                                              "problem": "case x: the rerun does not retrace the recorded run"})
         self.assertIn("The step could not be named: case x: the rerun does not retrace", note)
+
+
+class EnginesPage(unittest.TestCase):
+    """The page "Engines side by side" is about backends with dynamics of their own (engines):
+    the physics suite's two samplers (ecmc, metropolis) are neither exact nor stepping rules, and
+    took the report down when they were counted as engines (a work-precision figure with no
+    trajectory point to put on its log axes)."""
+
+    @staticmethod
+    def summary(backends):
+        return {"backends": {name: dict({"exact": False, "stepping_rule": False, "sampler": False}, **flags)
+                             for name, flags in backends.items()},
+                "checks": [], "work_precision": [], "cases": [], "suite": "s"}
+
+    def test_samplers_are_not_engines(self):
+        s = self.summary({"event": {"exact": True}, "ecmc": {"sampler": True}, "metropolis": {"sampler": True}})
+        self.assertEqual(engines_page.engines(s), [])
+        self.assertFalse(engines_page.applies(s))
+
+    def test_two_engine_bases_make_the_page(self):
+        s = self.summary({"event": {"exact": True}, "box2d": {}, "box2d[shipped]": {"base": "box2d"}, "chipmunk": {}})
+        self.assertEqual(engines_page.engines(s), ["box2d", "box2d[shipped]", "chipmunk"])
+        self.assertTrue(engines_page.applies(s))
+
+    def test_a_figure_without_trajectory_points_is_still_drawn(self):
+        s = self.summary({"box2d": {}, "chipmunk": {}})
+        self.assertTrue(engines_page.work_precision_figure(s))
 
 
 class DrawnCases(unittest.TestCase):

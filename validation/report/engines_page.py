@@ -23,8 +23,10 @@ COLUMNS = [("energy_drift", "energy drift"), ("momentum_drift", "momentum drift"
 
 
 def engines(summary):
-    """The backends the page is about, in the summary's order."""
-    return [name for name, b in summary.get("backends", {}).items() if not b.get("exact") and not b.get("stepping_rule")]
+    """The backends the page is about (neither exact, nor a stepping rule, nor a sampler, which has
+    no dynamics to compare), in the summary's order."""
+    return [name for name, b in summary.get("backends", {}).items()
+            if not b.get("exact") and not b.get("stepping_rule") and not b.get("sampler")]
 
 
 def applies(summary):
@@ -85,16 +87,22 @@ def work_precision_figure(summary):
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(8, 5))
     names = engines(summary) + [b for b in summary["backends"] if b not in engines(summary)]
+    drawn = False
     for backend in names:
         for line in summary.get("work_precision", []):
             if line["backend"] != backend or not line["error_kind"].startswith("trajectory"):
                 continue
             points = [p for p in line["points"] if p.get("error") and p.get("seconds_per_time_unit")]
             if points:
+                drawn = True
                 ax.plot([p["seconds_per_time_unit"] for p in points], [p["error"] for p in points], "-",
                         marker=figures.marker(backend), color=figures.colour(backend), alpha=0.8)
         ax.plot([], [], "-", marker=figures.marker(backend), color=figures.colour(backend), label=figures.tex(backend))
-    figures.log_scale(ax, "x", "y")
+    if drawn:
+        figures.log_scale(ax, "x", "y")
+    else:  # a suite of statistics scenes only: no trajectory error to draw
+        ax.text(0.5, 0.5, "no trajectory scene in this suite", ha="center", va="center", transform=ax.transAxes,
+                fontsize=figures.TEXT_PT)
     ax.set_xlabel("run time per simulated time unit (s)")
     ax.set_ylabel("trajectory error / r_min")
     ax.legend(fontsize=figures.TEXT_PT, ncol=2)

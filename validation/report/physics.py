@@ -71,9 +71,7 @@ def _score(r):
                 f"freedom give the normal score {r['score']:.2f}")
     if not f or f.get("z") is None:
         return f"|z| = {r['score']:.2f}"
-    # The numbers z was computed from, printed to the digits that recompute it (test_report_data.py).
-    return (f"z = {f['z']:+.2f} from {f['value']:.6g} ± {f['standard_error']:.3g} against {f['reference']:.6g} ± "
-            f"{f['reference_uncertainty']:.3g} ({f['estimator']})")
+    return f"{finite_n.z_with_its_numbers(f)} ({f['estimator']})"
 
 
 def _verdict(r):

@@ -230,7 +230,8 @@ Json backends_json(const Suite& suite, const SuiteOutcome& outcome) {
         x.text("base", b.substr(0, b.find('['))).text("precision", declared.precision)
             .boolean("float", declared.single_precision()).boolean("reference", b == suite.reference)
             .boolean("stepping_rule", declared.stepping_rule()).text("rule", declared.rule)
-            .boolean("exact", declared.exact).field("conserves", conserves).text("description", declared.description)
+            .boolean("exact", declared.exact).boolean("sampler", declared.sampler)
+            .field("conserves", conserves).text("description", declared.description)
             .field("ran_on", ran_on_json(r.provenance));
         o.field(b, x.json());
     }
