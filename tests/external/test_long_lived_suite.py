@@ -75,3 +75,29 @@ def test_a_crash_fails_one_case_and_a_hang_is_killed_at_the_limit(tmp_path):
     assert exits == starts[-1:]              # the last copy read end of file; the others were ended
     assert all(gone(pid) for pid in starts)
     assert elapsed < 60, elapsed
+
+
+def test_the_command_line_declares_it_too(tmp_path):
+    log = tmp_path / "starts.txt"
+    suite = tmp_path / "suite.toml"
+    suite.write_text(f"""name = "long-lived-cli"
+scene_dir = "{ROOT / 'data' / 'scenes'}"
+backends = ["event"]
+reference = "event"
+seeds = [1, 2, 4]
+warmup_fraction = 0
+[output]
+hdf5 = false
+[[scene]]
+name = "head_on_equal"
+dt = [2e-3]
+""")
+    command = ["--solver", f"served=/usr/bin/python3 {SOLVER} {log}", "--jobs", "1"]
+    r = subprocess.run([COLLIDE, "validate", str(suite), "--out", str(tmp_path / "out"), *command,
+                        "--solver-long-lived", "served"], capture_output=True, text=True)
+    summary = json.loads((tmp_path / "out" / "summary.json").read_text())
+    assert [c["status"] for c in summary["cases"] if c["backend"] == "served"] == ["completed"] * 3, r.stderr[-2000:]
+    assert log.read_text().split()[::2] == ["start", "exit"]
+    wrong = subprocess.run([COLLIDE, "validate", str(suite), "--out", str(tmp_path / "out2"), *command,
+                            "--solver-long-lived", "servd"], capture_output=True, text=True)
+    assert wrong.returncode != 0 and "--solver-long-lived servd: no --solver or --python-solver named 'servd'" in wrong.stderr
