@@ -147,6 +147,8 @@ bool SolverServer::still_running() {
         reaped_ = true;
         end(true, 0);
     }
+    if (pid_ > 0) drain_replies();
+    if (!pending_.empty()) end(true, 0);  // it wrote while idle: out of step with the protocol
     return alive();
 }
 
@@ -234,7 +236,10 @@ ServedCall SolverServer::call(const std::string& request_dir, double limit_secon
             served.text = printable_tail(line, 200);
         }
     }
-    if (served.reply == ServedCall::Reply::garbage) end(true, 0);  // out of step with the protocol
+    // Out of step with the protocol: a line that is no reply, or more than one reply to one
+    // request (the extra line would be taken as the next request's reply). The reply it gave
+    // stands; the next call starts a new server.
+    if (served.reply == ServedCall::Reply::garbage || !pending_.empty()) end(true, 0);
     served.output = take_output();
     served.process.seconds = seconds_since(start);
     return served;

@@ -51,7 +51,7 @@ public:
     // reply "done" or "failed" is ended by the call (alive() is then false).
     ServedCall call(const std::string& request_dir, double limit_seconds);
     bool alive() const { return pid_ > 0; }
-    // False when it has exited (it is then reaped and ended).
+    // False when it has exited, or wrote a line while idle (it is then ended and reaped).
     bool still_running();
     // Sends end of file (closes its stdin) without waiting; close() then waits.
     void send_end();

@@ -20,7 +20,8 @@ namespace collide::external {
 namespace {
 
 // Seed 2: it kills itself (SIGSEGV); 3: it hangs; 4: it answers garbage; 5: it answers
-// "failed"; any other: it copies the prepared answer (free flight of two disks) and says done.
+// "failed"; 6: it answers twice; any other: it copies the prepared answer (free flight of two
+// disks) and says done.
 const char* const server_script = R"(echo "start $$" >> starts.txt
 [ "$1" = --serve ] || { echo "expected --serve, got $1" >&2; exit 9; }
 while IFS= read -r request; do
@@ -31,6 +32,7 @@ while IFS= read -r request; do
     3) sleep 30 ;;
     4) echo hello ;;
     5) echo "failed no answer for seed 5" ;;
+    6) cp states.npy result.txt "$request/"; echo done; echo done ;;
     *) cp states.npy result.txt "$request/"; echo done ;;
   esac
 done
@@ -144,6 +146,13 @@ TEST(LongLivedSolver, GarbageEndsTheServerAndFailedFailsTheCallAlone) {
     EXPECT_NE(failed.find("it answered failed: no answer for seed 5"), std::string::npos) << failed;
     EXPECT_NO_THROW(f.run(1));
     EXPECT_EQ(f.count("start"), 2);  // a "failed" reply keeps the server
+}
+
+TEST(LongLivedSolver, TwoRepliesToOneRequestEndTheServerBeforeTheNextCall) {
+    Fixture f;
+    EXPECT_NO_THROW(f.run(6));  // its first reply stands
+    for (int k = 0; k < 3; ++k) EXPECT_NO_THROW(f.run(1));  // the extra "done" is never taken as their reply
+    EXPECT_EQ(f.count("start"), 2);
 }
 
 TEST(LongLivedSolver, AProgramThatIgnoresServeFailsNamingItsExit) {
