@@ -4,7 +4,8 @@
 // other backend row (validation/plan/external_solvers.h puts it into a suite's backend list).
 //
 // Per program call, collide writes a request directory (request.txt, initial.npy, scene.toml),
-// runs `COMMAND DIR`, and reads DIR/result.txt and DIR/states.npy back. Everything that comes
+// runs `COMMAND DIR` (or, for a long-lived program, sends DIR to its running copy:
+// solver_server.h), and reads DIR/result.txt and DIR/states.npy back. Everything that comes
 // back is checked (exit status, time limit, shapes, dtype, count, finite numbers, times); a
 // fault throws with a message that names the solver, the scene and what was wrong.
 #pragma once
