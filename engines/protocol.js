@@ -5,6 +5,7 @@
 // file formats, the step schedule, the presets and the timing written here, once.
 const fs = require('fs');
 const path = require('path');
+const readline = require('readline');
 
 // request.txt: one "key value..." line each; "option KEY VALUE" lines are the settings of a
 // suite's [variant."ENGINE[NAME]"] table (protocol 2).
@@ -121,13 +122,11 @@ function refusal(request, engine) {
 
 // engine = { name, presets: {tuned, shipped}, init() (optional, async),
 //            create(request, disks, settings) -> world }; its package and precision: engines.json
-// world  = { step(h), state(i) -> [x, y, vx, vy], contacts (pair collisions so far) }
+// world  = { step(h), state(i) -> [x, y, vx, vy], contacts (pair collisions so far),
+//            free() (optional: what the engine does not give back to the garbage collector) }
 // Steps of h = dt / substeps; output time t is reached after round(t / dt) steps of dt, as
 // collide's own stepped backends do. `seconds` is the time spent in step() alone.
-async function run(adapter) {
-  const entry = engineEntry(adapter.name);
-  const engine = { ...adapter, packageName: entry.package, precision: entry.precision };
-  const dir = process.argv[process.argv.length - 1];
+async function answer(engine, dir) {
   const request = readRequest(dir);
   const version = `${engine.packageName} ${packageVersion(engine.packageName)}`;
   const why = refusal(request, engine);
@@ -137,29 +136,59 @@ async function run(adapter) {
   }
   const disks = readDisks(dir);
   const chosen = settings(engine, request.options);
-  if (engine.init) await engine.init();
+  if (engine.init) await (engine.ready = engine.ready || engine.init());  // once per process
   const world = engine.create(request, disks, chosen);
-  const dt = request.dt, substeps = request.substeps || 1;
-  let step = Math.round(request.start_time / dt), steps = 0, seconds = 0;
-  const times = request.output_times;
-  const states = new Float64Array(times.length * disks.length * 4);
-  times.forEach((t, k) => {
-    const target = Math.round(t / dt);
-    const begin = process.hrtime.bigint();
-    for (; step < target; ++step, ++steps)
-      for (let s = 0; s < substeps; ++s) world.step(dt / substeps);
-    seconds += Number(process.hrtime.bigint() - begin) * 1e-9;
-    disks.forEach((d, i) => states.set(d.stone ? [d.x, d.y, 0, 0] : world.state(i), 4 * (k * disks.length + i)));
-  });
-  writeNpy(path.join(dir, 'states.npy'), [times.length, disks.length, 4], states);
-  fs.writeFileSync(path.join(dir, 'result.txt'),
-    `times ${times.join(' ')}\nsteps ${steps}\ncontacts ${world.contacts}\nseconds ${seconds}\n` +
-    `precision ${engine.precision}\nversion ${version} (preset ${chosen.preset})\n`);
+  try {
+    const dt = request.dt, substeps = request.substeps || 1;
+    let step = Math.round(request.start_time / dt), steps = 0, seconds = 0;
+    const times = request.output_times;
+    const states = new Float64Array(times.length * disks.length * 4);
+    times.forEach((t, k) => {
+      const target = Math.round(t / dt);
+      const begin = process.hrtime.bigint();
+      for (; step < target; ++step, ++steps)
+        for (let s = 0; s < substeps; ++s) world.step(dt / substeps);
+      seconds += Number(process.hrtime.bigint() - begin) * 1e-9;
+      disks.forEach((d, i) => states.set(d.stone ? [d.x, d.y, 0, 0] : world.state(i), 4 * (k * disks.length + i)));
+    });
+    writeNpy(path.join(dir, 'states.npy'), [times.length, disks.length, 4], states);
+    fs.writeFileSync(path.join(dir, 'result.txt'),
+      `times ${times.join(' ')}\nsteps ${steps}\ncontacts ${world.contacts}\nseconds ${seconds}\n` +
+      `precision ${engine.precision}\nversion ${version} (preset ${chosen.preset})\n`);
+  } finally {
+    if (world.free) world.free();
+  }
 }
 
-// Runs the adapter; any fault is printed with the engine's name and the call fails.
-function main(engine) {
-  run(engine).catch((e) => {
+// The long-lived mode (docs/your-solver.md, "A solver that serves many calls"): collide starts
+// the adapter once as `node ENGINE.js --serve` and writes one request directory per line on its
+// stdin; each is answered as a one-shot call would answer it, then "done" (or "failed REASON"
+// when this request could not be answered) on stdout, which carries nothing else. End of file
+// on stdin ends the process.
+async function serve(engine) {
+  console.log = console.error;  // an engine's own prints go to the log, never among the replies
+  const requests = readline.createInterface({ input: process.stdin, crlfDelay: Infinity });
+  for await (const dir of requests) {
+    let reply = 'done';
+    try {
+      await answer(engine, dir);
+    } catch (e) {
+      process.stderr.write(`${engine.name}: ${e && e.stack ? e.stack : e}\n`);
+      reply = `failed ${engine.name}: ${String(e && e.message ? e.message : e).replace(/\s+/g, ' ')}`;
+    }
+    process.stdout.write(`${reply}\n`);
+  }
+}
+
+// Runs the adapter on the request directory named last on the command line, or serves request
+// after request when that is `--serve`; a fault of a one-shot call is printed with the engine's
+// name and the call fails.
+function main(adapter) {
+  const entry = engineEntry(adapter.name);
+  const engine = { ...adapter, packageName: entry.package, precision: entry.precision };
+  const last = process.argv[process.argv.length - 1];
+  const done = last === '--serve' ? serve(engine) : answer(engine, last);
+  done.catch((e) => {
     process.stderr.write(`${engine.name}: ${e && e.stack ? e.stack : e}\n`);
     process.exit(1);
   });

@@ -60,6 +60,7 @@ function create(request, disks, o) {
       return [p.x + cx, p.y + cy, v.x, v.y];
     },
     get contacts() { return contacts; },
+    free: () => { events.free(); world.free(); },  // wasm memory: a long-lived adapter serves many worlds
   };
 }
 

@@ -24,6 +24,7 @@
 #include "npy.h"
 #include "program_call.h"
 #include "solver_files.h"
+#include "solver_server.h"
 
 namespace collide::external {
 namespace fs = std::filesystem;
@@ -274,6 +275,7 @@ public:
         if (!version_.empty()) p["solver_version"] = version_;
         if (!files_sha256_.empty()) p["solver_files_sha256"] = files_sha256_;
         if (spec_.handles) p["solver_handles"] = join_words(*spec_.handles);
+        if (spec_.long_lived) p["solver_long_lived"] = "true";
         return p;
     }
 
@@ -296,22 +298,48 @@ private:
         throw std::runtime_error(msg.str());
     }
 
+    // How a program call ended: its wall time, what it printed, and "" or the fault.
+    struct CallEnd {
+        double seconds = 0;
+        std::string output;
+        std::string problem;
+    };
+
+    // A one-shot call: the program started for this request alone, its exit status the reply.
+    CallEnd call_once(const TemporaryDirectory& dir) const {
+        const ProgramOutcome outcome = call_program(spec_.command, dir.path(), program_directory(), dir.file("output.txt"),
+                                                    spec_.call_time_limit);
+        CallEnd end{outcome.seconds, read_text(dir.file("output.txt"), max_result_bytes), ""};
+        if (!outcome.succeeded()) end.problem = outcome.describe(spec_.call_time_limit);
+        return end;
+    }
+
+    // A long-lived solver's call: this process's idle server of the command, started when there
+    // is none (or the last one ended); given back for the next call while it lives.
+    CallEnd call_server(const TemporaryDirectory& dir) {
+        std::unique_ptr<SolverServer> server = take_idle_server(spec_.command, program_directory());
+        if (!server) server = std::make_unique<SolverServer>(spec_.command, program_directory());
+        const ServedCall served = server->call(dir.path(), spec_.call_time_limit);
+        if (served.started) stats_.counters["server_starts"] += 1;
+        if (server->alive()) give_back_server(spec_.command, program_directory(), std::move(server));
+        return {served.process.seconds, served.output, served.problem(spec_.call_time_limit)};
+    }
+
+    std::string program_directory() const { return spec_.directory.empty() ? "." : spec_.directory; }
+
     void call(const std::vector<double>& times) {
         const TemporaryDirectory dir = request_directory();
         write_request_file(dir.file("request.txt"), request_text(spec_, scene_, state_.size(), time_, times));
         write_request_file(dir.file("initial.npy"), state_npy(state_));
         write_request_file(dir.file("scene.toml"), scene_.source_text);
-        const ProgramOutcome outcome = call_program(spec_.command, dir.path(), spec_.directory.empty() ? "." : spec_.directory,
-                                                    dir.file("output.txt"), spec_.call_time_limit);
+        const CallEnd end = spec_.long_lived ? call_server(dir) : call_once(dir);
         ++calls_;
         stats_.counters["program_calls"] += 1;
-        stats_.counters["program_seconds"] += outcome.seconds;
-        const std::string output = read_text(dir.file("output.txt"), max_result_bytes);
-        forward_to_log(output);
-        if (!outcome.succeeded())
-            fault(outcome.describe(spec_.call_time_limit) + quoted(output));
+        stats_.counters["program_seconds"] += end.seconds;
+        forward_to_log(end.output);
+        if (!end.problem.empty()) fault(end.problem + quoted(end.output));
         if (const std::string problem = answer_file_problem(dir.file("result.txt"), "result.txt"); !problem.empty())
-            fault("it exited with status 0 but " + problem + quoted(output));
+            fault((spec_.long_lived ? "it answered done but " : "it exited with status 0 but ") + problem + quoted(end.output));
         Answer answer;
         try {
             answer = parse_answer(read_text(dir.file("result.txt"), max_result_bytes));
@@ -482,6 +510,12 @@ std::string precision_problem(const std::string& precision) {
     return "\"double\" or \"float\" (the precision it computes in), not \"" + printable_tail(precision, 40) + "\"";
 }
 
+std::string long_lived_problem(const ExternalSolverSpec& spec) {
+    if (spec.long_lived && !spec.python_class.empty())
+        return "a program (command = \"...\"): a Python class runs through its runner, which is started once per call";
+    return "";
+}
+
 std::string claims_problem(bool exact, const std::string& rule) {
     if (exact && !rule.empty())
         return "exact together with rule \"" + rule + "\": an exact solver has no time step, a stepping rule has one; "
@@ -499,6 +533,7 @@ std::string spec_problem(const ExternalSolverSpec& spec) {
     if (std::string why = precision_problem(spec.precision); !why.empty()) return "precision: expected " + why;
     if (spec.handles)
         if (std::string why = handles_problem(*spec.handles); !why.empty()) return "handles: expected " + why;
+    if (std::string why = long_lived_problem(spec); !why.empty()) return "long_lived: expected " + why;
     return claims_problem(spec.exact, spec.rule);
 }
 

@@ -4,7 +4,8 @@
 // other backend row (validation/plan/external_solvers.h puts it into a suite's backend list).
 //
 // Per program call, collide writes a request directory (request.txt, initial.npy, scene.toml),
-// runs `COMMAND DIR`, and reads DIR/result.txt and DIR/states.npy back. Everything that comes
+// runs `COMMAND DIR` (or, for a long-lived program, sends DIR to its running copy:
+// solver_server.h), and reads DIR/result.txt and DIR/states.npy back. Everything that comes
 // back is checked (exit status, time limit, shapes, dtype, count, finite numbers, times); a
 // fault throws with a message that names the solver, the scene and what was wrong.
 #pragma once
@@ -23,7 +24,8 @@ namespace collide::external {
 // The protocol version written into every request (request.txt: "protocol 2"). Version 2 adds,
 // all optional and so backward compatible: `option KEY VALUE` request lines (a suite variant's
 // settings), `seconds` in result.txt (the solver's own stepping time, its cost), and the
-// declarations `handles` (capabilities) and `files` (package files in its provenance).
+// declarations `handles` (capabilities), `files` (package files in its provenance) and
+// `long_lived` (one program start serves many calls, solver_server.h).
 inline constexpr int protocol_version = 2;
 
 // The scene features a solver may declare it handles (`handles = [...]` in its [solver] table),
@@ -55,6 +57,11 @@ struct ExternalSolverSpec {
     // Files beyond the command's words whose hashes go into every case's provenance (its lock
     // file, the engine's library), relative to its directory.
     std::vector<std::string> files;
+    // Declared long-lived (`long_lived = true`): started once per process that runs cases, as
+    // `COMMAND --serve`, it answers request after request over a pipe (solver_server.h), so its
+    // start-up is paid once; a call that it fails (dies, hangs, answers garbage) fails that case
+    // only, and the next call starts it again. A Python class runs through its one-shot runner.
+    bool long_lived = false;
     double call_time_limit = 60;  // seconds per program call
     std::string origin;       // where it was named, for messages ("--solver", "suite.toml:12")
 };
@@ -80,6 +87,9 @@ std::string handles_problem(const std::vector<std::string>& handles);
 // "" when a solver declaring `handles` can run `scene`, else why not (what it needs that the
 // solver does not declare).
 std::string unhandled_need(const ExternalSolverSpec& spec, const Scene& scene);
+
+// "" or why `spec` cannot be long-lived (a Python class: its runner answers one call per start).
+std::string long_lived_problem(const ExternalSolverSpec& spec);
 
 // "" or the contradiction between the declarations: exact (no time step) with a stepping rule.
 std::string claims_problem(bool exact, const std::string& rule);

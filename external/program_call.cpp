@@ -21,16 +21,18 @@ namespace collide::external {
 namespace {
 
 // In the child between fork and exec: only async-signal-safe calls (no allocation), so every
-// string is made before the fork.
-[[noreturn]] void exec_child(const char* script, const char* argument, const char* directory, int out, pid_t parent) {
+// string is made before the fork. `in` < 0: stdin from /dev/null.
+[[noreturn]] void exec_child(const char* script, const char* argument, const char* directory, const ChildStreams& streams,
+                             pid_t parent) {
     ::setpgid(0, 0);                      // its own group: the limit kills its children too
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);   // and it dies with the case process
     if (::getppid() != parent) ::_exit(125);  // the parent died before prctl took effect
-    const int null_in = ::open("/dev/null", O_RDONLY);
-    if (null_in < 0 || out < 0 || ::chdir(directory) != 0) ::_exit(126);
-    ::dup2(null_in, 0);
-    ::dup2(out, 1);
-    ::dup2(out, 2);
+    const int in = streams.in >= 0 ? streams.in : ::open("/dev/null", O_RDONLY);
+    if (in < 0 || streams.out < 0 || streams.err < 0 || ::chdir(directory) != 0) ::_exit(126);
+    // dup2 clears close-on-exec on the copies: the program gets exactly fds 0, 1 and 2 of these.
+    ::dup2(in, 0);
+    ::dup2(streams.out, 1);
+    ::dup2(streams.err, 2);
     ::execl("/bin/sh", "sh", "-c", script, "collide-solver", argument, static_cast<char*>(nullptr));
     ::_exit(127);
 }
@@ -47,13 +49,7 @@ std::string ProgramOutcome::describe(double limit_seconds) const {
     return out.str();
 }
 
-namespace {
-
-// Ends what the program left behind: the rest of its process group, and every descendant that
-// left the group (setsid) and was adopted here as an orphan (SubreaperScope). A process of
-// the group that is still dying may yet orphan a child, so the group is waited for until it is
-// gone (its zombies are reaped here as adopted children), at most a second.
-void end_what_the_call_left(pid_t group, const std::set<pid_t>& children_before) {
+void end_process_group(pid_t group, const std::set<pid_t>& children_before) {
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     for (;;) {
@@ -65,27 +61,39 @@ void end_what_the_call_left(pid_t group, const std::set<pid_t>& children_before)
     end_children_except(children_before);
 }
 
-}  // namespace
+pid_t start_program(const std::string& command, const std::string& argument, const std::string& directory,
+                    const ChildStreams& streams) {
+    const std::string script = command + " \"$1\"";  // the argument (a request directory, --serve) last
+    const pid_t parent = ::getpid();
+    const pid_t pid = ::fork();
+    if (pid < 0) throw std::runtime_error(std::string("fork failed: ") + std::strerror(errno));
+    if (pid == 0) exec_child(script.c_str(), argument.c_str(), directory.c_str(), streams, parent);
+    ::setpgid(pid, pid);  // also here, so the group exists before any kill
+    return pid;
+}
+
+void set_outcome_status(ProgramOutcome& outcome, int wait_status) {
+    if (WIFEXITED(wait_status)) outcome.exit_status = WEXITSTATUS(wait_status);
+    else if (WIFSIGNALED(wait_status)) outcome.signal = WTERMSIG(wait_status);
+}
 
 ProgramOutcome call_program(const std::string& command, const std::string& argument, const std::string& directory,
                             const std::string& output_path, double limit_seconds) {
     using Clock = std::chrono::steady_clock;
-    const std::string script = command + " \"$1\"";  // the request directory as the last argument
-    const pid_t parent = ::getpid();
     const SubreaperScope adopt_orphans;  // the program's orphans are adopted here, not by init
     const std::set<pid_t> children_before = child_processes();
     // Opened here through the output guard (core/io/output_file.h), not in the child, which
     // may not allocate: a link or a FIFO at the output's place is refused, not written into.
     const int out = open_output_stream(output_path);
     const auto start = Clock::now();
-    const pid_t pid = ::fork();
-    if (pid < 0) {
+    pid_t pid = 0;
+    try {
+        pid = start_program(command, argument, directory, ChildStreams{-1, out, out});
+    } catch (...) {
         ::close(out);
-        throw std::runtime_error(std::string("fork failed: ") + std::strerror(errno));
+        throw;
     }
-    if (pid == 0) exec_child(script.c_str(), argument.c_str(), directory.c_str(), out, parent);
     ::close(out);
-    ::setpgid(pid, pid);  // also here, so the group exists before any kill below
     ProgramOutcome outcome;
     int status = 0;
     // Poll: a short sleep keeps the wait cheap, and the limit is honoured within 5 ms.
@@ -101,12 +109,9 @@ ProgramOutcome call_program(const std::string& command, const std::string& argum
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
-    end_what_the_call_left(pid, children_before);
+    end_process_group(pid, children_before);
     outcome.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    if (!outcome.timed_out) {
-        if (WIFEXITED(status)) outcome.exit_status = WEXITSTATUS(status);
-        else if (WIFSIGNALED(status)) outcome.signal = WTERMSIG(status);
-    }
+    if (!outcome.timed_out) set_outcome_status(outcome, status);
     return outcome;
 }
 

@@ -42,6 +42,7 @@ struct SolverArgs {
     std::vector<std::string> classes;   // --python-solver NAME=MODULE:CLASS
     std::vector<std::string> rules;     // --solver-rule NAME=RULE
     std::vector<std::string> exact;     // --solver-exact NAME
+    std::vector<std::string> long_lived;  // --solver-long-lived NAME
     std::vector<std::string> precisions;  // --solver-precision NAME=PRECISION
 };
 void add_solver_options(CLI::App& cmd, SolverArgs& args);

@@ -1,5 +1,6 @@
 // `--solver NAME=COMMAND`, `--python-solver NAME=MODULE:CLASS`, and what they declare:
-// `--solver-rule NAME=RULE`, `--solver-exact NAME`, `--solver-precision NAME=PRECISION`:
+// `--solver-rule NAME=RULE`, `--solver-exact NAME`, `--solver-precision NAME=PRECISION`,
+// `--solver-long-lived NAME`:
 // outside solvers joining a suite run as backends (docs/your-solver.md).
 #include <stdexcept>
 #include <utility>
@@ -21,6 +22,9 @@ void add_solver_options(CLI::App& cmd, SolverArgs& args) {
     cmd.add_option("--solver-exact", args.exact,
                    "NAME: the outside solver NAME is exact (event-driven, no time step) and is held to what exact "
                    "dynamics allows in its precision (docs/validation.md); repeatable");
+    cmd.add_option("--solver-long-lived", args.long_lived,
+                   "NAME: the outside program NAME serves many calls: started once per worker as `COMMAND --serve`, it "
+                   "reads request directories on stdin and answers each with a line (docs/your-solver.md); repeatable");
     cmd.add_option("--solver-precision", args.precisions,
                    "NAME=PRECISION: the precision (double or float) the outside solver NAME computes in; default "
                    "double; repeatable");
@@ -63,6 +67,7 @@ std::vector<external::ExternalSolverSpec> solver_specs(const SolverArgs& args) {
         named_spec(specs, name, "--solver-rule " + text).rule = rule;
     }
     for (const auto& name : args.exact) named_spec(specs, name, "--solver-exact " + name).exact = true;
+    for (const auto& name : args.long_lived) named_spec(specs, name, "--solver-long-lived " + name).long_lived = true;
     for (const auto& text : args.precisions) {
         const auto [name, precision] = name_and_value(text);
         if (const std::string why = external::precision_problem(precision); precision.empty() || !why.empty())

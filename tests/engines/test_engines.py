@@ -74,6 +74,29 @@ def test_each_adapter_exchanges_velocities_head_on(tmp_path, engine, preset):
     np.testing.assert_allclose(states[1, :, 0], [3.0, 7.0], atol=2e-3)  # matter.js: a 64-gon's flat side
 
 
+@pytest.mark.parametrize("engine", ENGINES)
+def test_each_adapter_serves_many_requests_from_one_start(tmp_path, engine):
+    # The long-lived mode (engines/protocol.js, docs/your-solver.md): one process answers request
+    # after request read from stdin, each exactly as a one-shot call answers it (no world carried
+    # over), replies "failed ..." to a request it cannot answer and goes on, and exits at end of file.
+    write_request(tmp_path / "tuned", [("preset", "tuned")])
+    write_request(tmp_path / "shipped", [("preset", "shipped")])
+    write_request(tmp_path / "bad", [("velocity_thrshold", "0")])
+    write_request(tmp_path / "again", [("preset", "tuned")])
+    write_request(tmp_path / "oneshot", [("preset", "tuned")])
+    requests = "".join(f"{tmp_path / name}\n" for name in ("tuned", "shipped", "bad", "again"))
+    r = subprocess.run(["node", str(ENGINES_DIR / f"{engine}.js"), "--serve"], input=requests, capture_output=True,
+                       text=True, timeout=120)
+    assert r.returncode == 0, r.stderr
+    replies = r.stdout.splitlines()
+    assert replies[:2] == ["done", "done"] and replies[3] == "done" and len(replies) == 4, r.stdout
+    assert replies[2].startswith(f"failed {engine}: option velocity_thrshold: unknown"), replies[2]
+    assert "(preset shipped)" in result(tmp_path / "shipped")["version"]
+    assert call(ENGINES_DIR / f"{engine}.js", tmp_path / "oneshot").returncode == 0
+    for served in ("tuned", "again"):  # bit for bit what a fresh process computes
+        np.testing.assert_array_equal(np.load(tmp_path / served / "states.npy"), np.load(tmp_path / "oneshot" / "states.npy"))
+
+
 def run_head_on(directory, engine, preset, speed):
     write_request(directory, [("preset", preset)], speed=speed)
     r = call(ENGINES_DIR / f"{engine}.js", directory)
@@ -159,6 +182,20 @@ def test_provenance_names_the_engine_version_and_package_hashes(ci_suite):
     provenance = json.dumps(record)
     assert "@dimforge/rapier2d-compat 0.21.0" in provenance
     assert "package-lock.json" in provenance and "rapier.cjs" in provenance
+
+
+def test_each_node_engine_starts_once_per_worker_not_once_per_case(ci_suite):
+    # long_lived = true in engines_ci.toml: each worker (--jobs 2) starts an engine's adapter once
+    # for all its cases and presets (a preset is a request option, not another program).
+    out, summary, _ = ci_suite
+    for engine in ENGINES:
+        starts = calls = 0
+        for c in summary["cases"]:
+            if c["backend"] in (engine, f"{engine}[shipped]") and c["status"] == "completed":
+                counters = tomllib.loads((out / c["result_file"]).read_text().split("\n", 1)[1]).get("counters", {})
+                starts += counters.get("server_starts", 0)
+                calls += counters.get("program_calls", 0)
+        assert calls >= 8 and 1 <= starts <= 2, (engine, starts, calls)
 
 
 def test_cost_is_the_engines_own_stepping_time_not_the_call(ci_suite):

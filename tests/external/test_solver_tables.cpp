@@ -73,6 +73,16 @@ TEST(SolverTables, HandlesAndFilesMistakesAreNamedWithTheirLine) {
               std::string::npos);
 }
 
+// long_lived = true: one start serves many calls (external/solver_server.h); a program only.
+TEST(SolverTables, LongLivedIsReadAndItsMistakesAreNamedWithTheirLine) {
+    EXPECT_TRUE(parse_suite_text("[solver.e]\ncommand = \"x\"\nlong_lived = true\n").solvers.at(0).long_lived);
+    EXPECT_FALSE(parse_suite_text("[solver.e]\ncommand = \"x\"\n").solvers.at(0).long_lived);
+    EXPECT_NE(suite_refusal("[solver.e]\ncommand = \"x\"\nlong_lived = \"yes\"\n").find("s.toml:3: solver.e.long_lived: expected true or false"),
+              std::string::npos);
+    const std::string python = suite_refusal("[solver.e]\npython = \"m.py:C\"\nlong_lived = true\n");
+    EXPECT_NE(python.find("s.toml:3: solver.e.long_lived: expected a program (command = \"...\")"), std::string::npos) << python;
+}
+
 TEST(SolverTables, ANameTakenTwiceOrByABackendIsRefused) {
     Suite s = parse_suite_text("[solver.mine]\ncommand = \"x\"\n");
     external::ExternalSolverSpec again = s.solvers.at(0);  // the same name once more

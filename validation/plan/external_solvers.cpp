@@ -58,9 +58,9 @@ std::vector<external::ExternalSolverSpec> read_solver_tables(const toml::table& 
         if (!t) fail(file, sub, where, "a table with command = \"...\" or python = \"module:Class\"");
         for (const auto& [k, v] : *t)
             if (k.str() != "command" && k.str() != "python" && k.str() != "rule" && k.str() != "exact" && k.str() != "precision" &&
-                k.str() != "handles" && k.str() != "files")
+                k.str() != "handles" && k.str() != "files" && k.str() != "long_lived")
                 fail(file, v, where + "." + std::string(k.str()),
-                     "no such key here (allowed: command, python, rule, exact, precision, handles, files)");
+                     "no such key here (allowed: command, python, rule, exact, precision, handles, files, long_lived)");
         external::ExternalSolverSpec spec;
         spec.name = name;
         spec.command = string_key(*t, "command", file, where);
@@ -80,6 +80,12 @@ std::vector<external::ExternalSolverSpec> read_solver_tables(const toml::table& 
         if (spec.handles)
             if (const std::string why = external::handles_problem(*spec.handles); !why.empty())
                 fail(file, *t->get("handles"), where + ".handles", why);
+        if (const toml::node* long_lived = t->get("long_lived")) {
+            if (!long_lived->is_boolean()) fail(file, *long_lived, where + ".long_lived", "true or false");
+            spec.long_lived = *long_lived->value<bool>();
+            if (const std::string why = external::long_lived_problem(spec); !why.empty())
+                fail(file, *long_lived, where + ".long_lived", why);
+        }
         spec.files = string_list(*t, "files", file, where, "an array of file paths (relative to the suite file)").value_or(std::vector<std::string>{});
         spec.directory = dir;
         spec.origin = file + ":" + std::to_string(sub.source().begin.line);

@@ -4,6 +4,7 @@
 #include "core/process/descendants.h"
 #include "core/io/input_file.h"
 #include "core/io/output_file.h"
+#include "external/solver_server.h"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -172,13 +173,20 @@ int run_and_record(const CaseSpec& spec, const IsolationOptions& options,
     return code;
 }
 
+// Ends a process that ran cases. _exit, not exit: it must not run the parent's atexit handlers
+// or flush its stdio buffers twice; so the long-lived outside solvers it started
+// (external/solver_server.h) are closed here: end of file on their stdin, then reaped.
+[[noreturn]] void end_case_process(int code) {
+    external::close_solver_servers();
+    ::_exit(code);
+}
+
 [[noreturn]] void child_main(const CaseSpec& spec, const IsolationOptions& options,
                              const std::function<CaseResult(const CaseSpec&)>& run_case, pid_t runner,
                              const Workers& workers) {
     become_case_process(runner, workers);
     redirect_output_to_log(spec, options);
-    // _exit: the child must not run the parent's atexit handlers or flush its stdio buffers twice.
-    ::_exit(run_and_record(spec, options, run_case));
+    end_case_process(run_and_record(spec, options, run_case));
 }
 
 // A worker's life: a case per request until the runner closes the pipe. A case that throws
@@ -188,15 +196,15 @@ int run_and_record(const CaseSpec& spec, const IsolationOptions& options,
                               const std::function<CaseResult(const CaseSpec&)>& run_case) {
     for (;;) {
         std::uint64_t size = 0;
-        if (!read_fully(requests, &size, sizeof size)) ::_exit(0);  // no case left
+        if (!read_fully(requests, &size, sizeof size)) end_case_process(0);  // no case left
         std::string text(size, '\0');
-        if (!read_fully(requests, text.data(), text.size())) ::_exit(0);
+        if (!read_fully(requests, text.data(), text.size())) end_case_process(0);
         const CaseSpec spec = case_spec_from_text(text);
         redirect_output_to_log(spec, options);
         const int code = run_and_record(spec, options, run_case);
-        if (code != 0) ::_exit(code);
+        if (code != 0) end_case_process(code);
         const char done = 1;
-        if (!write_fully(replies, &done, 1)) ::_exit(0);  // the runner is gone
+        if (!write_fully(replies, &done, 1)) end_case_process(0);  // the runner is gone
     }
 }
 
