@@ -121,6 +121,8 @@ void EcmcSampler::cross_edge(std::uint32_t i, bool forward) {
     int next = forward ? column + 1 : column - 1;
     // The edge between the two cells: it belongs to both, so the disk sits on it in its new cell.
     double edge = cells_.origin(A) + (forward ? next : column) * cells_.side(A);
+    // Only a periodic box's +A chains leave the box's last cell; chains along -A run in boxes
+    // with walls, where the wall contact lies inside the first cell, before its edge.
     if (next == cells_.count(A)) {  // across the periodic boundary: the same point, one box back
         next = 0;
         edge = cells_.origin(A);
