@@ -1,11 +1,12 @@
 // The cell list of the samplers (ecmc, metropolis): the box cut into cells wider than a given
 // distance (ecmc: the contact distance sigma), each holding the disks whose centre lies in it.
-// In ecmc a disk that moves along
-// +x (or +y) by at most the distance to its cell's far edge can only meet disks of its own
-// column and the next one, in its row and the two beside it: 6 cells, not 9 (disks of the
-// column behind lie behind it). Membership is explicit (a disk knows its cell; a cell lists its
-// disks in a fixed-size slot array): a disk changes cell only when the chain moves it across an
-// edge, never by re-binning a rounded coordinate, so no disk can fall between two cells.
+// In ecmc a disk that moves along +x (or +y) by at most the distance to its cell's far edge
+// can only meet disks of its own column and the next one, in its row and the two beside it:
+// 6 cells, not 9 (disks of the column behind lie behind it); along -x (in a box with walls)
+// its own column and the previous one. Membership is explicit (a disk knows its cell; a cell
+// lists its disks in a fixed-size slot array): a disk changes cell only when the chain moves it
+// across an edge, never by re-binning a rounded coordinate, so no disk can fall between two
+// cells; a disk on the edge between two cells belongs to the one it came into.
 // (metropolis re-bins an accepted disk from its new position: a jump, not a slide.)
 #pragma once
 

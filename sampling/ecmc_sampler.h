@@ -1,6 +1,6 @@
-// `ecmc`: straight event-chain Monte Carlo for equal hard disks in a periodic box
-// (E. P. Bernard, W. Krauth, D. B. Wilson, Phys. Rev. E 80, 056704 (2009)), written to be read
-// in a sitting; docs/monte-carlo.md explains it and derives its pressure.
+// `ecmc`: straight event-chain Monte Carlo for equal hard disks in a periodic box or a box with
+// reflecting walls (E. P. Bernard, W. Krauth, D. B. Wilson, Phys. Rev. E 80, 056704 (2009)),
+// written to be read in a sitting; docs/monte-carlo.md explains it and derives its pressure.
 //
 // One chain: pick a disk at random and move it along +x (even chains) or +y (odd chains). When
 // it touches another disk, it stops there and the other one goes on ("lift"), until the moves
@@ -8,10 +8,20 @@
 // always ends somewhere legal, and the moves satisfy global balance with respect to the uniform
 // measure of non-overlapping configurations (the equilibrium of hard disks at any temperature).
 //
+// Walls (docs/monte-carlo.md, "Walls"): a chain starts along +x or -x (+y or -y) with
+// probability 1/2 each, and a disk that reaches a wall turns back and goes on with the rest of
+// the chain, as if it lifted to its mirror image behind the wall (a disk one diameter further
+// on). Starting in one direction only would break the balance: a wall turns chains back, so
+// the two directions must be equally likely from the start. A periodic box keeps +x and +y
+// (no wall turns a chain, and the chains draw exactly what they drew before walls existed).
+//
 // The pressure comes from the lifts (M. Michel, S. C. Kapfer, W. Krauth, J. Chem. Phys. 140,
 // 054116 (2014)): with x_ij the separation of the two centres along the chain's direction at a
 // lift (sqrt(sigma^2 - dy^2) at contact),
 //     beta P / rho = 1 + < sum over the chain's lifts of x_ij > / l,     rho = N / A,
+// where with walls a turn at a wall counts as a lift with x_ij = sigma (the mirror image), A is
+// the whole box, and the x and y chains are weighted by the lengths of the walls they push on,
+// so that the mean is the force on the walls per unit wall length, as `event` measures it.
 // recorded as beta P d^2 (d = sigma the diameter) per entry of `chains_per_entry` chains and
 // turned into beta_pressure +- beta_pressure_error by batch means, with psi6's phase sampled once
 // per entry for the mixing check (core/thermo/pressure_record.h, the counters of every backend).
@@ -42,7 +52,7 @@ inline constexpr double default_chain_length_diameters = 20;
 class EcmcSampler : public Solver {
 public:
     explicit EcmcSampler(const BackendOptions& options = {}) : options_(options) {}
-    // Why ecmc cannot sample `scene` (walls, gravity, e < 1, ...), or nullopt.
+    // Why ecmc cannot sample `scene` (gravity, e < 1, wall restitution < 1, ...), or nullopt.
     static std::optional<std::string> supports(const Scene& scene);
 
     std::string name() const override { return "ecmc"; }
@@ -53,16 +63,18 @@ public:
     SolverStats stats() const override;
 
     std::int64_t chains_total() const { return chains_total_; }
+    std::int64_t wall_turns() const { return wall_turns_; }
     double chain_length() const { return chain_length_; }
 
 private:
-    // One chain along axis A (0: +x, 1: +y).
-    template <int A>
+    // One chain along axis A (0: x, 1: y); Walls: the box has reflecting walls (else periodic).
+    template <int A, bool Walls>
     void run_chain();
-    void record_chain(double lift_sum);
-    // Moves disk i from its cell to the next one along axis A (wrapping at the box's edge).
+    void record_chain(int axis, double lift_sum);
+    // Moves disk i from its cell to the neighbouring one along axis A, ahead in +A if
+    // `forward`, else in -A (wrapping at the edge of a periodic box).
     template <int A>
-    void cross_edge(std::uint32_t i);
+    void cross_edge(std::uint32_t i, bool forward);
     void place_in_cells();
 
     BackendOptions options_;
@@ -74,10 +86,13 @@ private:
     ChainCells cells_;
     std::unique_ptr<gsl_rng, void (*)(gsl_rng*)> rng_{nullptr, gsl_rng_free};
 
+    bool walls_ = false;              // reflecting walls (else a periodic box)
+    double wall_contact_[2][2] = {};  // walls: the lowest and highest centre coordinate on each axis
+    double axis_weight_[2] = {1, 1};  // walls: the x and y chains' weights (see the header comment)
     double sigma_ = 0, sigma2_ = 0;   // contact distance and its square
     double chain_length_ = 0;         // l, in length units
     double density_d2_ = 0;           // rho sigma^2 = N sigma^2 / A
-    std::int64_t chains_total_ = 0, chains_done_ = 0, lifts_ = 0;
+    std::int64_t chains_total_ = 0, chains_done_ = 0, lifts_ = 0, wall_turns_ = 0;
     std::int64_t chains_per_entry_ = 1;
     double now_ = 0;
 

@@ -12,7 +12,7 @@ namespace collide {
 
 std::optional<std::string> outside_sampler_model(const SceneFeatures& f, const SamplerLimits& limits) {
     if (f.reflecting_walls && !limits.walls)
-        return "reflecting walls: this sampler handles periodic boxes only (a chain would have to stop at a wall)";
+        return "reflecting walls: this sampler handles periodic boxes only";
     if (f.gravity) return "gravity: a sampler draws from the uniform measure of hard disks, which has no potential energy";
     if (f.damping) return "damping: a sampler has no velocities to damp";
     if (f.friction) return "friction: a sampler has no collisions to exchange tangential impulse in";

@@ -6,6 +6,8 @@
 #include <string>
 
 #include "core/backend_registry.h"
+#include "core/scene/scene_features.h"
+#include "sampling/sampler_input.h"
 #include "tests/support/test_scenes.h"
 #include "validation/judge/checks.h"
 #include "validation/record/tolerances.h"
@@ -33,7 +35,7 @@ std::string refusal(const Scene& scene, const ParticleState<double>& start) {
 TEST(SamplerRefusals, SceneStatementsAboutDynamicsAreRefusedWithTheReason) {
     const BackendInfo& ecmc = find_backend("ecmc");
     const std::pair<std::function<void(Scene&)>, std::string> cases[] = {
-        {[](Scene& s) { s.world.boundary = Boundary::reflect; }, "reflecting walls"},
+        {[](Scene& s) { s.world.boundary = Boundary::reflect, s.physics.wall_restitution = 0.9; }, "wall restitution 0.9 < 1"},
         {[](Scene& s) { s.physics.gravity_y = -1; }, "gravity"},
         {[](Scene& s) { s.physics.restitution = 0.9; }, "restitution e = 0.9 < 1"},
         {[](Scene& s) { s.physics.damping = 0.1; }, "damping"},
@@ -48,6 +50,14 @@ TEST(SamplerRefusals, SceneStatementsAboutDynamicsAreRefusedWithTheReason) {
     }
     EXPECT_FALSE(ecmc.supports(periodic_box()));
     EXPECT_EQ(refusal(periodic_box(), four_disks()), "");
+    // Elastic walls: ecmc turns its chains back at them (docs/monte-carlo.md, "Walls"); a
+    // sampler that declares no walls still refuses them with the reason.
+    const Scene walled = box_scene(10, 10, Boundary::reflect);
+    EXPECT_FALSE(ecmc.supports(walled));
+    EXPECT_EQ(refusal(walled, four_disks()), "");
+    const auto no_walls = outside_sampler_model(scene_features(walled), SamplerLimits{.walls = false});
+    ASSERT_TRUE(no_walls);
+    EXPECT_NE(no_walls->find("reflecting walls"), std::string::npos) << *no_walls;
 }
 
 TEST(SamplerRefusals, StartsItCannotSampleAreRefusedNamingTheDisk) {
