@@ -70,8 +70,9 @@ def batch_contact(c, scene, frames, diameter):
 def routes(run, start):
     """The structure of a run of equal disks in a periodic box, from its frames at t >= start:
     a dict of n, eta, frames, contact (g(d)) and contact_error, z_contact (1 + 2 eta g(d)) and
-    its error, z_virial and its error (the run's collision virial, where it has one) and psi6
-    (the mean of |psi6| over the frames)."""
+    its error, z_virial and its error and beta_pressure and its error (the run's collision
+    virial, where it has one), mixed (the run's psi6 mixing check) and psi6 (the mean of |psi6|
+    over the frames)."""
     c = collide()
     with h5py.File(run, "r") as f:
         if "frames" not in f:
@@ -99,6 +100,8 @@ def routes(run, start):
         out["z_virial_error"] = float(counters["beta_pressure_error"]) * scale
         out["beta_pressure"] = float(counters["beta_pressure"])
         out["beta_pressure_error"] = float(counters["beta_pressure_error"])
+    if "psi6_mixed" in counters:   # whether the phase of psi6 crossed its range 3 times (Li et al. 2022)
+        out["mixed"] = bool(counters["psi6_mixed"])
     return out
 
 

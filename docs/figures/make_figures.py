@@ -448,7 +448,7 @@ def pair_correlation(lab, out):
 # Bernard and Krauth's transition at two sizes: Li et al.'s crystal-shaped periodic boxes (72 and
 # 870 disks; physics/li2022_n72_crystal.toml, li2022_n870_crystal.toml), started from the lattice
 # that fills them, a frame every time unit, |psi6| and beta P d^2 over the run's second half.
-HEXATIC_ETAS = (0.65, 0.67, 0.69, 0.698, 0.708, 0.72, 0.74)
+HEXATIC_ETAS = (0.65, 0.67, 0.69, 0.698, 0.70, 0.708, 0.72, 0.74)
 HEXATIC_BOXES = ((72, "physics/li2022_n72_crystal.toml", 9 * 6.928203230275509, 2000.0),
                  (870, "physics/li2022_n870_crystal.toml", 29 * 25.980762113533157, 200.0))
 
@@ -464,11 +464,18 @@ def hexatic(lab, out):
     fig, (order, pressure) = plt.subplots(1, 2, figsize=(9, 3.6), sharex=True)
     for k, (disks, name, area, duration) in enumerate(HEXATIC_BOXES):
         points = [hexatic_point(lab, disks, name, area, duration, eta) for eta in HEXATIC_ETAS]
+        for eta, p in zip(HEXATIC_ETAS, points):   # the numbers chapter 2.8 quotes
+            print(f"  N = {disks}, eta {eta:g}: |psi6| {p['psi6']:.3f}, beta P d^2 {p['beta_pressure']:.4f} +- "
+                  f"{p['beta_pressure_error']:.4f}{'' if p['mixed'] else ' (not mixed)'}")
         order.plot(HEXATIC_ETAS, [p["psi6"] for p in points], "o-", color=f"C{k}",
                    label=f"N = {disks}, {duration:g} time units")
         pressure.errorbar(HEXATIC_ETAS, [p["beta_pressure"] for p in points],
-                          yerr=[p["beta_pressure_error"] for p in points], fmt="o-", capsize=2, color=f"C{k}",
-                          label=f"event, N = {disks}")
+                          yerr=[p["beta_pressure_error"] for p in points], fmt="-", capsize=2, color=f"C{k}")
+        for mixed, style in ((True, "o"), (False, "x")):   # x: psi6 has not mixed (Li et al.'s check)
+            shown = [(eta, p["beta_pressure"]) for eta, p in zip(HEXATIC_ETAS, points) if p["mixed"] == mixed]
+            if shown:
+                pressure.plot(*zip(*shown), style, color=f"C{k}", ms=6,
+                              label=f"event, N = {disks}" + ("" if mixed else ", not mixed"))
         rows = [r for r in published if r["disks"] == disks and r["id"].startswith(f"N{disks}_crystal")]
         pressure.plot([r["eta"] for r in rows], [r["beta_pressure_d2"] for r in rows], "k" + "sd"[k], mfc="none",
                       ms=7, label=f"Li et al. 2022, N = {disks}")
@@ -477,8 +484,9 @@ def hexatic(lab, out):
     order.set_ylim(0, 1)
     order.set_title("orientational order, from the lattice", fontsize=10)
     order.legend()
+    pressure.legend(loc="lower right", fontsize=7)
     finish(fig, pressure, out, "ch2_hexatic", "area fraction η (dimensionless)", r"$\beta P d^2$ (dimensionless)",
-           "pressure: the loop of a finite box", legend_loc="upper left")
+           "pressure: the loop of a finite box", legend=False)
 
 
 # --- Chapter 3: many disks, stepped -------------------------------------------------------

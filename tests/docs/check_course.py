@@ -23,8 +23,9 @@
                                         small disks, three routes to one
                                         equilibrium, an event loop's 1e-9 push (caught in every
                                         scene only when declared exact), g(d) by the collision
-                                        virial and by lines over four windows, and wording found
-                                        false
+                                        virial and by lines over four windows, |psi6| and the
+                                        pressure across the hexatic transition at N = 72 and 870,
+                                        and wording found false
 
 An exercise is a "### Exercise" section of a chapter (docs/course/[1-9]-*.md): its first ```sh
 block is the command a student runs, with `collide` meaning the built program, in a scratch
@@ -764,6 +765,41 @@ def fact_pair_correlation(collide, scratch):
     return failures
 
 
+def fact_hexatic(collide, scratch):
+    """Chapter 2.8: each row of the table of |psi6| and beta P d^2 (N, eta), rerun through the
+    figure script's own hexatic_point (the same scene text, radius and run length), and the
+    0.708 point with the radius one ulp larger, which the text says lands elsewhere."""
+    sys.path.insert(0, str(ROOT / "docs" / "figures"))
+    import make_figures
+    page = re.sub(r"\s+", " ", (COURSE / "2-many-disks-exactly.md").read_text())
+    rows = re.findall(r"\| (72|870) \| ([\d.]+) \| ([\d.]+) \| ([\d.]+) ± ([\d.]+) \| (yes|no) \|", page)
+    nudged = re.search(r"one ulp larger \(([\d.]+) instead of ([\d.]+)\) gives βPd² = ([\d.]+)", page)
+    if len(rows) < 4 or not nudged:
+        return ["2-many-disks-exactly.md: section 2.8 has no table of |Ψ₆| and βPd² by N and η, or no one-ulp rerun"]
+    lab = make_figures.Lab(collide, scratch)
+    boxes = {str(disks): box for disks, *box in make_figures.HEXATIC_BOXES}
+    failures = []
+    for disks, eta, psi, pressure, error, mixed in rows:
+        name, area, duration = boxes[disks]
+        p = make_figures.hexatic_point(lab, int(disks), name, area, duration, float(eta))
+        measured = (p["psi6"], p["beta_pressure"], p["beta_pressure_error"], "yes" if p["mixed"] else "no")
+        if (abs(float(psi) - measured[0]) > 0.0015 or abs(float(pressure) - measured[1]) > 0.0015
+                or abs(float(error) - measured[2]) > 0.0015 or mixed != measured[3]):
+            failures.append(f"2-many-disks-exactly.md: N = {disks}, eta = {eta}: |psi6| {psi}, beta P d^2 {pressure} ± "
+                            f"{error}, mixed {mixed} on the page; the run: {measured[0]:.3f}, {measured[1]:.3f} ± "
+                            f"{measured[2]:.3f}, {measured[3]}")
+    name, area, duration = boxes["870"]
+    radius = float(np.sqrt(0.708 * area / (870 * np.pi)))
+    scene = lab.scene(name, radius=repr(np.nextafter(radius, 1.0)), duration=repr(duration), output_interval="1.0")
+    other = float(lab.run(scene, "event")["stats"]["counters"]["beta_pressure"])
+    if (nudged.group(1), nudged.group(2)) != (repr(np.nextafter(radius, 1.0)), repr(radius)) \
+            or abs(float(nudged.group(3)) - other) > 0.0015:
+        failures.append(f"2-many-disks-exactly.md: the radius one ulp larger ({nudged.group(1)} for {nudged.group(2)}) "
+                        f"gives {nudged.group(3)} on the page; the run: radius {np.nextafter(radius, 1.0)!r} for "
+                        f"{radius!r}, {other:.3f}")
+    return failures
+
+
 def check_facts(collide):
     with tempfile.TemporaryDirectory(prefix="collide-facts-") as scratch:
         scratch = pathlib.Path(scratch)
@@ -774,8 +810,9 @@ def check_facts(collide):
                     + fact_correlated_series(collide, scratch) + fact_lyapunov() + fact_wording()
                     + fact_replicates(collide, scratch) + fact_enskog_walls(collide, scratch)
                     + fact_fitted_grid(collide, scratch) + fact_sampling(collide, scratch)
-                    + fact_declared_exact(collide, scratch) + fact_pair_correlation(collide, scratch))
-    print("18 statements of the text measured")
+                    + fact_declared_exact(collide, scratch) + fact_pair_correlation(collide, scratch)
+                    + fact_hexatic(collide, scratch))
+    print("19 statements of the text measured")
     return failures
 
 
