@@ -117,6 +117,56 @@ def structure(run, start):
     print(f"|psi6| {r['psi6']:.3f} (mean over the frames; neighbours within {collide().PSI6_CUTOFF_DIAMETERS:g} d)")
 
 
+# --- Self-diffusion (chapter 2.9) ---------------------------------------------------------------
+
+def unwrapped(frames, box):
+    """Positions followed across the periodic box's edges: each frame's step is the nearest image
+    of the displacement since the last frame (right while no disk flies half a box between
+    frames), summed from the first frame."""
+    steps = np.diff(frames, axis=0)
+    steps -= box * np.round(steps / box)
+    return np.concatenate([frames[:1], frames[0] + np.cumsum(steps, axis=0)])
+
+
+def msd(x, lag):
+    """<|r(t + lag) - r(t)|^2> over the disks and every time origin of the unwrapped frames x."""
+    return ((x[lag:] - x[:-lag]) ** 2).sum(-1).mean()
+
+
+def diffusion(run, start, lags, blocks=4):
+    """D(tau), the slope of the mean-square displacement between tau and 2 tau,
+    (MSD(2 tau) - MSD(tau)) / (4 tau) (a slope, so the ballistic start's offset cancels), over the
+    disks and the time origins t >= start (frames evenly spaced), at each lag tau (in frames),
+    relative to Enskog's D_E = kT / (m nu) with the run's own collision rate nu and
+    kT = K_int / (N - 1): a dict of tau, ratio and its error (the spread of `blocks` consecutive
+    stretches of origins, each with its own ratio; 2 tau must fit in a stretch), enskog and nu."""
+    with h5py.File(run, "r") as f:
+        times, frames, velocities = f["frames/time"][:], f["frames/position"][:], f["frames/velocity"][:]
+        scene_box = [float(v) for v in collide().Scene.from_toml(f.attrs["scene_text"]).box]
+        mass = f["particles/mass"][:]
+        nu = float(f["stats/counters"].attrs["collision_rate"])
+    if not np.all(mass == mass[0]):
+        sys.exit(f"{run}: D_E = kT / (m nu) is stated for equal masses")
+    box = np.array([scene_box[2] - scene_box[0], scene_box[3] - scene_box[1]])
+    n, m = frames.shape[1], float(mass[0])
+    p = m * velocities[0].sum(axis=0)
+    kt = (0.5 * m * (velocities[0] ** 2).sum() - (p @ p) / (2 * m * n)) / (n - 1)  # e = 1: conserved
+    x = unwrapped(frames, box)[times >= start]
+    dt = float(times[1] - times[0])
+    enskog = kt / (m * nu)
+    slope = lambda y, lag: (msd(y, 2 * lag) - msd(y, lag)) / (4 * lag * dt) / enskog
+    stretch = len(x) // blocks
+    out = {"tau": [], "ratio": [], "error": [], "enskog": enskog, "nu": nu}
+    for lag in lags:
+        if 2 * lag >= stretch:
+            raise ValueError(f"lag {lag} frames: 2 lags must fit in a stretch of {stretch} frames")
+        per_block = [slope(x[b * stretch:(b + 1) * stretch], lag) for b in range(blocks)]
+        out["tau"].append(lag * dt)
+        out["ratio"].append(float(slope(x, lag)))
+        out["error"].append(float(np.std(per_block, ddof=1) / np.sqrt(blocks)))
+    return out
+
+
 # --- Exercise 2.8: g(r) ---------------------------------------------------------------------
 
 def random_disks(n, box, sigma, rng):

@@ -445,6 +445,24 @@ def pair_correlation(lab, out):
            "near contact: lines extrapolated to r = d", legend_loc="upper right")
 
 
+# Self-diffusion in the same fluid runs: the slope of the mean-square displacement between tau
+# and 2 tau, over Enskog's D_E = kT / (m nu) with the run's own collision rate (lab_structure).
+DIFFUSION_LAGS = (1, 2, 4, 8, 16, 24, 36)   # frames of 0.25
+
+
+def diffusion(lab, out):
+    fig, ax = plt.subplots(figsize=(6, 3.4))
+    for k, eta in enumerate((0.3, 0.5)):
+        d = lab_structure.diffusion(fluid_run(lab, eta)["path"], FLUID_START, DIFFUSION_LAGS)
+        ax.errorbar(np.array(d["tau"]) * d["nu"], d["ratio"], yerr=d["error"], fmt="o-", capsize=2, color=f"C{k}",
+                    label=f"η = {eta:g}")
+    ax.axhline(1, color="k", lw=0.8, ls="--", label="Enskog")
+    ax.set_xscale("log")
+    finish(fig, ax, out, "ch2_diffusion", r"lag $\tau$ in collisions of a disk, $\nu\tau$ (count)",
+           r"$D(\tau)/D_E$ (dimensionless)", "1152 disks on event: self-diffusion against Enskog's",
+           legend_loc="lower right")
+
+
 # Bernard and Krauth's transition at two sizes: Li et al.'s crystal-shaped periodic boxes (72 and
 # 870 disks; physics/li2022_n72_crystal.toml, li2022_n870_crystal.toml), started from the lattice
 # that fills them, a frame every time unit, |psi6| and beta P d^2 over the run's second half.
@@ -754,8 +772,8 @@ def threads(lab, out):
 
 
 FIGURES = {f.__name__: f for f in (head_on_mass_ratio, glancing, pi_circle, maxwell, equation_of_state,
-                                    snapshot, chaos, haff, pair_correlation, hexatic, convergence, cradle,
-                                    energy_crowd, work_precision, overlap_series, replicates, sampling,
+                                    snapshot, chaos, haff, pair_correlation, diffusion, hexatic, convergence,
+                                    cradle, energy_crowd, work_precision, overlap_series, replicates, sampling,
                                     speed_ladder, stepped_throughput, threads)}
 
 

@@ -25,7 +25,7 @@
                                         scene only when declared exact), g(d) by the collision
                                         virial and by lines over four windows, |psi6| and the
                                         pressure across the hexatic transition at N = 72 and 870,
-                                        and wording found false
+                                        self-diffusion against Enskog's, and wording found false
 
 An exercise is a "### Exercise" section of a chapter (docs/course/[1-9]-*.md): its first ```sh
 block is the command a student runs, with `collide` meaning the built program, in a scratch
@@ -800,6 +800,28 @@ def fact_hexatic(collide, scratch):
     return failures
 
 
+def fact_diffusion(collide, scratch):
+    """Chapter 2.9: the table of D(tau) / D_E at tau = 1, 2, 4 and 9 for eta = 0.3 and 0.5, and the
+    collision rate of each run, recomputed by lab_structure.diffusion from the fluid runs of 2.7."""
+    page = re.sub(r"\s+", " ", (COURSE / "2-many-disks-exactly.md").read_text())
+    sys.path.insert(0, str(ROOT / "docs" / "course"))
+    import lab_structure
+    failures = []
+    for eta in ("0.3", "0.5"):
+        row = re.search(rf"\| {eta} \| ([\d.]+) \|" + r" ([\d.]+) ± ([\d.]+) \|" * 4, page)
+        if not row:
+            failures.append(f"2-many-disks-exactly.md: section 2.9 has no row of D(tau) / D_E at eta = {eta}")
+            continue
+        fluid_structure(collide, scratch, eta)
+        d = lab_structure.diffusion(scratch / f"fluid{eta}.h5", 20.0, (4, 8, 16, 36))
+        said = [float(v) for v in row.groups()]
+        measured = [d["nu"]] + [v for pair in zip(d["ratio"], d["error"]) for v in pair]
+        if any(abs(s - m) > 0.0015 for s, m in zip(said, measured)):
+            failures.append(f"2-many-disks-exactly.md: eta = {eta}: nu and D(tau) / D_E ± error {said} on the page, "
+                            f"{[round(m, 3) for m in measured]} in the run")
+    return failures
+
+
 def check_facts(collide):
     with tempfile.TemporaryDirectory(prefix="collide-facts-") as scratch:
         scratch = pathlib.Path(scratch)
@@ -811,8 +833,8 @@ def check_facts(collide):
                     + fact_replicates(collide, scratch) + fact_enskog_walls(collide, scratch)
                     + fact_fitted_grid(collide, scratch) + fact_sampling(collide, scratch)
                     + fact_declared_exact(collide, scratch) + fact_pair_correlation(collide, scratch)
-                    + fact_hexatic(collide, scratch))
-    print("19 statements of the text measured")
+                    + fact_hexatic(collide, scratch) + fact_diffusion(collide, scratch))
+    print("20 statements of the text measured")
     return failures
 
 
