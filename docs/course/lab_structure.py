@@ -1,5 +1,6 @@
 """The structure of a hard-disk configuration for the course (chapter 2.7 and 2.8): what
-`lab.py structure RUN.h5` prints, and the checker of exercise 2.8 (`lab.py check gofr`).
+`lab.py structure RUN.h5` prints, and the checker of exercise 2.8 (`lab.py check gofr`); and
+the self-diffusion of chapter 2.9 from a run's frames (mean-square displacement against Enskog).
 
 Every g(r) and psi6 here is collide's own (core/structure, through the Python module built
 beside the `collide` program on PATH: collide.pair_correlation, collide.psi6); nothing here
