@@ -25,6 +25,7 @@
 #include "path_argument.h"
 #include "scene_from_dict.h"
 #include "simulation.h"
+#include "structure.h"
 #include "validation/record/case_result.h"
 #include "validation/plan/external_solvers.h"
 #include "validation/suite_runner.h"
@@ -397,4 +398,5 @@ PYBIND11_MODULE(_collide, m) {
     m.def("refusal", &refusal, py::arg("backend"), py::arg("scene"),
           "None if `backend` can run `scene`, else why not (the reason Simulation would give)");
     m.def("build_provenance", &build_provenance, "Commit, compiler, flags and library versions of this build");
+    bind_structure(m);
 }

@@ -22,8 +22,8 @@ std::complex<double> bond(const World& world, const ParticleState<double>& s, st
 
 // (1/n_j) sum_k exp(6 i theta_jk) over j's neighbours within the cutoff; 0 without neighbours.
 // exp(6 i theta) = (b / |b|)^6, so no angle is computed.
-std::complex<double> local_psi6(const World& world, const ParticleState<double>& s, const UniformGrid<double>& grid,
-                                std::size_t j, double cutoff) {
+std::complex<double> disk_psi6(const World& world, const ParticleState<double>& s, const UniformGrid<double>& grid,
+                               std::size_t j, double cutoff) {
     std::complex<double> sum = 0;
     std::size_t neighbours = 0;
     grid.for_each_candidate(s.x[j], s.y[j], [&](std::uint32_t k) {
@@ -42,15 +42,23 @@ double wrapped(double d) { return d - 2 * std::numbers::pi * std::round(d / (2 *
 
 }  // namespace
 
-std::complex<double> global_psi6(const World& world, const ParticleState<double>& state, double cutoff) {
+std::vector<std::complex<double>> local_psi6(const World& world, const ParticleState<double>& state, double cutoff) {
     const std::size_t n = state.size();
-    if (n == 0) return 0;
+    std::vector<std::complex<double>> local(n);
+    if (n == 0) return local;
     UniformGrid<double> grid;  // cells at least `cutoff` wide: the 3x3 cells hold every neighbour
     grid.configure(world, cutoff);
     grid.build(state.x.data(), state.y.data(), n);
+    for (std::size_t j = 0; j < n; ++j) local[j] = disk_psi6(world, state, grid, j, cutoff);
+    return local;
+}
+
+std::complex<double> global_psi6(const World& world, const ParticleState<double>& state, double cutoff) {
+    const std::vector<std::complex<double>> local = local_psi6(world, state, cutoff);
+    if (local.empty()) return 0;
     std::complex<double> sum = 0;
-    for (std::size_t j = 0; j < n; ++j) sum += local_psi6(world, state, grid, j, cutoff);
-    return sum / double(n);
+    for (const std::complex<double>& psi : local) sum += psi;
+    return sum / double(local.size());
 }
 
 std::complex<double> global_psi6(const World& world, const ParticleState<double>& state) {

@@ -32,7 +32,11 @@ constexpr double psi6_cutoff_diameters = 1.4;
 // Traversals of the full phase range a mixed run needs (Li et al. 2022).
 constexpr std::size_t psi6_traversals_to_mix = 3;
 
-// psi6 of the disks of `state` in `world`, neighbours within `cutoff` (centre distance).
+// The local psi6 of every disk j, (1/n_j) sum_k exp(6 i theta_jk) over its neighbours within
+// `cutoff` (centre distance; 0 for a disk without neighbours), in the state's disk order.
+std::vector<std::complex<double>> local_psi6(const World& world, const ParticleState<double>& state, double cutoff);
+
+// psi6 of the disks of `state` in `world`: the mean of their local psi6 (neighbours within `cutoff`).
 std::complex<double> global_psi6(const World& world, const ParticleState<double>& state, double cutoff);
 
 // psi6 with the cutoff of 1.4 mean diameters.

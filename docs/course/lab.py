@@ -10,12 +10,17 @@
     python3 docs/course/lab.py settings RUN.h5...   the backend's recorded settings (provenance)
     python3 docs/course/lab.py checks SUMMARY.json SCENE BACKEND   one case group's checks
     python3 docs/course/lab.py sweep SUMMARY.json SCENE BACKEND    its error at each dt
+    python3 docs/course/lab.py structure RUN.h5 [--from T]   g(d) with its batch-means error, Z by
+                                        the contact route and by the collision virial, and the
+                                        mean |psi6|, from the frames at t >= T (collide's module:
+                                        collide.pair_correlation, collide.psi6; needs --frames)
     python3 docs/course/lab.py check EXERCISE FILE.py  checks the code a student wrote for a
                                         coding exercise (galperin, root, haff, tunnel, blocks,
                                         metropolis, counting_sort, event_loop: this one runs
-                                        `collide validate`); exit status 0 when it is right
+                                        `collide validate`, gofr); exit status 0 when it is right
 
-Each reads the HDF5 layout of docs/output-format.md with h5py; nothing here simulates.
+Each reads the HDF5 layout of docs/output-format.md with h5py; nothing here simulates, and the
+structure (g(r), psi6) is collide's own, from the module beside the program on PATH.
 """
 import argparse
 import json
@@ -103,9 +108,16 @@ def sweep(summary, scene, backend):
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("what", choices=["velocities", "counters", "energy", "error", "same", "settings",
-                                         "checks", "sweep", "check"])
+                                         "checks", "sweep", "check", "structure"])
     parser.add_argument("files", nargs="+")
+    parser.add_argument("--from", dest="start", type=float, default=0.0,
+                        help="structure: use the frames from this time on (after the melt)")
     args = parser.parse_args()
+    if args.what == "structure":
+        import lab_structure
+        for path in args.files:
+            lab_structure.structure(path, args.start)
+        return
     if args.what == "check":
         if len(args.files) != 2:
             parser.error(f"check needs EXERCISE FILE.py (exercises: {', '.join(lab_check.EXERCISES)})")

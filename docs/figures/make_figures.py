@@ -35,6 +35,8 @@ sys.path.insert(0, str(ROOT / "validation" / "report"))
 sys.path.insert(1, str(ROOT / "python" / "collide"))
 import safe_output  # noqa: E402
 from collide_program import collide_module  # noqa: E402  (collide.read_run reads the run files)
+sys.path.insert(2, str(ROOT / "docs" / "course"))
+import lab_structure  # noqa: E402  (g(d), Z by two routes and |psi6| of a run, as `lab.py structure` prints them)
 
 
 class Lab:
@@ -72,7 +74,9 @@ class Lab:
         done = subprocess.run(command, capture_output=True, text=True)
         if done.returncode != 0:
             raise SystemExit(f"make_figures: {' '.join(command)} failed:\n{done.stderr}")
-        return self.reader.read_run(out, frames=frames)  # the checked C++ reader (core/io/run_reader.h)
+        result = self.reader.read_run(out, frames=frames)  # the checked C++ reader (core/io/run_reader.h)
+        result["path"] = out
+        return result
 
 
 def finish(fig, ax, out, name, xlabel, ylabel, title, legend=True, legend_loc=None):
@@ -386,6 +390,123 @@ def haff(lab, out):
     finish(fig, res, out, "ch2_haff", TIME, "T / Haff − 1 (dimensionless)", "", legend=False)
 
 
+# The hard-disk fluid of physics/hard_disk_fluid.toml (1152 disks melted from a hexagonal lattice,
+# periodic 32.5 x 32.18 box) at a chosen area fraction: 100 time units, a frame every 0.25, the
+# structure read from t = 20 on (the melt left out). The same run as exercise 2.8's command.
+FLUID_AREA, FLUID_DISKS, FLUID_START = 32.5 * 32.17691453623979, 1152, 20.0
+
+
+def fluid_radius(eta):
+    return float(np.sqrt(eta * FLUID_AREA / (FLUID_DISKS * np.pi)))
+
+
+def fluid_run(lab, eta):
+    scene = lab.scene("physics/hard_disk_fluid.toml", radius=repr(fluid_radius(eta)), duration="100.0",
+                      output_interval="0.25")
+    return lab.run(scene, "event", frames=True)
+
+
+def pair_correlation(lab, out):
+    # g(r) of the fluid at three area fractions (collide.pair_correlation over the frames), and
+    # near contact the straight lines through ten bins over [d, 1.05 d] and over [d, 1.2 d] whose
+    # values at d are g(d), beside g(d) = (Z - 1) / (2 eta) from the same run's collision virial.
+    fig, (wide, near) = plt.subplots(1, 2, figsize=(9, 3.6))
+    for k, eta in enumerate((0.3, 0.5, 0.65)):
+        f = fluid_run(lab, eta)
+        scene = lab.reader.Scene.from_toml(f["attributes"]["scene_text"])
+        frames = f["positions"][f["frame_times"] >= FLUID_START]
+        d = 2 * float(f["particles"]["radius"][0])
+        g = lab.reader.pair_correlation(scene, frames, d, 3 * d, 150)
+        wide.plot(np.r_[0.5, 1.0, g["r"] / d], np.r_[0.0, 0.0, g["g"]], color=f"C{k}", lw=1, label=f"η = {eta:g}")
+        if eta == 0.3:
+            continue
+        fine = lab.reader.pair_correlation(scene, frames, d, 0.25 * d, 50)
+        near.plot(fine["r"] / d, fine["g"], "o", ms=2.5, color=f"C{k}", label=f"η = {eta:g}: g(r), bins of 0.005 d")
+        for window, style in ((0.05, "-"), (0.2, "--")):
+            fit = lab.reader.pair_correlation(scene, frames, d, window * d, 10)
+            slope, contact = np.polyfit(fit["r"] - d, fit["g"], 1)   # the line core/structure fits
+            assert abs(contact - fit["contact"]) < 1e-9 * contact
+            near.plot([1, 1 + window], [contact, contact + slope * window * d], style, color="k", lw=0.8)
+        routes = lab_structure.routes(f["path"], FLUID_START)
+        virial = (routes["z_virial"] - 1) / (2 * eta)
+        near.errorbar([0.997], [virial], yerr=[routes["z_virial_error"] / (2 * eta)], fmt="s", color=f"C{k}", mfc="none",
+                      capsize=3, label=f"(Z − 1)/2η, collision virial: {virial:.3f}")
+    wide.axhline(1, color="grey", lw=0.5, ls=":")
+    wide.set_xlim(0.5, 4)
+    wide.set_xlabel(r"r ($\sigma$)")
+    wide.set_ylabel("g(r) (dimensionless)")
+    wide.set_title("1152 disks on event, frames from t = 20 to 100", fontsize=10)
+    wide.legend()
+    near.plot([], [], "k-", lw=0.8, label="line through [d, 1.05 d]")
+    near.plot([], [], "k--", lw=0.8, label="line through [d, 1.2 d]")
+    near.set_xlim(0.99, 1.25)
+    near.set_ylim(1, 8)  # room for the legend above the points
+    finish(fig, near, out, "ch2_pair_correlation", r"r ($\sigma$)", "g(r) (dimensionless)",
+           "near contact: lines extrapolated to r = d", legend_loc="upper right")
+
+
+# Self-diffusion in the same fluid runs: the slope of the mean-square displacement between tau
+# and 2 tau, over Enskog's D_E = kT / (m nu) with the run's own collision rate (lab_structure).
+DIFFUSION_LAGS = (1, 2, 4, 8, 16, 24, 36)   # frames of 0.25
+
+
+def diffusion(lab, out):
+    fig, ax = plt.subplots(figsize=(6, 3.4))
+    for k, eta in enumerate((0.3, 0.5)):
+        d = lab_structure.diffusion(fluid_run(lab, eta)["path"], FLUID_START, DIFFUSION_LAGS)
+        ax.errorbar(np.array(d["tau"]) * d["nu"], d["ratio"], yerr=d["error"], fmt="o-", capsize=2, color=f"C{k}",
+                    label=f"η = {eta:g}")
+    ax.axhline(1, color="k", lw=0.8, ls="--", label="Enskog")
+    ax.set_xscale("log")
+    finish(fig, ax, out, "ch2_diffusion", r"lag $\tau$ in collisions of a disk, $\nu\tau$ (count)",
+           r"$D(\tau)/D_E$ (dimensionless)", "1152 disks on event: self-diffusion against Enskog's",
+           legend_loc="lower right")
+
+
+# Bernard and Krauth's transition at two sizes: Li et al.'s crystal-shaped periodic boxes (72 and
+# 870 disks; physics/li2022_n72_crystal.toml, li2022_n870_crystal.toml), started from the lattice
+# that fills them, a frame every time unit, |psi6| and beta P d^2 over the run's second half.
+HEXATIC_ETAS = (0.65, 0.67, 0.69, 0.698, 0.70, 0.708, 0.72, 0.74)
+HEXATIC_BOXES = ((72, "physics/li2022_n72_crystal.toml", 9 * 6.928203230275509, 2000.0),
+                 (870, "physics/li2022_n870_crystal.toml", 29 * 25.980762113533157, 200.0))
+
+
+def hexatic_point(lab, disks, name, area, duration, eta):
+    radius = float(np.sqrt(eta * area / (disks * np.pi)))
+    scene = lab.scene(name, radius=repr(radius), duration=repr(duration), output_interval="1.0")
+    return lab_structure.routes(lab.run(scene, "event", frames=True)["path"], duration / 2)
+
+
+def hexatic(lab, out):
+    published = tomllib.loads((ROOT / "data/references/li_2022.toml").read_text())["rows"]
+    fig, (order, pressure) = plt.subplots(1, 2, figsize=(9, 3.6), sharex=True)
+    for k, (disks, name, area, duration) in enumerate(HEXATIC_BOXES):
+        points = [hexatic_point(lab, disks, name, area, duration, eta) for eta in HEXATIC_ETAS]
+        for eta, p in zip(HEXATIC_ETAS, points):   # the numbers chapter 2.8 quotes
+            print(f"  N = {disks}, eta {eta:g}: |psi6| {p['psi6']:.3f}, beta P d^2 {p['beta_pressure']:.4f} +- "
+                  f"{p['beta_pressure_error']:.4f}{'' if p['mixed'] else ' (not mixed)'}")
+        order.plot(HEXATIC_ETAS, [p["psi6"] for p in points], "o-", color=f"C{k}",
+                   label=f"N = {disks}, {duration:g} time units")
+        pressure.errorbar(HEXATIC_ETAS, [p["beta_pressure"] for p in points],
+                          yerr=[p["beta_pressure_error"] for p in points], fmt="-", capsize=2, color=f"C{k}")
+        for mixed, style in ((True, "o"), (False, "x")):   # x: psi6 has not mixed (Li et al.'s check)
+            shown = [(eta, p["beta_pressure"]) for eta, p in zip(HEXATIC_ETAS, points) if p["mixed"] == mixed]
+            if shown:
+                pressure.plot(*zip(*shown), style, color=f"C{k}", ms=6,
+                              label=f"event, N = {disks}" + ("" if mixed else ", not mixed"))
+        rows = [r for r in published if r["disks"] == disks and r["id"].startswith(f"N{disks}_crystal")]
+        pressure.plot([r["eta"] for r in rows], [r["beta_pressure_d2"] for r in rows], "k" + "sd"[k], mfc="none",
+                      ms=7, label=f"Li et al. 2022, N = {disks}")
+    order.set_xlabel("area fraction η (dimensionless)")
+    order.set_ylabel(r"$\langle|\Psi_6|\rangle$ (dimensionless)")
+    order.set_ylim(0, 1)
+    order.set_title("orientational order, from the lattice", fontsize=10)
+    order.legend()
+    pressure.legend(loc="lower right", fontsize=7)
+    finish(fig, pressure, out, "ch2_hexatic", "area fraction η (dimensionless)", r"$\beta P d^2$ (dimensionless)",
+           "pressure: the loop of a finite box", legend=False)
+
+
 # --- Chapter 3: many disks, stepped -------------------------------------------------------
 
 GOLDEN = (np.sqrt(5) - 1) / 2
@@ -651,9 +772,9 @@ def threads(lab, out):
 
 
 FIGURES = {f.__name__: f for f in (head_on_mass_ratio, glancing, pi_circle, maxwell, equation_of_state,
-                                    snapshot, chaos, haff, convergence, cradle, energy_crowd, work_precision,
-                                    overlap_series, replicates, sampling, speed_ladder, stepped_throughput,
-                                    threads)}
+                                    snapshot, chaos, haff, pair_correlation, diffusion, hexatic, convergence,
+                                    cradle, energy_crowd, work_precision, overlap_series, replicates, sampling,
+                                    speed_ladder, stepped_throughput, threads)}
 
 
 def main():

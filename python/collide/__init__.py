@@ -24,10 +24,14 @@ import sys
 from ._collide import (  # noqa: F401  (re-exported)
     Scene,
     SceneError,
+    PSI6_CUTOFF_DIAMETERS,
     Simulation,
     SuiteError,
     backends,
     build_provenance,
+    local_psi6,
+    pair_correlation,
+    psi6,
     refusal,
     toml_from_dict,
 )
@@ -36,7 +40,8 @@ from . import _collide, safe_output
 __version__ = build_provenance().get("collide_version", "")
 
 __all__ = ["Scene", "SceneError", "Simulation", "SuiteError", "RunResult", "run", "read_run", "validate", "export",
-           "backends", "build_provenance", "refusal", "toml_from_dict"]
+           "backends", "build_provenance", "refusal", "toml_from_dict", "pair_correlation", "local_psi6", "psi6",
+           "PSI6_CUTOFF_DIAMETERS"]
 
 
 class RunResult(dict):

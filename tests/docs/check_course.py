@@ -22,7 +22,10 @@
                                         drift, the walls' collision rate, the grid fitted to
                                         small disks, three routes to one
                                         equilibrium, an event loop's 1e-9 push (caught in every
-                                        scene only when declared exact), and wording found false
+                                        scene only when declared exact), g(d) by the collision
+                                        virial and by lines over four windows, |psi6| and the
+                                        pressure across the hexatic transition at N = 72 and 870,
+                                        self-diffusion against Enskog's, and wording found false
 
 An exercise is a "### Exercise" section of a chapter (docs/course/[1-9]-*.md): its first ```sh
 block is the command a student runs, with `collide` meaning the built program, in a scratch
@@ -712,6 +715,113 @@ def fact_declared_exact(collide, scratch):
     return failures
 
 
+# The fluid of chapter 2.7 and exercise 2.8 (physics/hard_disk_fluid.toml at a chosen area
+# fraction: 100 time units, a frame every 0.25, the structure from t = 20 on).
+FLUID_RADIUS = {"0.3": "0.2944240825689061", "0.5": "0.3800998561705903", "0.65": "0.433380515089424"}
+CONTACT_WINDOWS = ("0.2", "0.1", "0.05", "0.025")
+
+
+def fluid_structure(collide, scratch, eta):
+    """The exercise-2.8 run of the fluid at `eta`: its scene, frames from t = 20, diameter and
+    lab_structure.routes (Z by the virial and the contact route)."""
+    sys.path.insert(0, str(ROOT / "docs" / "course"))
+    import lab_structure
+    out = scratch / f"fluid{eta}.h5"
+    subprocess.run([collide, "run", str(SCENES / "physics/hard_disk_fluid.toml"), "--backend", "event", "--frames",
+                    "--out", str(out), "--set", f"particles.0.radius={FLUID_RADIUS[eta]}", "--set", "run.duration=100",
+                    "--set", "run.output_interval=0.25"], check=True, capture_output=True)
+    c = lab_structure.collide_module(collide)
+    with h5py.File(out, "r") as f:
+        frames = f["frames/position"][:][f["frames/time"][:] >= 20]
+        scene = c.Scene.from_toml(f.attrs["scene_text"])
+    return c, scene, frames, 2 * float(FLUID_RADIUS[eta]), lab_structure.routes(out, 20.0)
+
+
+def contact_by_window(c, scene, frames, d, window):
+    """g(d) by the line through 10 bins over [d, (1 + window) d], and its error over 10 blocks."""
+    k = len(frames) // 10
+    values = [c.pair_correlation(scene, frames[b * k:(b + 1) * k], d, window * d, 10)["contact"] for b in range(10)]
+    return float(np.mean(values)), float(np.std(values, ddof=1) / np.sqrt(10))
+
+
+def fact_pair_correlation(collide, scratch):
+    """Chapter 2.7: the table of g(d) by the collision virial and by the line through [d, (1 + w) d]
+    for four windows w, at eta = 0.5 and 0.65, each value and error as the runs give them."""
+    page = re.sub(r"\s+", " ", (COURSE / "2-many-disks-exactly.md").read_text())
+    failures = []
+    for eta in ("0.5", "0.65"):
+        row = re.search(rf"\| {eta} \| ([\d.]+) ± ([\d.]+) \|" + r" ([\d.]+) ± ([\d.]+) \|" * 4, page)
+        if not row:
+            failures.append(f"2-many-disks-exactly.md: section 2.7 has no row of g(d) by window at eta = {eta}")
+            continue
+        c, scene, frames, d, routes = fluid_structure(collide, scratch, eta)
+        measured = [((routes["z_virial"] - 1) / (2 * float(eta)), routes["z_virial_error"] / (2 * float(eta)))]
+        measured += [contact_by_window(c, scene, frames, d, float(w)) for w in CONTACT_WINDOWS]
+        said = [float(v) for v in row.groups()]
+        for k, (what, (value, error)) in enumerate(zip(("virial",) + CONTACT_WINDOWS, measured)):
+            if abs(said[2 * k] - value) > 0.0015 or abs(said[2 * k + 1] - error) > 0.0015:
+                failures.append(f"2-many-disks-exactly.md: g(d) at eta = {eta}, {what}: {said[2 * k]} ± "
+                                f"{said[2 * k + 1]} on the page, {value:.3f} ± {error:.3f} in the run")
+    return failures
+
+
+def fact_hexatic(collide, scratch):
+    """Chapter 2.8: each row of the table of |psi6| and beta P d^2 (N, eta), rerun through the
+    figure script's own hexatic_point (the same scene text, radius and run length), and the
+    0.708 point with the radius one ulp larger, which the text says lands elsewhere."""
+    sys.path.insert(0, str(ROOT / "docs" / "figures"))
+    import make_figures
+    page = re.sub(r"\s+", " ", (COURSE / "2-many-disks-exactly.md").read_text())
+    rows = re.findall(r"\| (72|870) \| ([\d.]+) \| ([\d.]+) \| ([\d.]+) ± ([\d.]+) \| (yes|no) \|", page)
+    nudged = re.search(r"one ulp larger \(([\d.]+) instead of ([\d.]+)\) gives βPd² = ([\d.]+)", page)
+    if len(rows) < 4 or not nudged:
+        return ["2-many-disks-exactly.md: section 2.8 has no table of |Ψ₆| and βPd² by N and η, or no one-ulp rerun"]
+    lab = make_figures.Lab(collide, scratch)
+    boxes = {str(disks): box for disks, *box in make_figures.HEXATIC_BOXES}
+    failures = []
+    for disks, eta, psi, pressure, error, mixed in rows:
+        name, area, duration = boxes[disks]
+        p = make_figures.hexatic_point(lab, int(disks), name, area, duration, float(eta))
+        measured = (p["psi6"], p["beta_pressure"], p["beta_pressure_error"], "yes" if p["mixed"] else "no")
+        if (abs(float(psi) - measured[0]) > 0.0015 or abs(float(pressure) - measured[1]) > 0.0015
+                or abs(float(error) - measured[2]) > 0.0015 or mixed != measured[3]):
+            failures.append(f"2-many-disks-exactly.md: N = {disks}, eta = {eta}: |psi6| {psi}, beta P d^2 {pressure} ± "
+                            f"{error}, mixed {mixed} on the page; the run: {measured[0]:.3f}, {measured[1]:.3f} ± "
+                            f"{measured[2]:.3f}, {measured[3]}")
+    name, area, duration = boxes["870"]
+    radius = float(np.sqrt(0.708 * area / (870 * np.pi)))
+    scene = lab.scene(name, radius=repr(np.nextafter(radius, 1.0)), duration=repr(duration), output_interval="1.0")
+    other = float(lab.run(scene, "event")["stats"]["counters"]["beta_pressure"])
+    if (nudged.group(1), nudged.group(2)) != (repr(np.nextafter(radius, 1.0)), repr(radius)) \
+            or abs(float(nudged.group(3)) - other) > 0.0015:
+        failures.append(f"2-many-disks-exactly.md: the radius one ulp larger ({nudged.group(1)} for {nudged.group(2)}) "
+                        f"gives {nudged.group(3)} on the page; the run: radius {np.nextafter(radius, 1.0)!r} for "
+                        f"{radius!r}, {other:.3f}")
+    return failures
+
+
+def fact_diffusion(collide, scratch):
+    """Chapter 2.9: the table of D(tau) / D_E at tau = 1, 2, 4 and 9 for eta = 0.3 and 0.5, and the
+    collision rate of each run, recomputed by lab_structure.diffusion from the fluid runs of 2.7."""
+    page = re.sub(r"\s+", " ", (COURSE / "2-many-disks-exactly.md").read_text())
+    sys.path.insert(0, str(ROOT / "docs" / "course"))
+    import lab_structure
+    failures = []
+    for eta in ("0.3", "0.5"):
+        row = re.search(rf"\| {eta} \| ([\d.]+) \|" + r" ([\d.]+) ± ([\d.]+) \|" * 4, page)
+        if not row:
+            failures.append(f"2-many-disks-exactly.md: section 2.9 has no row of D(tau) / D_E at eta = {eta}")
+            continue
+        fluid_structure(collide, scratch, eta)
+        d = lab_structure.diffusion(scratch / f"fluid{eta}.h5", 20.0, (4, 8, 16, 36))
+        said = [float(v) for v in row.groups()]
+        measured = [d["nu"]] + [v for pair in zip(d["ratio"], d["error"]) for v in pair]
+        if any(abs(s - m) > 0.0015 for s, m in zip(said, measured)):
+            failures.append(f"2-many-disks-exactly.md: eta = {eta}: nu and D(tau) / D_E ± error {said} on the page, "
+                            f"{[round(m, 3) for m in measured]} in the run")
+    return failures
+
+
 def check_facts(collide):
     with tempfile.TemporaryDirectory(prefix="collide-facts-") as scratch:
         scratch = pathlib.Path(scratch)
@@ -722,8 +832,9 @@ def check_facts(collide):
                     + fact_correlated_series(collide, scratch) + fact_lyapunov() + fact_wording()
                     + fact_replicates(collide, scratch) + fact_enskog_walls(collide, scratch)
                     + fact_fitted_grid(collide, scratch) + fact_sampling(collide, scratch)
-                    + fact_declared_exact(collide, scratch))
-    print("17 statements of the text measured")
+                    + fact_declared_exact(collide, scratch) + fact_pair_correlation(collide, scratch)
+                    + fact_hexatic(collide, scratch) + fact_diffusion(collide, scratch))
+    print("20 statements of the text measured")
     return failures
 
 

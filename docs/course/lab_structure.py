@@ -1,0 +1,224 @@
+"""The structure of a hard-disk configuration for the course (chapter 2.7 and 2.8): what
+`lab.py structure RUN.h5` prints, and the checker of exercise 2.8 (`lab.py check gofr`); and
+the self-diffusion of chapter 2.9 from a run's frames (mean-square displacement against Enskog).
+
+Every g(r) and psi6 here is collide's own (core/structure, through the Python module built
+beside the `collide` program on PATH: collide.pair_correlation, collide.psi6); nothing here
+computes them a second time. The checker holds a student's g(r) to collide's, and names the
+usual slips by asking collide for the slipped quantity too (the same pairs in a box without
+periodic images, for instance).
+"""
+import pathlib
+import shutil
+import sys
+
+import h5py
+import numpy as np
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT / "validation" / "report"))
+from collide_program import collide_module  # noqa: E402  (the module beside the program)
+from lab_check import Unavailable, Wrong, load  # noqa: E402
+
+# The window of the contact value (chapter 2.7): a straight line through 10 bins over [d, 1.05 d]
+# (its bias is of second order in the window over the decay length of g near contact, about
+# 1 / (beta P d): small against the batch-means error up to eta 0.5, 0.7 % at 0.65).
+CONTACT_WIDTH, CONTACT_BINS = 0.05, 10
+# Blocks of frames for the batch-means error of the contact value (chapter 4.4).
+BLOCKS = 10
+
+
+def collide():
+    """The module `collide`: the one already imported (the figure script loads it beside the
+    program it was given), else the one built beside the program on PATH."""
+    if "collide" in sys.modules:
+        return sys.modules["collide"]
+    program = shutil.which("collide")
+    if program is None:
+        raise Unavailable("this needs collide's Python module: put the built collide on your PATH "
+                          "(0-before-you-start.md)")
+    return collide_module(program)
+
+
+def box_scene(width, height, boundary="periodic"):
+    """A scene of the given box, for its world only (the module reads the box and boundary)."""
+    return collide().Scene.from_toml(f"""description = "a box for g(r) and psi6"
+seed = 1
+[world]
+box = [0.0, 0.0, {float(width)!r}, {float(height)!r}]
+boundary = "{boundary}"
+[run]
+duration = 1.0
+output_interval = 1.0
+dt = 1e-3
+[[particles]]
+kind = "list"
+disks = [{{ x = 0.5, y = 0.5, vx = 0.0, vy = 0.0, radius = 0.1, mass = 1.0 }}]
+""")
+
+
+# --- lab.py structure RUN.h5 ------------------------------------------------------------------
+
+def batch_contact(c, scene, frames, diameter):
+    """g(d) of the frames, and its batch-means error over BLOCKS equal blocks of them (the fit is
+    linear in the counts, so the blocks' mean is the fit of all their frames)."""
+    per_block = len(frames) // BLOCKS
+    values = [c.pair_correlation(scene, frames[k * per_block:(k + 1) * per_block], diameter,
+                                 CONTACT_WIDTH * diameter, CONTACT_BINS)["contact"] for k in range(BLOCKS)]
+    return float(np.mean(values)), float(np.std(values, ddof=1) / np.sqrt(BLOCKS))
+
+
+def routes(run, start):
+    """The structure of a run of equal disks in a periodic box, from its frames at t >= start:
+    a dict of n, eta, frames, contact (g(d)) and contact_error, z_contact (1 + 2 eta g(d)) and
+    its error, z_virial and its error and beta_pressure and its error (the run's collision
+    virial, where it has one), mixed (the run's psi6 mixing check) and psi6 (the mean of |psi6|
+    over the frames)."""
+    c = collide()
+    with h5py.File(run, "r") as f:
+        if "frames" not in f:
+            sys.exit(f"{run}: written without --frames: rerun `collide run ... --frames`")
+        times, frames = f["frames/time"][:], f["frames/position"][:]
+        radius = f["particles/radius"][:]
+        scene = c.Scene.from_toml(f.attrs["scene_text"])
+        counters = dict(f["stats/counters"].attrs)
+    if not np.all(radius == radius[0]):
+        sys.exit(f"{run}: g(r) and Z = 1 + 2 eta g(d) are stated for equal disks")
+    frames = frames[times >= start]
+    if len(frames) < BLOCKS:
+        sys.exit(f"{run}: {len(frames)} frames at t >= {start:g}; at least {BLOCKS} wanted")
+    n, d = len(radius), 2 * float(radius[0])
+    x0, y0, x1, y1 = scene.box
+    area = (x1 - x0) * (y1 - y0)
+    eta = n * np.pi * d * d / (4 * area)
+    contact, error = batch_contact(c, scene, frames, d)
+    out = {"n": n, "eta": eta, "frames": len(frames), "contact": contact, "contact_error": error,
+           "z_contact": 1 + 2 * eta * contact, "z_contact_error": 2 * eta * error,
+           "psi6": float(np.mean([abs(c.psi6(scene, x, c.PSI6_CUTOFF_DIAMETERS * d)) for x in frames]))}
+    if "beta_pressure" in counters:
+        scale = area / (n * d * d)   # Z = beta P / rho = beta P d^2 * A / (N d^2)
+        out["z_virial"] = float(counters["beta_pressure"]) * scale
+        out["z_virial_error"] = float(counters["beta_pressure_error"]) * scale
+        out["beta_pressure"] = float(counters["beta_pressure"])
+        out["beta_pressure_error"] = float(counters["beta_pressure_error"])
+    if "psi6_mixed" in counters:   # whether the phase of psi6 crossed its range 3 times (Li et al. 2022)
+        out["mixed"] = bool(counters["psi6_mixed"])
+    return out
+
+
+def structure(run, start):
+    """Prints routes(run, start)."""
+    r = routes(run, start)
+    print(f"{r['n']} disks, eta {r['eta']:.4f}, {r['frames']} frames from t = {start:g}")
+    print(f"g(d) {r['contact']:.3f} +- {r['contact_error']:.3f} (a line through {CONTACT_BINS} bins over "
+          f"[d, {1 + CONTACT_WIDTH:g} d])")
+    print(f"Z contact 1 + 2 eta g(d) = {r['z_contact']:.3f} +- {r['z_contact_error']:.3f}")
+    if "z_virial" in r:
+        print(f"Z virial {r['z_virial']:.3f} +- {r['z_virial_error']:.3f} (the run's collision virial)")
+    print(f"|psi6| {r['psi6']:.3f} (mean over the frames; neighbours within {collide().PSI6_CUTOFF_DIAMETERS:g} d)")
+
+
+# --- Self-diffusion (chapter 2.9) ---------------------------------------------------------------
+
+def unwrapped(frames, box):
+    """Positions followed across the periodic box's edges: each frame's step is the nearest image
+    of the displacement since the last frame (right while no disk flies half a box between
+    frames), summed from the first frame."""
+    steps = np.diff(frames, axis=0)
+    steps -= box * np.round(steps / box)
+    return np.concatenate([frames[:1], frames[0] + np.cumsum(steps, axis=0)])
+
+
+def msd(x, lag):
+    """<|r(t + lag) - r(t)|^2> over the disks and every time origin of the unwrapped frames x."""
+    return ((x[lag:] - x[:-lag]) ** 2).sum(-1).mean()
+
+
+def diffusion(run, start, lags, blocks=4):
+    """D(tau), the slope of the mean-square displacement between tau and 2 tau,
+    (MSD(2 tau) - MSD(tau)) / (4 tau) (a slope, so the ballistic start's offset cancels), over the
+    disks and the time origins t >= start (frames evenly spaced), at each lag tau (in frames),
+    relative to Enskog's D_E = kT / (m nu) with the run's own collision rate nu and
+    kT = K_int / (N - 1): a dict of tau, ratio and its error (the spread of `blocks` consecutive
+    stretches of origins, each with its own ratio; 2 tau must fit in a stretch), enskog and nu."""
+    with h5py.File(run, "r") as f:
+        times, frames, velocities = f["frames/time"][:], f["frames/position"][:], f["frames/velocity"][:]
+        scene_box = [float(v) for v in collide().Scene.from_toml(f.attrs["scene_text"]).box]
+        mass = f["particles/mass"][:]
+        nu = float(f["stats/counters"].attrs["collision_rate"])
+    if not np.all(mass == mass[0]):
+        sys.exit(f"{run}: D_E = kT / (m nu) is stated for equal masses")
+    box = np.array([scene_box[2] - scene_box[0], scene_box[3] - scene_box[1]])
+    n, m = frames.shape[1], float(mass[0])
+    p = m * velocities[0].sum(axis=0)
+    kt = (0.5 * m * (velocities[0] ** 2).sum() - (p @ p) / (2 * m * n)) / (n - 1)  # e = 1: conserved
+    x = unwrapped(frames, box)[times >= start]
+    dt = float(times[1] - times[0])
+    enskog = kt / (m * nu)
+    slope = lambda y, lag: (msd(y, 2 * lag) - msd(y, lag)) / (4 * lag * dt) / enskog
+    stretch = len(x) // blocks
+    out = {"tau": [], "ratio": [], "error": [], "enskog": enskog, "nu": nu}
+    for lag in lags:
+        if 2 * lag >= stretch:
+            raise ValueError(f"lag {lag} frames: 2 lags must fit in a stretch of {stretch} frames")
+        per_block = [slope(x[b * stretch:(b + 1) * stretch], lag) for b in range(blocks)]
+        out["tau"].append(lag * dt)
+        out["ratio"].append(float(slope(x, lag)))
+        out["error"].append(float(np.std(per_block, ddof=1) / np.sqrt(blocks)))
+    return out
+
+
+# --- Exercise 2.8: g(r) ---------------------------------------------------------------------
+
+def random_disks(n, box, sigma, rng):
+    """n disks of diameter sigma placed one by one at random, each where it overlaps none
+    (nearest image): a configuration with pairs at every distance, many across the edges."""
+    x = np.empty((0, 2))
+    while len(x) < n:
+        p = rng.uniform(0, 1, 2) * box
+        d = x - p
+        d -= box * np.round(d / box)
+        if len(x) == 0 or (d ** 2).sum(axis=1).min() >= sigma * sigma:
+            x = np.vstack([x, p])
+    return x
+
+
+def gofr_hint(got, want, r, mirror_free):
+    """The slip that explains a wrong g, where one does."""
+    both = (want > 0) & (got > 0)
+    ratio = got[both] / want[both]
+    if np.allclose(got, mirror_free, rtol=1e-9, atol=1e-12):
+        return ("pairs across the box's edge are missing: the distance of a pair in a periodic box is that of the "
+                "nearest image, each component of d brought into [-L/2, L/2] (d - L round(d / L))")
+    if ratio.size and np.allclose(ratio, ratio[0], rtol=1e-9):
+        return (f"every bin is off by the same factor {ratio[0]:.6g}: count each pair once and divide by the "
+                "N (N - 1) / 2 pairs of an ideal gas of the same N (each disk has N - 1 partners, not N)")
+    if ratio.size > 2 and np.allclose(ratio / r[both], ratio[0] / r[both][0], rtol=1e-9):
+        return ("the bins are off by a factor that grows in proportion to r: the ideal gas puts pairs in a shell "
+                "of area pi (r2^2 - r1^2) = 2 pi r dr, r the bin's centre (not the contact distance, not dr alone)")
+    return "g = pairs in the bin / (N (N - 1) / 2 * pi (r2^2 - r1^2) / A), with nearest-image distances"
+
+
+def check_gofr(path):
+    """pair_correlation(x, box, sigma, width, bins) -> g in `bins` equal bins over [sigma,
+    sigma + width] for one configuration x (N x 2) of disks in a periodic box (Lx, Ly), held to
+    collide.pair_correlation bin by bin (relative 1e-9) on configurations with many pairs across
+    the box's edges."""
+    g_of = load(path, "pair_correlation")
+    c = collide()
+    rng = np.random.default_rng(8)
+    cases = [((12.0, 10.4), 1.0, 60, 0.5, 10), ((9.0, 9.0), 1.0, 40, 0.1, 5), ((7.5, 11.0), 0.8, 50, 2.0, 40)]
+    for box, sigma, n, width, bins in cases:
+        x = random_disks(n, np.array(box), sigma, rng)
+        theirs = c.pair_correlation(box_scene(*box), x, sigma, width, bins)
+        want, r = np.asarray(theirs["g"]), np.asarray(theirs["r"])
+        got = np.asarray(g_of(x.copy(), box, sigma, width, bins), dtype=float)
+        if got.shape != want.shape:
+            raise Wrong(f"pair_correlation on {n} disks, {bins} bins: an array of shape {got.shape}, {want.shape} wanted")
+        if not np.allclose(got, want, rtol=1e-9, atol=1e-12):
+            mirror_free = np.asarray(c.pair_correlation(box_scene(*box, "reflect"), x, sigma, width, bins)["g"])
+            worst = int(np.argmax(np.abs(got - want)))
+            raise Wrong(f"{n} disks of diameter {sigma:g} in a periodic {box[0]:g} x {box[1]:g} box, {bins} bins over "
+                        f"[{sigma:g}, {sigma + width:g}]: bin {worst} (r = {r[worst]:.3f}) g = {got[worst]:.6g}, collide "
+                        f"says {want[worst]:.6g}: {gofr_hint(got, want, r, mirror_free)}")
+    return "g(r) equal to collide's in every bin on three configurations with pairs across the box's edges"
