@@ -5,6 +5,7 @@
 #include <random>
 
 #include "validation/judge/statistics.h"
+#include "validation/record/exact_limits.h"
 #include "validation/record/tolerances.h"
 
 namespace collide::validation {
@@ -114,6 +115,23 @@ TEST(DefaultTolerances, DualPrecisionBackendIsJudgedAsItsDefaultFloat) {
     const Tolerances twice = default_tolerances(find_backend("step"));
     EXPECT_EQ(dual.momentum_drift, single.momentum_drift);
     EXPECT_LT(twice.momentum_drift, dual.momentum_drift);
+}
+
+// A solver that declares no rule (an outside engine) does not promise the stepped rules'
+// "overlap removed in the step that finds it": it keeps a contact solver's 1e-2 beyond one step
+// (planck as shipped leaves 1.7e-3 of slop, which the rules' rounding limit failed), while a
+// declared rule keeps the rounding of its positions.
+TEST(DefaultTolerances, AnUndeclaredSolverIsNotHeldToTheRulesOverlapRounding) {
+    BackendInfo undeclared;
+    undeclared.name = "engine";
+    undeclared.precision = "double";
+    BackendInfo rule = undeclared;
+    rule.rule = "collide-first";
+    RoundingScale scale;
+    scale.smallest_radius = 0.5;
+    scale.coordinate = 10;
+    EXPECT_DOUBLE_EQ(default_tolerances(undeclared, scale).overlap_beyond_step, 1e-2);
+    EXPECT_LT(default_tolerances(rule, scale).overlap_beyond_step, 1e-12);
 }
 
 }  // namespace
