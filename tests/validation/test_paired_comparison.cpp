@@ -101,7 +101,8 @@ TEST(PairedComparison, ACoolingGasIsJudgedByItsCoolingTimeSeedBySeed) {
 TEST(PairedComparison, AnExactCopyHasNoDifference) {
     SceneFeatures cooling;
     cooling.restitution = 0.9;
-    const WorkPrecisionPoint& p = judge(cooling, 0.0).work_precision[0].points[0];
+    const auto judged = judge(cooling, 0.0);  // kept: p refers into it
+    const WorkPrecisionPoint& p = judged.work_precision[0].points[0];
     ASSERT_TRUE(p.paired);
     EXPECT_NEAR(p.paired->relative, 0.0, 1e-12);
     EXPECT_FALSE(p.paired->resolved);

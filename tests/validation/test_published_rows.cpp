@@ -248,7 +248,8 @@ TEST(PublishedFiniteN, EachRouteNamesTheEstimatorItsCasesRecorded) {
         r.counters["contact_window"] = 0.043;
         results.push_back(r);
     }
-    const PhysicsRow& metropolis = row_of(rows_of(crystal_suite(), results), "published_finite_n", "metropolis");
+    const std::vector<PhysicsRow> with_metropolis = rows_of(crystal_suite(), results);  // kept: the row refers into it
+    const PhysicsRow& metropolis = row_of(with_metropolis, "published_finite_n", "metropolis");
     EXPECT_NE(metropolis.estimator.find("pair-gap histogram"), std::string::npos) << metropolis.estimator;
     EXPECT_NE(metropolis.estimator.find("0.043"), std::string::npos) << metropolis.estimator;
 }
