@@ -121,6 +121,7 @@ int main(int argc, char **argv) {
         FILE *f = open_in(dir, "result.txt", "w");
         fprintf(f, "refuse only the collide-first order\n");
         fclose(f);
+        free(q.times);
         return 0;
     }
     const long n = q.disks;
@@ -182,5 +183,6 @@ int main(int argc, char **argv) {
     for (long k = 0; k < q.n_times; ++k) fprintf(f, " %.17g", q.times[k]);
     fprintf(f, "\nsteps %ld\ncontacts %ld\nversion c-stepper 1\n", steps, contacts);
     fclose(f);
+    free(out), free(d), free(w), free(s), free(q.times);
     return 0;
 }
