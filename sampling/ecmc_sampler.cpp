@@ -192,6 +192,10 @@ void EcmcSampler::run_chain() {
                     if (du <= 0 || j == active) continue;  // behind: never in the way
                     const double dw = pos_[B][j] + shift_b - w, dw2 = dw * dw;
                     if (dw2 >= sigma2_) continue;  // passes beside
+                    // In the way before `step` iff du - step < sqrt(sigma^2 - dw^2): squared when
+                    // du > step, so that only a disk nearer than the best so far pays a sqrt.
+                    const double ahead = du - step;
+                    if (ahead > 0 && ahead * ahead >= sigma2_ - dw2) continue;
                     const double gap = du - std::sqrt(sigma2_ - dw2);
                     if (gap < step) {
                         step = gap > 0 ? gap : 0;  // a pair touching to rounding: lift at once
