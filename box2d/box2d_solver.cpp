@@ -2,6 +2,7 @@
 
 #include <box2d/box2d.h>
 
+#include "box2d/box2d_profiler.h"
 #include "core/numerics/number_text.h"
 #include "core/scene/option_reader.h"
 #include "core/numerics/representability.h"
@@ -327,6 +328,7 @@ std::map<std::string, std::string> Box2dSolver::provenance() const {
         {"box2d_warm_starting", flag(options_.warm_starting)},
         {"box2d_continuous", flag(options_.continuous)},
         {"box2d_fixed_rotation", flag(options_.fixed_rotation)},
+        {"box2d_profiler", box2d_profiler_off() ? "off (b2Timer reads no clock: box2d_profiler.cpp)" : "on"},
     };
 }
 
