@@ -85,16 +85,21 @@ py::dict run(const Scene& given, const std::string& backend_name, const PathArgu
     return d;
 }
 
+// One outside solver of validate(solvers=...), as python/collide/__init__.py's _solver_entry
+// builds it: (name, command, "module:Class", rule, exact, precision, long_lived), the fields
+// of external::ExternalSolverSpec that a suite's [solver.NAME] table and the CLI's options set.
+using SolverEntry = std::tuple<std::string, std::string, std::string, std::string, bool, std::string, bool>;
+
 // Runs the suite as `collide validate` does (progress on stderr); the caller reads summary.json.
-// `solvers`: outside solvers (name, command, "module:Class", rule, exact, precision), run by
-// `runner` for a class; a class's own attributes are read with the suite's (class_declarations.h).
+// `solvers`: outside solvers, run by `runner` for a class; a class's own attributes are read
+// with the suite's (class_declarations.h).
 py::dict validate(const PathArgument& suite_path, const PathArgument& out, int jobs, bool resume,
-                  const std::vector<std::tuple<std::string, std::string, std::string, std::string, bool, std::string>>& solvers,
+                  const std::vector<SolverEntry>& solvers,
                   const validation::PythonRunner& runner) {
     if (jobs <= 0) jobs = validation::default_jobs();
     validation::Suite suite = validation::load_suite(suite_path);
     std::vector<external::ExternalSolverSpec> specs;
-    for (const auto& [name, command, python_class, rule, exact, precision] : solvers) {
+    for (const auto& [name, command, python_class, rule, exact, precision, long_lived] : solvers) {
         external::ExternalSolverSpec spec;
         spec.name = name;
         spec.command = command;
@@ -102,6 +107,7 @@ py::dict validate(const PathArgument& suite_path, const PathArgument& out, int j
         spec.rule = rule;
         spec.exact = exact;
         spec.precision = precision;
+        spec.long_lived = long_lived;
         spec.origin = "solvers[\"" + name + "\"]";
         if (std::string problem = external::spec_problem(spec); !problem.empty())
             throw validation::SuiteError(spec.origin + ": " + problem);
@@ -386,7 +392,7 @@ PYBIND11_MODULE(_collide, m) {
     m.def("_read_run", &read_run, py::arg("path"), py::arg("frames"));
     m.def("_export", &export_run, py::arg("run"), py::arg("out"), py::arg("format"));
     m.def("_validate", [](const PathArgument& suite, const PathArgument& out, int jobs, bool resume,
-                          const std::vector<std::tuple<std::string, std::string, std::string, std::string, bool, std::string>>& solvers,
+                          const std::vector<SolverEntry>& solvers,
                           const PathArgument& python, const PathArgument& runner) {
         return validate(suite, out, jobs, resume, solvers, validation::PythonRunner{python, runner});
     }, py::arg("suite"), py::arg("out"), py::arg("jobs"), py::arg("resume"), py::arg("solvers"), py::arg("python"),

@@ -116,23 +116,32 @@ def _class_file(name, solver):
         return None
 
 
+_SOLVER_KEYS = ("command", "python", "rule", "exact", "precision", "long_lived")
+
+
 def _solver_entry(name, solver):
-    """(name, command, "file.py:Class", rule, exact, precision) for one entry of validate(solvers=...).
-    A class's own attributes (exact, precision, rule) are read by collide itself, as for
-    `collide validate --python-solver` (solver_runner.py --declarations), not here."""
+    """(name, command, "file.py:Class", rule, exact, precision, long_lived) for one entry of
+    validate(solvers=...). A class's own attributes (exact, precision, rule) are read by collide
+    itself, as for `collide validate --python-solver` (solver_runner.py --declarations), not here.
+    A dict's keys are those of a suite's [solver.NAME] table; a key it does not know is refused,
+    not ignored (a misspelt "long-lived" would otherwise start the program once per call)."""
     if isinstance(solver, type):
         path = _class_file(name, solver)
         if path is None or "." in solver.__qualname__:
             raise ValueError("solvers[%r]: %r must be a class defined at the top level of a .py file, so that "
                              "collide's runner can load it in a process of its own" % (name, solver))
-        return (name, "", "%s:%s" % (os.path.abspath(path), solver.__qualname__), "", False, "")
+        return (name, "", "%s:%s" % (os.path.abspath(path), solver.__qualname__), "", False, "", False)
     if isinstance(solver, str) and ":" in solver and " " not in solver:
-        return (name, "", solver, "", False, "")
+        return (name, "", solver, "", False, "", False)
     if isinstance(solver, dict):
+        unknown = sorted(str(k) for k in solver if k not in _SOLVER_KEYS)
+        if unknown:
+            raise ValueError("solvers[%r]: no such key %s (allowed: %s)" % (name, ", ".join(map(repr, unknown)),
+                                                                           ", ".join(_SOLVER_KEYS)))
         return (name, solver.get("command", ""), solver.get("python", ""), solver.get("rule", ""),
-                bool(solver.get("exact", False)), solver.get("precision", ""))
+                bool(solver.get("exact", False)), solver.get("precision", ""), bool(solver.get("long_lived", False)))
     raise ValueError("solvers[%r]: expected a class, \"module:Class\", or a dict with \"command\" or \"python\" "
-                     "(and optionally \"rule\", \"exact\", \"precision\")" % name)
+                     "(and optionally \"rule\", \"exact\", \"precision\", \"long_lived\")" % name)
 
 
 def validate(suite, out="results", jobs=None, resume=False, solvers=None):
@@ -144,7 +153,9 @@ def validate(suite, out="results", jobs=None, resume=False, solvers=None):
     `solvers`: outside solvers that join the suite's backends for this run, name -> a class
     (its attributes declare what it claims: `exact = True`, `precision = "float"`, or `rule`,
     e.g. "collide-first", the stepping rule it implements), "module:Class", or {"command": "..."}
-    for any program, with optional "rule", "exact" and "precision" (docs/your-solver.md)."""
+    for any program, with optional "rule", "exact", "precision" and "long_lived" (True: the
+    program serves many calls, started once per worker as `COMMAND --serve`, as
+    `--solver-long-lived`), the keys of a suite's [solver.NAME] table (docs/your-solver.md)."""
     entries = [_solver_entry(name, s) for name, s in (solvers or {}).items()]
     runner = os.path.join(os.path.dirname(os.path.abspath(__file__)), "solver_runner.py")
     counts = _collide._validate(os.fspath(suite), os.fspath(out), int(jobs or 0), bool(resume), entries,

@@ -8,6 +8,8 @@ import pathlib
 import subprocess
 import time
 
+import pytest
+
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 COLLIDE = os.environ.get("COLLIDE_EXE", str(ROOT / "build" / "release" / "collide"))
 SOLVER = ROOT / "tests" / "external" / "long_lived_solver.py"
@@ -77,10 +79,10 @@ def test_a_crash_fails_one_case_and_a_hang_is_killed_at_the_limit(tmp_path):
     assert elapsed < 60, elapsed
 
 
-def test_the_command_line_declares_it_too(tmp_path):
-    log = tmp_path / "starts.txt"
+def suite_without_the_solver(tmp_path, name):
+    """A suite of three cases that names no outside solver: the caller gives it one."""
     suite = tmp_path / "suite.toml"
-    suite.write_text(f"""name = "long-lived-cli"
+    suite.write_text(f"""name = "{name}"
 scene_dir = "{ROOT / 'data' / 'scenes'}"
 backends = ["event"]
 reference = "event"
@@ -92,6 +94,12 @@ hdf5 = false
 name = "head_on_equal"
 dt = [2e-3]
 """)
+    return suite
+
+
+def test_the_command_line_declares_it_too(tmp_path):
+    log = tmp_path / "starts.txt"
+    suite = suite_without_the_solver(tmp_path, "long-lived-cli")
     command = ["--solver", f"served=/usr/bin/python3 {SOLVER} {log}", "--jobs", "1"]
     r = subprocess.run([COLLIDE, "validate", str(suite), "--out", str(tmp_path / "out"), *command,
                         "--solver-long-lived", "served"], capture_output=True, text=True)
@@ -101,3 +109,19 @@ dt = [2e-3]
     wrong = subprocess.run([COLLIDE, "validate", str(suite), "--out", str(tmp_path / "out2"), *command,
                             "--solver-long-lived", "servd"], capture_output=True, text=True)
     assert wrong.returncode != 0 and "--solver-long-lived servd: no --solver or --python-solver named 'servd'" in wrong.stderr
+
+
+def test_the_python_api_declares_it_too(tmp_path):
+    import collide  # the module built beside the program (PYTHONPATH)
+    log = tmp_path / "starts.txt"
+    suite = suite_without_the_solver(tmp_path, "long-lived-python")
+    served = {"command": f"/usr/bin/python3 {SOLVER} {log}", "long_lived": True}
+    summary = collide.validate(suite, tmp_path / "out", jobs=1, solvers={"served": served})
+    assert [c["status"] for c in summary["cases"] if c["backend"] == "served"] == ["completed"] * 3
+    words = log.read_text().split()[::2] if log.exists() else []  # a one-shot call writes nothing there
+    assert words == ["start", "exit"]  # one worker: one start for three cases
+    # A key it does not know is refused, not ignored; a class cannot be long-lived.
+    with pytest.raises(ValueError, match="solvers\\['served'\\]: no such key 'long-lived'"):
+        collide.validate(suite, tmp_path / "out2", solvers={"served": {**served, "long-lived": True}})
+    with pytest.raises(ValueError, match="long_lived: expected a program"):
+        collide.validate(suite, tmp_path / "out3", solvers={"served": {"python": f"{SOLVER}:C", "long_lived": True}})

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 
 #include "core/io/shell_quote.h"
@@ -34,30 +35,37 @@ std::optional<IntervalJump> largest_interval_jump(const MetricSeries& series, do
 
 namespace {
 
-// The output time at or before t at which the replay is checked against the record (0 when
-// there is none to check: then nothing is advanced), on the step grid.
-double path_check_time(const ReplayedCase& c, const CaseResult& record, double t) {
+// Where the replay is checked against the record before the search window: the last output
+// time at or before it, the recorded kinetic energy there, and that time on the step grid.
+struct PathCheck {
+    double output_time;  // as the run recorded it (the time the metrics are computed at)
+    double step_time;    // on the step grid: what the solver advances to
+    double recorded_kinetic_energy;
+};
+
+// The check for a window that starts at t; none when no output time before t was recorded (then
+// nothing is advanced before the window).
+std::optional<PathCheck> path_check(const ReplayedCase& c, const CaseResult& record, double t) {
     const double interval = c.scene.run.output_interval, dt = c.scene.run.dt;
-    const double check = std::floor(t / interval + 1e-9) * interval;
-    if (check <= 0 || !recorded_kinetic_energy(record, check)) return 0;
-    return std::round(check / dt) * dt;
+    const double output_time = std::floor(t / interval + 1e-9) * interval;
+    if (output_time <= 0) return std::nullopt;
+    const auto recorded = recorded_kinetic_energy(record, output_time);
+    if (!recorded) return std::nullopt;
+    return PathCheck{output_time, std::round(output_time / dt) * dt, *recorded};
 }
 
-// Advances the solver to `at` (path_check_time) and checks its kinetic energy against the
+// Advances the solver to the check's step time and compares its kinetic energy with the
 // record's (relative 1e-9: the same code on the same input retraces the run).
-void require_same_path(Solver& solver, const ReplayedCase& c, const CaseResult& record, double at) {
-    const double interval = c.scene.run.output_interval;
-    const double check = std::floor(at / interval + 0.5) * interval;  // the output time `at` stands for
-    const auto recorded = recorded_kinetic_energy(record, check);
-    if (!recorded) return;
-    solver.advance_to(at);
+void require_same_path(Solver& solver, const ReplayedCase& c, const PathCheck& check) {
+    solver.advance_to(check.step_time);
     ParticleState<double> state;
     solver.read_state(state);
-    const double k = compute_disk_metrics(c.scene, state, check).kinetic_energy;  // as the run recorded it
-    if (!(std::fabs(k - *recorded) <= 1e-9 * std::fabs(*recorded)))
+    const double k = compute_disk_metrics(c.scene, state, check.output_time).kinetic_energy;  // as the run recorded it
+    const double recorded = check.recorded_kinetic_energy;
+    if (!(std::fabs(k - recorded) <= 1e-9 * std::fabs(recorded)))
         throw std::runtime_error("case " + c.spec.id + ": the rerun does not retrace the recorded run (kinetic energy " +
-                                 std::to_string(k) + " at t = " + std::to_string(check) + ", recorded " +
-                                 std::to_string(*recorded) + "); was the program or a file changed since the run?");
+                                 std::to_string(k) + " at t = " + std::to_string(check.output_time) + ", recorded " +
+                                 std::to_string(recorded) + "); was the program or a file changed since the run?");
 }
 
 // The output times from `from` up to `start` (which ends the list), the replay's way to the
@@ -111,17 +119,17 @@ ExplainedCase explain_case(const std::string& dir, const Suite& suite, const std
     auto solver = c.backend.create(c.options);
     solver->load(c.scene, c.initial);
     const double start = std::floor(from / dt + 1e-9) * dt;
-    const double check = what_if ? 0 : path_check_time(c, record, start);
-    const std::vector<double> approach = approach_times(check, start, c.scene.run.output_interval);
+    const std::optional<PathCheck> check = what_if ? std::nullopt : path_check(c, record, start);
+    const std::vector<double> approach = approach_times(check ? check->step_time : 0, start, c.scene.run.output_interval);
     // Every time the replay will stop at, announced first: an outside solver then runs them all in
     // one program call from t = 0, as the recorded run did (a call per step would start Node and
     // the engine each time, and an engine restarted from a state has lost its contact history).
     std::vector<double> planned;
-    if (check > 0) planned.push_back(check);
+    if (check) planned.push_back(check->step_time);
     for (const double t : approach) planned.push_back(t);
     for (const double t : step_times(start, dt, end)) planned.push_back(t);
     solver->plan_outputs(planned);
-    if (check > 0) require_same_path(*solver, c, record, check);
+    if (check) require_same_path(*solver, c, *check);
     for (const double t : approach) {
         solver->advance_to(t);
         if (on_progress) on_progress(t, end);

@@ -91,11 +91,15 @@ Tolerances default_tolerances(const BackendInfo& backend) { return default_toler
 // A variant "box2d[shipped]" starts from its base's limits (defaults, then [tolerances.box2d])
 // and [tolerances."box2d[shipped]"] overrides them.
 void ToleranceTable::apply_overrides(Tolerances& t, const std::string& backend) const {
+    const auto set = [&t](const std::string& key, double value) {
+        tolerance_field(t, key) = value;
+        t.set_by_suite.insert(key);
+    };
     const std::string base = backend.substr(0, backend.find('['));
-    for (const auto& [key, value] : all_backends) tolerance_field(t, key) = value;
+    for (const auto& [key, value] : all_backends) set(key, value);
     for (const std::string& name : {base, backend})  // twice the same name: harmless
         if (auto it = per_backend.find(name); it != per_backend.end())
-            for (const auto& [key, value] : it->second) tolerance_field(t, key) = value;
+            for (const auto& [key, value] : it->second) set(key, value);
 }
 
 Tolerances ToleranceTable::for_backend(const BackendInfo& backend) const {

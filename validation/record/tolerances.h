@@ -5,6 +5,7 @@
 
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,13 @@ struct Tolerances {
     double trajectory_error = 1e-6;   // in units of the smallest radius
     double statistics_z = 4.0;        // |difference| / combined standard error
     double speed_ks_p_value = 1e-3;   // two-sample Kolmogorov-Smirnov p-value must exceed this
+
+    // The keys a suite set ([tolerances.default], [tolerances.<backend>]); every other limit is
+    // the backend's default. A check that replaces a default in a special case (checks.cpp: an
+    // isolated contact of a contact solver) leaves a limit the suite chose alone, whatever its
+    // value, even one equal to the default.
+    std::set<std::string> set_by_suite;
+    bool suite_set(const std::string& key) const { return set_by_suite.count(key) > 0; }
 };
 
 // The [tolerances] keys of suite files, in the check table's order (check_table.h).
