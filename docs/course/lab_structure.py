@@ -221,9 +221,10 @@ def tail_slope(collisions, c):
     inside = (where >= 0) & (where < TAIL_BINS)
     mean_c = np.array([c[where == k].mean() for k in range(TAIL_BINS)])
     mean_t = np.array([collisions[where == k].mean() for k in range(TAIL_BINS)])
-    if np.any(mean_c <= 0):
-        return float("nan"), float(np.mean(collisions[inside] * c[inside]))
-    return float(np.polyfit(np.log(mean_t), np.log(mean_c), 1)[0]), float(np.mean(collisions[inside] * c[inside]))
+    amplitude = float(np.mean(collisions[inside] * c[inside]))
+    if np.any(mean_c <= 0):   # noise has swamped the tail in a window: no logarithm, no slope
+        return float("nan"), amplitude
+    return float(np.polyfit(np.log(mean_t), np.log(mean_c), 1)[0]), amplitude
 
 
 def vacf(run, start, t_max, blocks=4):
