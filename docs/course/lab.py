@@ -17,7 +17,8 @@
     python3 docs/course/lab.py check EXERCISE FILE.py  checks the code a student wrote for a
                                         coding exercise (galperin, root, haff, tunnel, blocks,
                                         metropolis, counting_sort, event_loop: this one runs
-                                        `collide validate`, gofr); exit status 0 when it is right
+                                        `collide validate`, gofr, green_kubo); exit status 0
+                                        when it is right
 
 Each reads the HDF5 layout of docs/output-format.md with h5py; nothing here simulates, and the
 structure (g(r), psi6) is collide's own, from the module beside the program on PATH.

@@ -371,9 +371,18 @@ def check_gofr(path):
     return lab_structure.check_gofr(path)
 
 
+# --- Chapter 2: the diffusion coefficient by Green-Kubo ---------------------------------------
+
+def check_green_kubo(path):
+    """green_kubo(v, dt, t_max), held to the course's own Green-Kubo integral (lab_structure.py)."""
+    import lab_structure  # (imported here: it imports this module's Wrong)
+    return lab_structure.check_green_kubo(path)
+
+
 EXERCISES = {"galperin": check_galperin, "root": check_root, "haff": check_haff, "tunnel": check_tunnel,
              "blocks": check_blocks, "metropolis": check_metropolis, "counting_sort": check_counting_sort,
-             "event_loop": check_event_loop, "gofr": check_gofr}
+             "event_loop": check_event_loop, "gofr": check_gofr,
+             "green_kubo": check_green_kubo}
 
 
 def check(exercise, path):

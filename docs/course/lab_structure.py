@@ -1,6 +1,7 @@
 """The structure of a hard-disk configuration for the course (chapter 2.7 and 2.8): what
 `lab.py structure RUN.h5` prints, and the checker of exercise 2.8 (`lab.py check gofr`); and
-the self-diffusion of chapter 2.9 from a run's frames (mean-square displacement against Enskog).
+the self-diffusion of chapter 2.9 from a run's frames (the mean-square displacement, and the
+velocity autocorrelation function with its Green-Kubo integral, against Enskog).
 
 Every g(r) and psi6 here is collide's own (core/structure, through the Python module built
 beside the `collide` program on PATH: collide.pair_correlation, collide.psi6); nothing here
@@ -134,14 +135,15 @@ def msd(x, lag):
     return ((x[lag:] - x[:-lag]) ** 2).sum(-1).mean()
 
 
-def diffusion(run, start, lags, blocks=4):
-    """D(tau), the slope of the mean-square displacement between tau and 2 tau,
-    (MSD(2 tau) - MSD(tau)) / (4 tau) (a slope, so the ballistic start's offset cancels), over the
-    disks and the time origins t >= start (frames evenly spaced), at each lag tau (in frames),
-    relative to Enskog's D_E = kT / (m nu) with the run's own collision rate nu and
-    kT = K_int / (N - 1): a dict of tau, ratio and its error (the spread of `blocks` consecutive
-    stretches of origins, each with its own ratio; 2 tau must fit in a stretch), enskog and nu."""
+def equilibrium_frames(run, start):
+    """The frames at t >= start (evenly spaced) of a run of equal disks in a periodic box, with what
+    Enskog's D_E = kT / (m nu) needs: a dict of dt, x (positions unwrapped across the box's edges),
+    v (velocities), m, kt = K_int / (N - 1) (the kinetic energy less the centre of mass's, over the
+    N - 1 degrees of freedom per dimension left; e = 1 conserves it, so the first frame's serves)
+    and nu (the run's own collision rate per disk)."""
     with h5py.File(run, "r") as f:
+        if "frames" not in f:
+            sys.exit(f"{run}: written without --frames: rerun `collide run ... --frames`")
         times, frames, velocities = f["frames/time"][:], f["frames/position"][:], f["frames/velocity"][:]
         scene_box = [float(v) for v in collide().Scene.from_toml(f.attrs["scene_text"]).box]
         mass = f["particles/mass"][:]
@@ -151,10 +153,22 @@ def diffusion(run, start, lags, blocks=4):
     box = np.array([scene_box[2] - scene_box[0], scene_box[3] - scene_box[1]])
     n, m = frames.shape[1], float(mass[0])
     p = m * velocities[0].sum(axis=0)
-    kt = (0.5 * m * (velocities[0] ** 2).sum() - (p @ p) / (2 * m * n)) / (n - 1)  # e = 1: conserved
-    x = unwrapped(frames, box)[times >= start]
-    dt = float(times[1] - times[0])
-    enskog = kt / (m * nu)
+    kt = (0.5 * m * (velocities[0] ** 2).sum() - (p @ p) / (2 * m * n)) / (n - 1)
+    later = times >= start
+    return {"dt": float(times[1] - times[0]), "x": unwrapped(frames, box)[later], "v": velocities[later], "m": m,
+            "kt": kt, "nu": nu}
+
+
+def diffusion(run, start, lags, blocks=4):
+    """D(tau), the slope of the mean-square displacement between tau and 2 tau,
+    (MSD(2 tau) - MSD(tau)) / (4 tau) (a slope, so the ballistic start's offset cancels), over the
+    disks and the time origins t >= start (frames evenly spaced), at each lag tau (in frames),
+    relative to Enskog's D_E = kT / (m nu) with the run's own collision rate nu and
+    kT = K_int / (N - 1): a dict of tau, ratio and its error (the spread of `blocks` consecutive
+    stretches of origins, each with its own ratio; 2 tau must fit in a stretch), enskog and nu."""
+    run = equilibrium_frames(run, start)
+    x, dt, nu = run["x"], run["dt"], run["nu"]
+    enskog = run["kt"] / (run["m"] * nu)
     slope = lambda y, lag: (msd(y, 2 * lag) - msd(y, lag)) / (4 * lag * dt) / enskog
     stretch = len(x) // blocks
     out = {"tau": [], "ratio": [], "error": [], "enskog": enskog, "nu": nu}
@@ -166,6 +180,142 @@ def diffusion(run, start, lags, blocks=4):
         out["ratio"].append(float(slope(x, lag)))
         out["error"].append(float(np.std(per_block, ddof=1) / np.sqrt(blocks)))
     return out
+
+
+# --- The velocity autocorrelation function (chapter 2.9) ---------------------------------------
+
+def velocity_autocorrelation(v, lags):
+    """Z(k dt) = <v_i(t) . v_i(t + k dt)> for k = 0 .. lags - 1, over the disks i and every time
+    origin t that leaves room for the lag (frames x disks x 2 velocities, evenly spaced): each
+    disk's and component's correlation by the FFT, zero-padded to twice the length so that it
+    does not wrap around (Allen & Tildesley 2017, section 8.3)."""
+    frames = len(v)
+    total = np.zeros(frames)
+    for component in range(v.shape[2]):   # one at a time: the transform of all frames is large
+        spectrum = np.fft.rfft(v[:, :, component], n=2 * frames, axis=0)
+        total += np.fft.irfft(np.abs(spectrum) ** 2, axis=0)[:frames].sum(axis=1)
+    origins = frames - np.arange(lags)
+    return total[:lags] / (v.shape[1] * origins)
+
+
+def green_kubo(z, dt):
+    """D(t) = (1/2) int_0^t Z(s) ds at every lag of Z(s) = <v(0) . v(s)> (the trapezoid rule): the
+    Green-Kubo diffusion coefficient in two dimensions, 1/d of the integral of the full dot
+    product (Allen & Tildesley 2017, section 2.7; 1/3 in three dimensions)."""
+    return 0.5 * np.concatenate([[0.0], np.cumsum((z[1:] + z[:-1]) * dt / 2)])
+
+
+# The long-time tail measured over 5 to 40 mean free times, in 8 windows evenly spaced in log(nu t):
+# after the exponential has died (exp(-5) = 0.7 %) and before the noise (about 0.0015 in C from
+# 80 time units of 1152 disks) swamps C ~ 0.005 at nu t = 40; each window's mean of C is
+# positive there, so its logarithm is defined.
+TAIL_WINDOW, TAIL_BINS = (5.0, 40.0), 8
+
+
+def tail_slope(collisions, c):
+    """The slope p of log C against log(nu t) over TAIL_WINDOW (C ~ (nu t)^p; Alder & Wainwright
+    1970: p = -1 in two dimensions) from C's means in TAIL_BINS windows, and the mean of
+    nu t C(t) there (the tail's amplitude where p = -1)."""
+    edges = np.geomspace(*TAIL_WINDOW, TAIL_BINS + 1)
+    where = np.digitize(collisions, edges) - 1
+    inside = (where >= 0) & (where < TAIL_BINS)
+    mean_c = np.array([c[where == k].mean() for k in range(TAIL_BINS)])
+    mean_t = np.array([collisions[where == k].mean() for k in range(TAIL_BINS)])
+    amplitude = float(np.mean(collisions[inside] * c[inside]))
+    if np.any(mean_c <= 0):   # noise has swamped the tail in a window: no logarithm, no slope
+        return float("nan"), amplitude
+    return float(np.polyfit(np.log(mean_t), np.log(mean_c), 1)[0]), amplitude
+
+
+def vacf(run, start, t_max, blocks=4):
+    """The velocity autocorrelation function of a run's frames at t >= start, to lag t_max: a dict of
+    t, c = Z(t) / Z(0) (normalised, Z(0) = 2 kT / m) and its error, d_gk = D(t) / D_E by Green-Kubo
+    and its error, enskog (D_E = kT / (m nu): tau_E = D_E m / kT = 1 / nu, so Enskog's C is
+    exp(-nu t)), nu, slope (the tail's, tail_slope) and its error, and amplitude (the mean of
+    nu t C) and its error; each error the spread of `blocks` consecutive stretches of origins."""
+    run = equilibrium_frames(run, start)
+    lags = int(round(t_max / run["dt"])) + 1
+    enskog = run["kt"] / (run["m"] * run["nu"])
+    stretch = len(run["v"]) // blocks
+    if lags >= stretch:
+        raise ValueError(f"t_max {t_max:g}: {lags} lags do not fit in a stretch of {stretch} frames")
+    t = np.arange(lags) * run["dt"]
+
+    def measured(v):
+        z = velocity_autocorrelation(v, lags)
+        return (z / z[0], green_kubo(z, run["dt"]) / enskog) + tail_slope(run["nu"] * t, z / z[0])
+
+    whole = measured(run["v"])
+    parts = [measured(run["v"][b * stretch:(b + 1) * stretch]) for b in range(blocks)]
+    error = [np.std([p[k] for p in parts], axis=0, ddof=1) / np.sqrt(blocks) for k in range(4)]
+    return {"t": t, "c": whole[0], "c_error": error[0], "d_gk": whole[1], "d_gk_error": error[1], "enskog": enskog,
+            "nu": run["nu"], "slope": whole[2], "slope_error": float(error[2]), "amplitude": whole[3],
+            "amplitude_error": float(error[3])}
+
+
+def green_kubo_mean(result, t1, t2):
+    """The mean of vacf's Green-Kubo D(t) / D_E over [t1, t2] (the trapezoid rule): what the slope
+    of the mean-square displacement between t1 and t2 measures, since d MSD / dt = 4 D(t)."""
+    inside = (result["t"] >= t1 - 1e-9) & (result["t"] <= t2 + 1e-9)
+    t, d = result["t"][inside], result["d_gk"][inside]
+    return float(np.sum((d[1:] + d[:-1]) * np.diff(t)) / 2 / (t[-1] - t[0]))
+
+
+# --- Exercise 2.10: Green-Kubo --------------------------------------------------------------
+
+def ornstein_uhlenbeck(disks, frames, dt, tau, kt_over_m, rng):
+    """Velocities (frames x disks x 2) of disks whose every component is an Ornstein-Uhlenbeck
+    process sampled exactly at spacing dt: <v(0) . v(t)> = 2 (kT/m) exp(-t / tau), D = (kT/m) tau."""
+    a = np.exp(-dt / tau)
+    v = np.empty((frames, disks, 2))
+    v[0] = rng.normal(0, np.sqrt(kt_over_m), (disks, 2))
+    kicks = rng.normal(0, np.sqrt(kt_over_m * (1 - a * a)), (frames, disks, 2))
+    for k in range(1, frames):
+        v[k] = a * v[k - 1] + kicks[k]
+    return v
+
+
+def green_kubo_hint(got, want, z0, z_end, dt):
+    """The slip that explains a wrong D, where one does (got and want from the same velocities)."""
+    ratio = got / want
+    near = lambda value: abs(ratio - value) < 0.01 * value
+    if near(2 / 3):
+        return ("2/3 of D: 1/3 is three dimensions' factor; in d dimensions D = (1/d) int <v(0) . v(t)> dt, "
+                "and a disk moves in d = 2")
+    if near(2):
+        return ("twice D: the factor 1/2 of two dimensions is missing (MSD = 4 D t and d MSD/dt = "
+                "2 int_0^t <v(0) . v(s)> ds give D = (1/2) int <v(0) . v(t)> dt)")
+    if near(0.5):
+        return "half of D: <v(0) . v(t)> is the full dot product vx vx + vy vy, with the factor 1/2 taken once"
+    if near(1 / z0):
+        return ("D over <v . v>: that is the integral of the normalised C(t), a time; integrate "
+                "<v(0) . v(t)> itself (D = (kT/m) int C dt)")
+    if abs(got - (want + dt * (z0 - z_end) / 4)) < 0.002 * want:
+        return "the rectangle rule: integrate with the trapezoid rule, half weight at t = 0 and t = t_max"
+    return ("D = (1/2) int_0^t_max <v_i(t0) . v_i(t0 + t)> dt, averaged over the disks and every origin t0 that "
+            "leaves room for the lag, the trapezoid rule over the frames")
+
+
+def check_green_kubo(path):
+    """green_kubo(v, dt, t_max) -> D = (1/2) int_0^t_max <v(0) . v(t)> dt of velocities v (frames x
+    disks x 2) sampled every dt, held to this module's velocity_autocorrelation and green_kubo on
+    Ornstein-Uhlenbeck velocities (relative 1 %: another choice of origins passes, the rectangle
+    rule, 2 % off at these spacings, does not), whose exact D is printed beside."""
+    d_of = load(path, "green_kubo")
+    rng = np.random.default_rng(10)
+    for disks, frames, dt, tau, kt_over_m, t_max in ((300, 3000, 0.02, 0.5, 0.7, 3.0),
+                                                      (200, 2000, 0.08, 2.0, 1.3, 12.0)):
+        v = ornstein_uhlenbeck(disks, frames, dt, tau, kt_over_m, rng)
+        z = velocity_autocorrelation(v, int(round(t_max / dt)) + 1)
+        want = green_kubo(z, dt)[-1]
+        got = float(d_of(v.copy(), dt, t_max))
+        if not abs(got - want) < 0.01 * want:
+            exact = kt_over_m * tau * (1 - np.exp(-t_max / tau))
+            raise Wrong(f"green_kubo on {disks} disks, {frames} frames every {dt:g}, kT/m = {kt_over_m:g}, velocity "
+                        f"memory exp(-t/{tau:g}), t_max = {t_max:g}: D = {got:.5g}; these velocities give "
+                        f"{want:.5g} (the process's exact D to t_max is {exact:.5g}): "
+                        f"{green_kubo_hint(got, want, z[0], z[-1], dt)}")
+    return "D within 1 % on two sets of Ornstein-Uhlenbeck velocities, 2-D's factor 1/2 and the trapezoid rule"
 
 
 # --- Exercise 2.8: g(r) ---------------------------------------------------------------------

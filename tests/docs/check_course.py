@@ -25,7 +25,9 @@
                                         scene only when declared exact), g(d) by the collision
                                         virial and by lines over four windows, |psi6| and the
                                         pressure across the hexatic transition at N = 72 and 870,
-                                        self-diffusion against Enskog's, and wording found false
+                                        self-diffusion against Enskog's, the velocity
+                                        autocorrelation function (Green-Kubo, the 1/t tail), and
+                                        wording found false
 
 An exercise is a "### Exercise" section of a chapter (docs/course/[1-9]-*.md): its first ```sh
 block is the command a student runs, with `collide` meaning the built program, in a scratch
@@ -721,15 +723,20 @@ FLUID_RADIUS = {"0.3": "0.2944240825689061", "0.5": "0.3800998561705903", "0.65"
 CONTACT_WINDOWS = ("0.2", "0.1", "0.05", "0.025")
 
 
+def fluid_run(collide, out, eta, interval):
+    """The fluid of 2.7 at `eta`, 100 time units with a frame every `interval`, written to out."""
+    subprocess.run([collide, "run", str(SCENES / "physics/hard_disk_fluid.toml"), "--backend", "event", "--frames",
+                    "--out", str(out), "--set", f"particles.0.radius={FLUID_RADIUS[eta]}", "--set", "run.duration=100",
+                    "--set", f"run.output_interval={interval}"], check=True, capture_output=True)
+    return out
+
+
 def fluid_structure(collide, scratch, eta):
     """The exercise-2.8 run of the fluid at `eta`: its scene, frames from t = 20, diameter and
     lab_structure.routes (Z by the virial and the contact route)."""
     sys.path.insert(0, str(ROOT / "docs" / "course"))
     import lab_structure
-    out = scratch / f"fluid{eta}.h5"
-    subprocess.run([collide, "run", str(SCENES / "physics/hard_disk_fluid.toml"), "--backend", "event", "--frames",
-                    "--out", str(out), "--set", f"particles.0.radius={FLUID_RADIUS[eta]}", "--set", "run.duration=100",
-                    "--set", "run.output_interval=0.25"], check=True, capture_output=True)
+    out = fluid_run(collide, scratch / f"fluid{eta}.h5", eta, "0.25")
     c = lab_structure.collide_module(collide)
     with h5py.File(out, "r") as f:
         frames = f["frames/position"][:][f["frames/time"][:] >= 20]
@@ -822,6 +829,46 @@ def fact_diffusion(collide, scratch):
     return failures
 
 
+def fact_vacf(collide, scratch):
+    """Chapter 2.9: the table of the velocity autocorrelation function (Green-Kubo's D(t) / D_E at
+    t = 1, 4 and 10, its mean over [2, 4], the tail's slope and nu t C) at eta = 0.3 and 0.5, and
+    the sentence that sets the mean beside the MSD slope, recomputed by lab_structure.vacf from
+    the fluid runs of 2.7 with a frame every 0.025."""
+    page = re.sub(r"\s+", " ", (COURSE / "2-many-disks-exactly.md").read_text())
+    sys.path.insert(0, str(ROOT / "docs" / "course"))
+    import lab_structure
+    lab_structure.collide_module(collide)   # the module beside this collide (the box of each run)
+    pm, num = r" ([\d.]+) ± ([\d.]+) \|", r" ([\d.]+) \|"
+    routes = re.search(r"over \[2, 4\] is the MSD table's τ = 2 cell, ([\d.]+) against ([\d.]+) ± ([\d.]+) at η = 0.3 "
+                       r"and ([\d.]+) against ([\d.]+) ± ([\d.]+) at η = 0.5", page)
+    if not routes:
+        return ["2-many-disks-exactly.md: section 2.9 does not set Green-Kubo's mean over [2, 4] beside the MSD slope"]
+    failures, beside = [], []
+    for eta in ("0.3", "0.5"):
+        row = re.search(rf"\| {eta} \|" + pm * 3 + num + r" [−-]([\d.]+) ± ([\d.]+) \|" + pm, page)
+        if not row:
+            failures.append(f"2-many-disks-exactly.md: section 2.9 has no row of the VACF's numbers at eta = {eta}")
+            continue
+        out = fluid_run(collide, scratch / f"vacf{eta}.h5", eta, "0.025")
+        r = lab_structure.vacf(out, 20.0, 10.0)
+        coarse = scratch / f"fluid{eta}.h5"   # the MSD table's run (fact_diffusion's), frames every 0.25
+        msd = lab_structure.diffusion(coarse if coarse.exists() else fluid_run(collide, coarse, eta, "0.25"), 20.0, (8,))
+        at = [int(round(t / 0.025)) for t in (1, 4, 10)]
+        mean = lab_structure.green_kubo_mean(r, 2.0, 4.0)
+        measured = [v for k in at for v in (r["d_gk"][k], r["d_gk_error"][k])] + [mean]
+        measured += [-r["slope"], r["slope_error"], r["amplitude"], r["amplitude_error"]]
+        said = [float(v) for v in row.groups()]
+        places = [0.0015] * 7 + [0.015] * 2 + [0.0015] * 2   # the slope is stated to two places
+        if any(abs(s_ - m) > p_ for s_, m, p_ in zip(said, measured, places)):
+            failures.append(f"2-many-disks-exactly.md: eta = {eta}: the VACF's row {said} on the page, "
+                            f"{[round(m, 3) for m in measured]} in the run")
+        beside += [mean, msd["ratio"][0], msd["error"][0]]
+    if beside and any(abs(float(s_) - m) > 0.0015 for s_, m in zip(routes.groups(), beside)):
+        failures.append(f"2-many-disks-exactly.md: Green-Kubo's mean over [2, 4] against the MSD slope: "
+                        f"{routes.groups()} on the page, {[round(m, 3) for m in beside]} in the runs")
+    return failures
+
+
 def check_facts(collide):
     with tempfile.TemporaryDirectory(prefix="collide-facts-") as scratch:
         scratch = pathlib.Path(scratch)
@@ -833,8 +880,9 @@ def check_facts(collide):
                     + fact_replicates(collide, scratch) + fact_enskog_walls(collide, scratch)
                     + fact_fitted_grid(collide, scratch) + fact_sampling(collide, scratch)
                     + fact_declared_exact(collide, scratch) + fact_pair_correlation(collide, scratch)
-                    + fact_hexatic(collide, scratch) + fact_diffusion(collide, scratch))
-    print("20 statements of the text measured")
+                    + fact_hexatic(collide, scratch) + fact_diffusion(collide, scratch)
+                    + fact_vacf(collide, scratch))
+    print("21 statements of the text measured")
     return failures
 
 
