@@ -189,14 +189,15 @@ void EcmcSampler::run_chain() {
                 for (int k = 0, m = cells_.occupancy(cell); k < m; ++k) {
                     const std::uint32_t j = members[k];
                     const double du = sense * (pos_[A][j] + shift_a - u);
-                    if (du <= 0 || j == active) continue;  // behind: never in the way
-                    const double dw = pos_[B][j] + shift_b - w, dw2 = dw * dw;
-                    if (dw2 >= sigma2_) continue;  // passes beside
-                    // In the way before `step` iff du - step < sqrt(sigma^2 - dw^2): squared when
-                    // du > step, so that only a disk nearer than the best so far pays a sqrt.
+                    const double dw = pos_[B][j] + shift_b - w, room = sigma2_ - dw * dw;
+                    // In the way before `step` iff it is ahead (du > 0), within sigma across
+                    // (room > 0) and du - step < sqrt(room), tested squared when du > step so
+                    // that only a disk nearer than the best so far pays a sqrt. The tests are
+                    // combined without branches: their outcomes are a coin toss per disk.
                     const double ahead = du - step;
-                    if (ahead > 0 && ahead * ahead >= sigma2_ - dw2) continue;
-                    const double gap = du - std::sqrt(sigma2_ - dw2);
+                    const bool in_way = (du > 0) & (j != active) & (room > 0) & !((ahead > 0) & (ahead * ahead >= room));
+                    if (!in_way) continue;
+                    const double gap = du - std::sqrt(room);
                     if (gap < step) {
                         step = gap > 0 ? gap : 0;  // a pair touching to rounding: lift at once
                         blocker = j;
