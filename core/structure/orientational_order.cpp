@@ -30,27 +30,12 @@ std::complex<double> sixfold_phase(double dx, double dy, double r2) {
     return {(re4 * re2 - im4 * im2) * scale, (re4 * im2 + im4 * re2) * scale};
 }
 
-// (1/n_j) sum_k exp(6 i theta_jk) over j's neighbours within the cutoff; 0 without neighbours.
-std::complex<double> disk_psi6(const World& world, const ParticleState<double>& s, const UniformGrid<double>& grid,
-                               std::size_t j, double cutoff) {
-    std::complex<double> sum = 0;
-    std::size_t neighbours = 0;
-    const double cutoff2 = cutoff * cutoff;
-    grid.for_each_candidate(s.x[j], s.y[j], [&](std::uint32_t k) {
-        if (k == j) return;
-        const std::complex<double> b = bond(world, s, j, k);
-        const double r2 = b.real() * b.real() + b.imag() * b.imag();
-        if (r2 >= cutoff2 || r2 == 0) return;
-        sum += sixfold_phase(b.real(), b.imag(), r2);
-        ++neighbours;
-    });
-    return neighbours ? sum / double(neighbours) : sum;
-}
-
 double wrapped(double d) { return d - 2 * std::numbers::pi * std::round(d / (2 * std::numbers::pi)); }
 
 }  // namespace
 
+// Each bond is visited once, from its lower-numbered disk, and its phase added to both ends:
+// the bond seen from the other disk is -b, and (-b)^6 = b^6.
 std::vector<std::complex<double>> local_psi6(const World& world, const ParticleState<double>& state, double cutoff) {
     const std::size_t n = state.size();
     std::vector<std::complex<double>> local(n);
@@ -58,7 +43,22 @@ std::vector<std::complex<double>> local_psi6(const World& world, const ParticleS
     UniformGrid<double> grid;  // cells at least `cutoff` wide: the 3x3 cells hold every neighbour
     grid.configure(world, cutoff);
     grid.build(state.x.data(), state.y.data(), n);
-    for (std::size_t j = 0; j < n; ++j) local[j] = disk_psi6(world, state, grid, j, cutoff);
+    std::vector<std::uint32_t> neighbours(n, 0);
+    const double cutoff2 = cutoff * cutoff;
+    for (std::size_t j = 0; j < n; ++j) {
+        grid.for_each_candidate(state.x[j], state.y[j], [&](std::uint32_t k) {
+            if (k <= j) return;
+            const std::complex<double> b = bond(world, state, j, k);
+            const double r2 = b.real() * b.real() + b.imag() * b.imag();
+            if (r2 >= cutoff2 || r2 == 0) return;
+            const std::complex<double> phase = sixfold_phase(b.real(), b.imag(), r2);
+            local[j] += phase, local[k] += phase;
+            ++neighbours[j], ++neighbours[k];
+        });
+    }
+    // (1/n_j) sum_k exp(6 i theta_jk) over j's neighbours within the cutoff; 0 without neighbours.
+    for (std::size_t j = 0; j < n; ++j)
+        if (neighbours[j] > 0) local[j] /= double(neighbours[j]);
     return local;
 }
 
