@@ -1096,6 +1096,36 @@ class LargestError(unittest.TestCase):
         plt.close(captured[0])
 
 
+class SanitiserFastPath(unittest.TestCase):
+    """printable.py returns text with nothing to rewrite as it is (a regular expression finds
+    what it would rewrite): for every character of the Basic Multilingual Plane, alone and inside
+    other text, the result is the one the walk one character at a time gives."""
+
+    @staticmethod
+    def walked(text):
+        out = []
+        for ch in text:
+            code = ord(ch)
+            if 0xdc80 <= code <= 0xdcff:
+                out.append("\\x%02x" % (code - 0xdc00))
+            elif code < 0x20 or 0x7f <= code <= 0x9f or 0xd800 <= code <= 0xdfff:
+                out.append("\\x%02x" % code if code <= 0xff else "\\u%04x" % code)
+            else:
+                out.append(ch)
+        return "".join(out)
+
+    def test_every_character_alone_and_in_text(self):
+        import printable
+        markup = {"&": "&amp;", "<": "&lt;", ">": "&gt;", "\\": "\\\\", "|": "\\|", "`": "\\`"}
+        for code in range(0x10000):
+            for text in (chr(code), "a" + chr(code) + "](b"):
+                walked = self.walked(text)
+                self.assertEqual(printable.terminal(text), walked, hex(code))
+                self.assertEqual(printable.markdown(text),
+                                 "".join(markup.get(ch, ch) for ch in walked).replace("](", "]\\("), hex(code))
+        self.assertEqual(printable.terminal(3.5), "3.5")
+
+
 if __name__ == "__main__":
     if len(sys.argv) < 2:
         sys.exit(__doc__)
