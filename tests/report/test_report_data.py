@@ -1126,6 +1126,39 @@ class SanitiserFastPath(unittest.TestCase):
         self.assertEqual(printable.terminal(3.5), "3.5")
 
 
+class RecordToml(unittest.TestCase):
+    """record_toml.loads gives tomllib's result for every case record of the results (the
+    arrays it reads itself, ints and floats, inf and nan, in their tables), and leaves to tomllib
+    (its result or its error) whatever it does not read itself."""
+
+    def test_every_record_as_tomllib_reads_it(self):
+        import tomllib
+        import record_toml
+        names = [n for n in sorted(os.listdir(os.path.join(RESULTS, "cases"))) if n.endswith(".toml")]
+        self.assertTrue(names)
+        for name in names:
+            path = os.path.join(RESULTS, "cases", name)
+            with open(path, "rb") as f:
+                text = digest.record_text(path, f.read())
+            self.assertEqual(json.dumps(record_toml.loads(text)), json.dumps(tomllib.loads(text)), name)
+
+    def test_what_it_does_not_read_itself(self):
+        import tomllib
+        import record_toml
+        texts = ["x = [ 1_000, 2 ]", "x = [ 01 ]", "x = [ 1., 2 ]", "x = [ 'a', 1 ]", "x = [ 0x10 ]",
+                 "x = [ -inf, +nan, -0, -0.0, 1e5, 2E-3 ]", "x = [ 1,\n 2,\n]\n[t]\ny = [ 3 ]",
+                 "[[t]]\nx = [1]\n[[t]]\nx = [2]\ny = [3]", "[ t ]\nx = [1]", "['t.u']\nx = [1]",
+                 's = """\n[q]\nx = [1]\n"""', "s = '''\nx = [1]\n'''\nx = [2]", "x = [1]\nx = [2]"]
+        for text in texts:
+            try:
+                expected = json.dumps(tomllib.loads(text))
+            except tomllib.TOMLDecodeError:
+                with self.assertRaises(tomllib.TOMLDecodeError, msg=text):
+                    record_toml.loads(text)
+                continue
+            self.assertEqual(json.dumps(record_toml.loads(text)), expected, text)
+
+
 if __name__ == "__main__":
     if len(sys.argv) < 2:
         sys.exit(__doc__)
