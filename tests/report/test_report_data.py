@@ -1148,7 +1148,10 @@ class RecordToml(unittest.TestCase):
         texts = ["x = [ 1_000, 2 ]", "x = [ 01 ]", "x = [ 1., 2 ]", "x = [ 'a', 1 ]", "x = [ 0x10 ]",
                  "x = [ -inf, +nan, -0, -0.0, 1e5, 2E-3 ]", "x = [ 1,\n 2,\n]\n[t]\ny = [ 3 ]",
                  "[[t]]\nx = [1]\n[[t]]\nx = [2]\ny = [3]", "[ t ]\nx = [1]", "['t.u']\nx = [1]",
-                 's = """\n[q]\nx = [1]\n"""', "s = '''\nx = [1]\n'''\nx = [2]", "x = [1]\nx = [2]"]
+                 's = """\n[q]\nx = [1]\n"""', "s = '''\nx = [1]\n'''\nx = [2]", "x = [1]\nx = [2]",
+                 "[a] # c\nx = [1]", "[a]\r\nx = [1]\n", "  [a]\nx = [1]", "y = [\n[1],\n]\nx = [2]",
+                 "[a]\nx = [1]\n[b]\nx = [2]\n[[c]]\nx = [3]",
+                 "[a]\nx = [1]\n  [a.b]\n  y = [2]\nz = [3]\n[[c]]\nx = [4]\n[c.d]\nx = [5]\n[[c]]\nx = [6]\n[c.d]\nx = [7]"]
         for text in texts:
             try:
                 expected = json.dumps(tomllib.loads(text))

@@ -18,8 +18,9 @@ _ARRAY = re.compile(r"^([A-Za-z0-9_-]+) = \[([-+0-9.eEinfa,\s]*)\]$", re.MULTILI
 # The elements, checked in one pass: numbers only, commas between, a trailing comma allowed.
 _NUMBER_LIST = re.compile(rf"\s*(?:{_NUMBER}\s*,\s*)*(?:{_NUMBER}\s*)?")
 _TOKEN = re.compile(r"[^\s,]+")
-_HEADER = re.compile(r"^(\[\[?)([^\]]*)(\]\]?)$", re.MULTILINE)
-_PLAIN_NAME = re.compile(r"[A-Za-z0-9_-]+")
+_HEADER = re.compile(r"^[ \t]*(\[\[?)([^\]]*)(\]\]?)[ \t]*$", re.MULTILINE)  # toml++ indents a sub-table's
+_DOTTED_NAME = re.compile(r"[A-Za-z0-9_-]+(?:\.[A-Za-z0-9_-]+)*")
+_ANY_HEADER = re.compile(r"^[ \t]*\[", re.MULTILINE)  # a line a header could be (or part of a nested array)
 
 
 def _numbers(body):
@@ -32,14 +33,16 @@ def _numbers(body):
 
 
 def _headers(text):
-    """[(offset, name, is_array_of_tables)] of the record's table headers, or None where one
-    is not a plain name (quoted, dotted: tomllib reads such a record alone)."""
+    """[(offset, [names of its dotted path], is_array_of_tables)] of the record's table headers,
+    or None where one is not a `[a.b]` or `[[a.b]]` line of plain names (a quoted name: tomllib
+    reads such a record alone)."""
     headers = []
     for m in _HEADER.finditer(text):
-        if len(m.group(1)) != len(m.group(3)) or not _PLAIN_NAME.fullmatch(m.group(2)):
+        if len(m.group(1)) != len(m.group(3)) or not _DOTTED_NAME.fullmatch(m.group(2)):
             return None
-        headers.append((m.start(), m.group(2), m.group(1) == "[["))
-    return headers
+        headers.append((m.start(), m.group(2).split("."), m.group(1) == "[["))
+    # A header this does not recognise (a comment after it, a CR before its line's end) would put the arrays after it in the table before it: tomllib reads such a record.
+    return headers if len(headers) == len(_ANY_HEADER.findall(text)) and "\r" not in text else None
 
 
 def loads(text):
@@ -56,14 +59,19 @@ def loads(text):
         pieces += [text[end:m.start()], m.group(1), " = []"]
         end = m.end()
     result = tomllib.loads("".join(pieces) + text[end:])
-    seen = {}  # an array of tables' entries so far, to find the one an array belongs to
-    h = 0
+    tables = {}  # each array of tables' entries so far, by dotted path: an array after its header
+    h = 0        # belongs to the entry that header opened, not to the array's last one
     table = result
     for start, key, values in arrays:
         while h < len(headers) and headers[h][0] < start:
-            _, name, is_array = headers[h]
-            seen[name] = seen.get(name, 0) + 1
-            table = result[name][seen[name] - 1] if is_array else result[name]
+            _, names, is_array = headers[h]
+            if is_array:
+                tables[tuple(names)] = tables.get(tuple(names), 0) + 1
+            table = result
+            for k in range(len(names)):
+                table = table[names[k]]
+                if isinstance(table, list):  # an array of tables: the entry its latest header opened
+                    table = table[tables[tuple(names[:k + 1])] - 1]
             h += 1
         table[key] = values
     return result
