@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <string>
@@ -25,9 +26,36 @@ inline constexpr std::array<std::uint32_t, 256> crc32_table = [] {
     return table;
 }();
 
+// Slicing-by-8 (Kounavis & Berry, "Novel table lookup-based algorithms for high-performance CRC
+// generation", IEEE Trans. Computers 57(11), 2008): table k holds the CRC of a byte followed by
+// k zero bytes, so eight bytes are folded in per step with eight independent look-ups. The same
+// value as one byte at a time, about four times fewer cycles per byte: the report checks every
+// case record of a suite (200 MB on the default one) before drawing.
+inline constexpr std::array<std::array<std::uint32_t, 256>, 8> crc32_slices = [] {
+    std::array<std::array<std::uint32_t, 256>, 8> slices{};
+    slices[0] = crc32_table;
+    for (std::size_t k = 1; k < 8; ++k)
+        for (std::size_t byte = 0; byte < 256; ++byte)
+            slices[k][byte] = (slices[k - 1][byte] >> 8) ^ crc32_table[slices[k - 1][byte] & 0xFFu];
+    return slices;
+}();
+
+// Four bytes as a little-endian number, whatever the processor's byte order.
+inline std::uint32_t crc32_load_le32(const unsigned char* p) {
+    return std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16 | std::uint32_t(p[3]) << 24;
+}
+
 inline std::uint32_t crc32(std::string_view bytes) {
+    const auto& t = crc32_slices;
+    const auto* p = reinterpret_cast<const unsigned char*>(bytes.data());
+    std::size_t n = bytes.size();
     std::uint32_t crc = 0xFFFFFFFFu;
-    for (unsigned char byte : bytes) crc = (crc >> 8) ^ crc32_table[(crc ^ byte) & 0xFFu];
+    for (; n >= 8; p += 8, n -= 8) {
+        const std::uint32_t lo = crc32_load_le32(p) ^ crc, hi = crc32_load_le32(p + 4);
+        crc = t[7][lo & 0xFFu] ^ t[6][(lo >> 8) & 0xFFu] ^ t[5][(lo >> 16) & 0xFFu] ^ t[4][lo >> 24] ^
+              t[3][hi & 0xFFu] ^ t[2][(hi >> 8) & 0xFFu] ^ t[1][(hi >> 16) & 0xFFu] ^ t[0][hi >> 24];
+    }
+    for (; n > 0; ++p, --n) crc = (crc >> 8) ^ crc32_table[(crc ^ *p) & 0xFFu];
     return ~crc;
 }
 

@@ -36,5 +36,17 @@ TEST(Crc32, TableGivesTheBitAtATimeValueForEveryByte) {
     EXPECT_EQ(crc32(all), crc32_bit_at_a_time(all));
 }
 
+// Slicing-by-8 folds eight bytes per step and the rest one at a time: every length from 0 to 40
+// and every start within a word gives the bit-at-a-time value (the tail and the word loop both).
+TEST(Crc32, EightBytesAtATimeGiveTheBitAtATimeValueForEveryLengthAndStart) {
+    std::string text;
+    for (int k = 0; k < 48; ++k) text += char((k * 151 + 7) & 0xFF);
+    for (std::size_t start = 0; start < 8; ++start)
+        for (std::size_t length = 0; length + start <= 48 && length <= 40; ++length) {
+            const std::string_view piece = std::string_view(text).substr(start, length);
+            EXPECT_EQ(crc32(piece), crc32_bit_at_a_time(piece)) << "start " << start << ", length " << length;
+        }
+}
+
 }  // namespace
 }  // namespace collide

@@ -1096,6 +1096,72 @@ class LargestError(unittest.TestCase):
         plt.close(captured[0])
 
 
+class SanitiserFastPath(unittest.TestCase):
+    """printable.py returns text with nothing to rewrite as it is (a regular expression finds
+    what it would rewrite): for every character of the Basic Multilingual Plane, alone and inside
+    other text, the result is the one the walk one character at a time gives."""
+
+    @staticmethod
+    def walked(text):
+        out = []
+        for ch in text:
+            code = ord(ch)
+            if 0xdc80 <= code <= 0xdcff:
+                out.append("\\x%02x" % (code - 0xdc00))
+            elif code < 0x20 or 0x7f <= code <= 0x9f or 0xd800 <= code <= 0xdfff:
+                out.append("\\x%02x" % code if code <= 0xff else "\\u%04x" % code)
+            else:
+                out.append(ch)
+        return "".join(out)
+
+    def test_every_character_alone_and_in_text(self):
+        import printable
+        markup = {"&": "&amp;", "<": "&lt;", ">": "&gt;", "\\": "\\\\", "|": "\\|", "`": "\\`"}
+        for code in range(0x10000):
+            for text in (chr(code), "a" + chr(code) + "](b"):
+                walked = self.walked(text)
+                self.assertEqual(printable.terminal(text), walked, hex(code))
+                self.assertEqual(printable.markdown(text),
+                                 "".join(markup.get(ch, ch) for ch in walked).replace("](", "]\\("), hex(code))
+        self.assertEqual(printable.terminal(3.5), "3.5")
+
+
+class RecordToml(unittest.TestCase):
+    """record_toml.loads gives tomllib's result for every case record of the results (the
+    arrays it reads itself, ints and floats, inf and nan, in their tables), and leaves to tomllib
+    (its result or its error) whatever it does not read itself."""
+
+    def test_every_record_as_tomllib_reads_it(self):
+        import tomllib
+        import record_toml
+        names = [n for n in sorted(os.listdir(os.path.join(RESULTS, "cases"))) if n.endswith(".toml")]
+        self.assertTrue(names)
+        for name in names:
+            path = os.path.join(RESULTS, "cases", name)
+            with open(path, "rb") as f:
+                text = digest.record_text(path, f.read())
+            self.assertEqual(json.dumps(record_toml.loads(text)), json.dumps(tomllib.loads(text)), name)
+
+    def test_what_it_does_not_read_itself(self):
+        import tomllib
+        import record_toml
+        texts = ["x = [ 1_000, 2 ]", "x = [ 01 ]", "x = [ 1., 2 ]", "x = [ 'a', 1 ]", "x = [ 0x10 ]",
+                 "x = [ -inf, +nan, -0, -0.0, 1e5, 2E-3 ]", "x = [ 1,\n 2,\n]\n[t]\ny = [ 3 ]",
+                 "[[t]]\nx = [1]\n[[t]]\nx = [2]\ny = [3]", "[ t ]\nx = [1]", "['t.u']\nx = [1]",
+                 's = """\n[q]\nx = [1]\n"""', "s = '''\nx = [1]\n'''\nx = [2]", "x = [1]\nx = [2]",
+                 "[a] # c\nx = [1]", "[a]\r\nx = [1]\n", "  [a]\nx = [1]", "y = [\n[1],\n]\nx = [2]",
+                 "[a]\nx = [1]\n[b]\nx = [2]\n[[c]]\nx = [3]",
+                 "[a]\nx = [1]\n  [a.b]\n  y = [2]\nz = [3]\n[[c]]\nx = [4]\n[c.d]\nx = [5]\n[[c]]\nx = [6]\n[c.d]\nx = [7]"]
+        for text in texts:
+            try:
+                expected = json.dumps(tomllib.loads(text))
+            except tomllib.TOMLDecodeError:
+                with self.assertRaises(tomllib.TOMLDecodeError, msg=text):
+                    record_toml.loads(text)
+                continue
+            self.assertEqual(json.dumps(record_toml.loads(text)), expected, text)
+
+
 if __name__ == "__main__":
     if len(sys.argv) < 2:
         sys.exit(__doc__)

@@ -171,10 +171,11 @@ std::string verified_record_text(const std::string& path) {
     if (text.rfind(checksum_prefix, 0) != 0 || newline == std::string::npos)
         throw std::runtime_error(path + ": damaged case record: no checksum line (cut short, edited, or written "
                                         "by an older collide)");
-    const std::string body = text.substr(newline + 1);
+    const std::string_view body = std::string_view(text).substr(newline + 1);
     if (text.compare(0, newline + 1, checksum_line(body)) != 0)
         throw std::runtime_error(path + ": damaged case record: its checksum does not match its contents");
-    return body;
+    text.erase(0, newline + 1);  // in place: a copy of the body was a second allocation the size of the record
+    return text;
 }
 
 // Every field the writer writes is required, with its type. A record that lacks one, or holds

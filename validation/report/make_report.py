@@ -35,9 +35,10 @@ from digest import ReportInputError  # noqa: E402
 from templating import md  # noqa: E402
 
 
-def write_html(summary, directory, path, a=None):
+def write_html(summary, directory, path, a=None, meanwhile=None):
+    """index.html; `meanwhile` runs while its figures are drawn (scenes.sections)."""
     a = a or Analysis(summary)
-    page = sections.page(a, scenes.sections(summary, directory, a))
+    page = sections.page(a, scenes.sections(summary, directory, a, meanwhile))
     safe_output.write_text(path, templating.render("index.html.j2", **page, quiet=f"{figures.QUIET:g}",
                                                    few_pairs=figures.FEW_PAIRS))
 
@@ -143,11 +144,13 @@ def render(directory):
     safe_output.make_output_directory(out)
     figures.assign_styles(list(summary.get("backends", {})))  # one colour and marker per backend, every figure
     a = Analysis(summary)
-    write_html(summary, directory, os.path.join(out, "index.html"), a)
-    write_checks_html(summary, os.path.join(out, "checks.html"))
-    write_checks_csv(summary, os.path.join(out, "checks.csv"))
-    write_markdown(summary, os.path.join(out, "summary.md"), a)
-    write_markdown_full(summary, os.path.join(out, "summary-full.md"), a)
+
+    def pages_without_figures():  # written while the figures are drawn: this process would wait idle
+        write_checks_html(summary, os.path.join(out, "checks.html"))
+        write_checks_csv(summary, os.path.join(out, "checks.csv"))
+        write_markdown(summary, os.path.join(out, "summary.md"), a)
+        write_markdown_full(summary, os.path.join(out, "summary-full.md"), a)
+    write_html(summary, directory, os.path.join(out, "index.html"), a, meanwhile=pages_without_figures)
     engines_page.write(directory, summary, out)  # "Engines side by side", where two or more engines ran
     return out
 

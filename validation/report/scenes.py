@@ -145,12 +145,15 @@ def _headline_worker(_):
     return figures.headline(s["a"].summary, digest, s["a"].aliases)
 
 
-def _with_progress(pool, scenes):
+def _with_progress(pool, scenes, meanwhile):
     """The headline figure and each scene's section from the pool (the headline submitted first:
     it is the largest single figure), in scene order, with a progress line on the way
-    (progress.py: in place on a terminal, quiet in short logs)."""
+    (progress.py: in place on a terminal, quiet in short logs). `meanwhile` runs in this process
+    once the drawing has started."""
     headline = pool.submit(_headline_worker, None)
     futures = [pool.submit(_scene_section_worker, scene) for scene in scenes]
+    if meanwhile is not None:
+        meanwhile()
     line = progress.ProgressLine()
     done = 0
     for _ in as_completed(futures):
@@ -160,15 +163,17 @@ def _with_progress(pool, scenes):
     return headline.result(), [f.result() for f in futures]
 
 
-def sections(summary, directory, a):
+def sections(summary, directory, a, meanwhile=None):
     """The headline figure's PNG (None where it has nothing to show) and every scene's section,
-    in scene order: all drawn by forked processes, as many at a time as there are cores."""
+    in scene order: all drawn by forked processes, as many at a time as there are cores.
+    `meanwhile` (no arguments) runs in this process while they draw: it would otherwise wait
+    idle, and the pages without figures need no figure (make_report.py)."""
     requests = jumps_by_scene(a, energy_jumps(summary))
     cores = max(1, os.cpu_count() or 1)
     _SHARED.update(summary=summary, directory=directory, a=a, requests=requests)
     try:
         with ProcessPoolExecutor(max_workers=cores, mp_context=multiprocessing.get_context("fork")) as pool:
-            headline, drawn = _with_progress(pool, a.scenes)
+            headline, drawn = _with_progress(pool, a.scenes, meanwhile)
     finally:
         _SHARED.clear()
     for section in drawn:
