@@ -61,6 +61,10 @@ std::vector<DeviceEntry> list_devices() {
             d.driver_version = device.getInfo<CL_DRIVER_VERSION>();
             d.type = type_name(device.getInfo<CL_DEVICE_TYPE>());
             d.fp64 = device.getInfo<CL_DEVICE_DOUBLE_FP_CONFIG>() != 0;
+            const cl_device_fp_config fp32 = device.getInfo<CL_DEVICE_SINGLE_FP_CONFIG>();
+            d.fp32_denormals = (fp32 & CL_FP_DENORM) != 0;
+            d.fp32_fma = (fp32 & CL_FP_FMA) != 0;
+            d.fp32_correctly_rounded_divide_sqrt = (fp32 & CL_FP_CORRECTLY_ROUNDED_DIVIDE_SQRT) != 0;
             d.compute_units = int(device.getInfo<CL_DEVICE_MAX_COMPUTE_UNITS>());
             d.global_memory = device.getInfo<CL_DEVICE_GLOBAL_MEM_SIZE>();
             d.max_allocation = device.getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>();

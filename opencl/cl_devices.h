@@ -16,6 +16,11 @@ struct DeviceEntry {
     std::string platform_name, device_name, device_version, driver_version;
     std::string type;            // "CPU", "GPU", "accelerator", ...
     bool fp64 = false;           // double precision available (cl_khr_fp64)
+    // What the device's float arithmetic offers (CL_DEVICE_SINGLE_FP_CONFIG): where a float
+    // kernel's bits differ from the host's, these name the usual causes.
+    bool fp32_denormals = false;           // denormals kept, not flushed to zero
+    bool fp32_fma = false;                 // a fused multiply-add in hardware
+    bool fp32_correctly_rounded_divide_sqrt = false;  // the build option is then honoured
     int compute_units = 0;
     std::uint64_t global_memory = 0, max_allocation = 0;
 };
