@@ -1,59 +1,124 @@
-"""bench/gpu_check.sh and bench/gpu_bundle.sh on the OpenCL device this machine has (PoCL):
-the script's path as far as a CPU allows (docs/opencl-backend.md, "On a GPU").
+"""bench/gpu_check.sh as far as a CPU allows: its PoCL path (docs/opencl-backend.md, "Checking
+on a GPU").
 
-Checked: a carried bundle runs the OpenCL test programs and the bitwise comparison with
-`cpu` and prints the throughput target line; a device that is not a GPU is refused without
---allow-cpu; a device that does not exist is refused with its name; a build without
-`collide` is refused naming the path."""
+    test_gpu_check.py SOURCE BUILD run       a bundle packed from BUILD runs the whole check on
+                                             PoCL with small sizes, and its summary says what
+                                             each step found
+    test_gpu_check.py SOURCE BUILD refusals  asked for the GPU where no NVIDIA ICD is
+                                             registered (OCL_ICD_VENDORS an empty folder), the
+                                             check stops at once and names what is missing;
+                                             a missing device and a folder without a bundle
+                                             are named too
+
+Both pack their own bundle into a temporary folder, as a person does on the build machine."""
 import os
 import re
 import subprocess
 import sys
 import tempfile
 
-source, build = sys.argv[1], sys.argv[2]
-check = os.path.join(source, "bench", "gpu_check.sh")
-bundle = os.path.join(source, "bench", "gpu_bundle.sh")
+source, build, mode = sys.argv[1], sys.argv[2], sys.argv[3]
+script = os.path.join(source, "bench", "gpu_check.sh")
+pocl = "Portable Computing Language"  # the CPU device of CI and of this machine
+scenes = ["head_on_equal", "glancing", "particle_box"]
 failures = []
 
 
-def run(*args):
-    return subprocess.run(["bash", *args], capture_output=True, text=True, timeout=600)
+def run(*args, env=None):
+    result = subprocess.run(["bash", *args], capture_output=True, text=True, timeout=300,
+                            env=dict(os.environ, **(env or {})))
+    result.text = result.stdout + result.stderr
+    return result
 
 
-def expect(condition, what, result=None):
+def expect(condition, what, shown=""):
     if not condition:
-        failures.append(what + ("" if result is None else "\n--- stdout\n" + result.stdout + "--- stderr\n" + result.stderr))
+        failures.append(what + ("\n--- output\n" + shown if shown else ""))
+
+
+def pack(tmp):
+    bundle = os.path.join(tmp, "bundle")
+    made = run(script, "--pack", bundle, "--build", build)
+    expect(made.returncode == 0, "--pack failed", made.text)
+    lib = os.path.join(bundle, "lib")
+    carried = os.listdir(lib) if os.path.isdir(lib) else []
+    expect("libOpenCL.so.1" in carried, "the bundle lacks the ICD loader libOpenCL.so.1", made.text)
+    expect(not any(re.match(r"(libc|libm|ld-linux[^.]*)\.so", n) for n in carried),
+           "the bundle carries the C library or the loader: " + " ".join(sorted(carried)))
+    expect(not any("pocl" in n.lower() for n in carried), "the bundle carries a vendor's ICD (PoCL)")
+    for path in ["bin/collide", "gpu_check.sh", "bundle.txt", "share/collide/data/scenes/particle_box.toml"]:
+        expect(os.path.isfile(os.path.join(bundle, path)), "the bundle lacks " + path, made.text)
+    tests = os.listdir(os.path.join(bundle, "tests")) if os.path.isdir(os.path.join(bundle, "tests")) else []
+    expect(len(tests) >= 6 and all(t.startswith("test_opencl_") for t in tests),
+           "the bundle's OpenCL test programs: " + " ".join(tests))
+    return bundle, len(tests)
+
+
+def summary_of(out):
+    path = os.path.join(out, "summary.txt")
+    return open(path).read() if os.path.isfile(path) else ""
+
+
+def check_run(tmp):
+    bundle, programs = pack(tmp)
+    out = os.path.join(tmp, "results")
+    checked = run(os.path.join(bundle, "gpu_check.sh"), "--device", pocl, "--sizes", "1000,4000", "--steps", "10",
+                  "--scenes", ",".join(scenes), "--out", out)
+    expect(checked.returncode == 0, "the check failed on PoCL (status %d)" % checked.returncode, checked.text)
+    summary = summary_of(out)
+    shown = summary + "\n--- check output\n" + checked.text
+    expect(f"tests: {programs} passed, 0 failed" in summary, f"not all {programs} OpenCL test programs passed", shown)
+
+    # Bits: every scene equal, or each differing one named with its first and largest
+    # difference and a cause.
+    bits = re.search(r"^bits: equal on (\d+) of (\d+) scenes(; differ on (.*))?$", summary, re.M)
+    expect(bits is not None and int(bits.group(2)) == len(scenes), "no bits line for all scenes", shown)
+    if bits:
+        differing = bits.group(4).split() if bits.group(4) else []
+        expect(int(bits.group(1)) + len(differing) == len(scenes), "scenes neither equal nor named as differing", shown)
+        for name in differing:
+            line = re.search(rf"^bits {name}: differ in \d+ of \d+ values; first at t = \S+: (x|y|vx|vy) of disk \d+ "
+                             rf"by [0-9.e+-]+ .*; largest: .*; cause: (.+)$", summary, re.M)
+            expect(line is not None and len(line.group(2)) > 20, f"scene {name} differs without its differences and cause",
+                   shown)
+
+    for n in (1000, 4000):
+        rate = re.search(rf"^bench N = {n}: ([0-9.e+]+) disk-steps/s \(grid \w+", summary, re.M)
+        expect(rate is not None and float(rate.group(1)) > 0, f"no disk-steps per second at N = {n}", shown)
+    expect(re.search(r"^target: >= 1e\+09 disk-steps/s at N = 4000000: not judged, measured on a CPU device "
+                     r"\(N = 4000: [0-9.e+]+\)$", summary, re.M) is not None, "the target line on a CPU", shown)
+    for step in ("devices", "tests", "bits", "bench", "total"):
+        expect(re.search(rf"^elapsed {step}: [0-9.]+ s$", summary, re.M) is not None, f"no elapsed time of {step}", shown)
+    for kept in ("check.log", "devices.txt", "bench-opencl.csv", "bench-opencl.json", "tests/test_opencl_group.log"):
+        expect(os.path.isfile(os.path.join(out, kept)), "the results lack " + kept, shown)
+    expect(not os.path.exists(os.path.join(out, "work")), "the scratch folder was left in the results")
+
+
+def check_refusals(tmp):
+    bundle, _ = pack(tmp)
+    empty = os.path.join(tmp, "no-vendors")
+    os.makedirs(empty)
+    out = os.path.join(tmp, "no-icd")
+    refused = run(os.path.join(bundle, "gpu_check.sh"), "--out", out, env={"OCL_ICD_VENDORS": empty})
+    expect(refused.returncode == 2, "asked for the GPU without an NVIDIA ICD, the check did not stop with status 2",
+           refused.text)
+    expect("no NVIDIA OpenCL ICD" in refused.text and empty in refused.text,
+           "the refusal does not name the missing NVIDIA ICD and the vendors folder", refused.text)
+    expect("== tests" not in refused.text, "the check went on without a device", refused.text)
+    expect("failed: no NVIDIA OpenCL ICD" in summary_of(out), "the refusal is not in the summary", refused.text)
+
+    missing = run(os.path.join(bundle, "gpu_check.sh"), "--device", "NoSuchDevice42", "--out", os.path.join(tmp, "o2"))
+    expect(missing.returncode == 2 and "NoSuchDevice42" in missing.text, "a missing device was not named", missing.text)
+
+    nothing = os.path.join(tmp, "not-a-bundle")
+    os.makedirs(nothing)
+    refused = run(script, "--bundle", nothing, "--out", os.path.join(tmp, "o3"))
+    expect(refused.returncode == 2 and nothing in refused.text and "--pack" in refused.text,
+           "a folder without a bundle was not named", refused.text)
 
 
 with tempfile.TemporaryDirectory() as tmp:
-    carried = os.path.join(tmp, "carried")
-    made = run(bundle, build, carried)
-    expect(made.returncode == 0 and os.path.isfile(os.path.join(carried, "collide")), "gpu_bundle.sh made no bundle", made)
-    expect(os.path.isfile(os.path.join(carried, "bundle-lib", "libOpenCL.so.1")), "the bundle lacks the OpenCL loader", made)
-    expect(not any(n.startswith("libc.so") for n in os.listdir(os.path.join(carried, "bundle-lib"))),
-           "the bundle carries the C library", made)
-
-    out = os.path.join(tmp, "out")
-    ok = run(check, "--build", carried, "--allow-cpu", "--device", "0", "--sizes", "500 1000", "--steps", "5", "--out", out)
-    expect(ok.returncode == 0, "gpu_check.sh --allow-cpu failed on PoCL", ok)
-    expect("passed: test_opencl_group" in ok.stdout, "the OpenCL test programs did not run", ok)
-    expect("bit for bit" in ok.stdout, "the bitwise comparison with cpu was not reported as equal", ok)
-    expect(re.search(r"N = 1000: [0-9.e+]+ disk-steps/s", ok.stdout) is not None, "no throughput line for N = 1000", ok)
-    expect(re.search(r"target: >= 1e\+09 disk-steps/s at N = 1000: [0-9.e+]+, (met|NOT met)", ok.stdout) is not None,
-           "no target line", ok)
-    expect(os.path.isfile(os.path.join(out, "bench-opencl.csv")), "the benchmark's CSV was not kept", ok)
-
-    not_gpu = run(check, "--build", build, "--device", "0", "--out", os.path.join(tmp, "o2"))
-    expect(not_gpu.returncode == 2 and "not a GPU" in not_gpu.stderr, "a CPU device was accepted without --allow-cpu", not_gpu)
-
-    missing = run(check, "--build", build, "--allow-cpu", "--device", "NoSuchDevice42", "--out", os.path.join(tmp, "o3"))
-    expect(missing.returncode == 2 and "NoSuchDevice42" in missing.stderr, "a missing device was not named", missing)
-
-    empty = os.path.join(tmp, "empty")
-    os.makedirs(empty)
-    nobuild = run(check, "--build", empty, "--out", os.path.join(tmp, "o4"))
-    expect(nobuild.returncode == 2 and empty in nobuild.stderr, "a build without collide was not named", nobuild)
+    {"run": check_run, "refusals": check_refusals}[mode](tmp)
 
 for f in failures:
     print("FAIL:", f)
