@@ -52,6 +52,8 @@ usage: bench/gpu_check.sh --pack DIR [--build BUILD]
   --steps N       most timed steps per benchmark case (default 100)
   --scenes LIST   scenes of the library compared bit for bit (default: all of them)
   --out DIR       the results folder (default gpu-check-results-DATE in the current folder)
+       bench/gpu_check.sh --compare A.xyz B.xyz
+                  compare two runs' frames (collide export -o NAME.xyz) as step 4 does
 EOF
 }
 
@@ -227,7 +229,8 @@ run_frames() {  # NAME SCENE BACKEND [OPTIONS...]
     rm -f "$work/$name.h5"
 }
 
-compare() { awk -v second="$work/$2.xyz" "$compare_frames" "$work/$1.xyz"; }
+compare_files() { awk -v second="$2" "$compare_frames" "$1"; }
+compare() { compare_files "$work/$1.xyz" "$work/$2.xyz"; }
 
 # Why `opencl` and `cpu` differ on SCENE: two reruns separate the order of the sums from the
 # arithmetic of the device.
@@ -315,6 +318,11 @@ script_path=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/$(basename "${BASH_SOU
 source_dir=$(cd "$(dirname "$script_path")/.." && pwd)
 bundle=$(dirname "$script_path") pack_dir="" build="$source_dir/build/release" device=NVIDIA
 sizes=(10000 1000000 4000000) steps=100 scenes=() out=""
+if [[ ${1:-} == --compare ]]; then
+    [[ $# -eq 3 && -f $2 && -f $3 ]] || fail "--compare needs two files written by collide export -o NAME.xyz"
+    compare_files "$2" "$3"
+    exit 0
+fi
 while [[ $# -gt 0 ]]; do
     [[ $1 == -h || $1 == --help ]] && { usage; exit 0; }
     [[ $# -ge 2 ]] || { usage >&2; fail "option '$1' needs a value"; }

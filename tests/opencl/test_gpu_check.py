@@ -3,7 +3,8 @@ on a GPU").
 
     test_gpu_check.py SOURCE BUILD run       a bundle packed from BUILD runs the whole check on
                                              PoCL with small sizes, and its summary says what
-                                             each step found
+                                             each step found; the comparison of step 4
+                                             finds one velocity one float ulp apart
     test_gpu_check.py SOURCE BUILD refusals  asked for the GPU where no NVIDIA ICD is
                                              registered (OCL_ICD_VENDORS an empty folder), the
                                              check stops at once and names what is missing;
@@ -16,6 +17,8 @@ import re
 import subprocess
 import sys
 import tempfile
+
+import numpy
 
 source, build, mode = sys.argv[1], sys.argv[2], sys.argv[3]
 script = os.path.join(source, "bench", "gpu_check.sh")
@@ -92,6 +95,37 @@ def check_run(tmp):
     for kept in ("check.log", "devices.txt", "bench-opencl.csv", "bench-opencl.json", "tests/test_opencl_group.log"):
         expect(os.path.isfile(os.path.join(out, kept)), "the results lack " + kept, shown)
     expect(not os.path.exists(os.path.join(out, "work")), "the scratch folder was left in the results")
+    check_comparison(tmp, bundle)
+
+
+def check_comparison(tmp, bundle):
+    """Step 4's comparison on a run and a copy of it with one velocity moved by one float ulp."""
+    env = {"LD_LIBRARY_PATH": os.path.join(bundle, "lib")}
+    collide = os.path.join(bundle, "bin", "collide")
+    scene = os.path.join(bundle, "share", "collide", "data", "scenes", "head_on_equal.toml")
+    run_file, frames = os.path.join(tmp, "run.h5"), os.path.join(tmp, "a.xyz")
+    for command in ([collide, "run", scene, "--backend", "cpu", "--frames", "-o", run_file],
+                    [collide, "export", run_file, "-o", frames]):
+        made = subprocess.run(command, capture_output=True, text=True, env=dict(os.environ, **env))
+        expect(made.returncode == 0, " ".join(command) + " failed", made.stdout + made.stderr)
+    lines = open(frames).read().splitlines()
+    # Frame 3 (count line, header, 2 disks each), disk 1: vx (field 7) one float spacing further from 0.
+    k = 3 * 4 + 2 + 1
+    fields = lines[k].split()
+    vx = numpy.float32(float(fields[6]))
+    moved = numpy.nextafter(vx, numpy.float32(numpy.copysign(numpy.inf, vx)), dtype=numpy.float32)  # away from 0: one spacing of its binade
+    fields[6] = repr(float(moved))
+    time = re.search(r"Time=(\S+)", lines[k - 2]).group(1)
+    changed = os.path.join(tmp, "b.xyz")
+    open(changed, "w").write("\n".join(lines[:k] + [" ".join(fields)] + lines[k + 1:]) + "\n")
+
+    same = run(script, "--compare", frames, frames)
+    expect(same.stdout.split()[:1] == ["equal"], "a run compared with itself is not equal", same.text)
+    differ = run(script, "--compare", frames, changed).stdout.split()
+    values = 4 * 2 * (len(lines) // 4)
+    expected = ["differ", "1", str(values), "%.3g" % abs(float(moved) - float(vx)), "vx", "1", time, "1"]
+    expect(differ[:8] == expected and differ[3:8] == differ[8:13],
+           "one velocity one ulp apart: expected %s, got %s" % (expected, differ))
 
 
 def check_refusals(tmp):
