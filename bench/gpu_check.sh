@@ -86,15 +86,16 @@ copy_libraries_of() {  # PROGRAM LIBDIR
 }
 
 pack() {  # BUILD DIR
-    local build=$1 dir=$2 program
+    local build=$1 dir=$2 program tests=()
     [[ -x "$build/collide" ]] || fail "--pack: no program '$build/collide': build it first (cmake --preset release && cmake --build build/release)"
-    local tests=("$build"/tests/opencl/test_opencl_*)
-    tests=("${tests[@]/*.cmake/}")
-    [[ -x "${tests[0]:-}" ]] || fail "--pack: no OpenCL test programs in '$build/tests/opencl': build them (cmake --build $build)"
+    for program in "$build"/tests/opencl/test_opencl_*; do
+        [[ -f $program && -x $program ]] && tests+=("$program")  # not CTest's *.cmake files beside them
+    done
+    [[ ${#tests[@]} -gt 0 ]] || fail "--pack: no OpenCL test programs in '$build/tests/opencl': build them (cmake --build $build)"
     [[ ! -e "$dir" || -z "$(ls -A "$dir")" ]] || fail "--pack: '$dir' exists and is not empty; name a new folder"
     mkdir -p "$dir/bin" "$dir/lib" "$dir/tests" "$dir/share/collide/data"
     cp "$build/collide" "$dir/bin/"
-    for program in "${tests[@]}"; do [[ -n "$program" && -x "$program" ]] && cp "$program" "$dir/tests/"; done
+    cp "${tests[@]}" "$dir/tests/"
     # `collide` finds its scene library at ../share/collide beside bin/ (apps/resource_path.cpp).
     cp -r "$source_dir/data/scenes" "$dir/share/collide/data/"
     cp "$script_path" "$dir/gpu_check.sh"
@@ -167,16 +168,20 @@ pick_device() {
 
 # Step 3: the OpenCL test programs, run directly (the carried bundle has no CTest files).
 run_tests() {
-    local deadline program name passed=0 failed=()
+    local deadline program name passed=0 failed=() code
     deadline=$(awk -v n="$(now)" -v l="$limit_tests" 'BEGIN { print n + l }')
     mkdir -p "$out/tests"
     for program in "$bundle"/tests/test_opencl_*; do
         name=${program##*/}
-        if COLLIDE_CL_DEVICE=$device timeout "$(left "$deadline")" "$program" --gtest_brief=1 \
-               > "$out/tests/$name.log" 2>&1; then
+        code=0
+        COLLIDE_CL_DEVICE=$device timeout "$(left "$deadline")" "$program" --gtest_brief=1 \
+            > "$out/tests/$name.log" 2>&1 || code=$?
+        if [[ $code == 0 ]]; then
             passed=$((passed + 1)); echo "passed: $name ($(grep -o 'PASSED.*' "$out/tests/$name.log" | head -1))"
+        elif [[ $code == 124 ]]; then
+            failed+=("$name"); status=1; echo "FAILED: $name (stopped at the step's time limit; see tests/$name.log)"
         else
-            failed+=("$name"); echo "FAILED: $name (see tests/$name.log)"; status=1
+            failed+=("$name"); status=1; echo "FAILED: $name (see tests/$name.log)"
         fi
     done
     summary "tests: $passed passed, ${#failed[@]} failed${failed[*]:+: ${failed[*]}}"
