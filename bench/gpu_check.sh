@@ -40,14 +40,17 @@ readonly limit_devices=10 limit_tests=110 limit_bits=80 limit_bench=140
 usage() {
     cat <<'EOF'
 usage: bench/gpu_check.sh --pack DIR [--build BUILD]
-       DIR/gpu_check.sh [--bundle DIR] [--device TEXT] [--sizes N,N,...] [--steps N]
-                        [--scenes NAME,NAME,...] [--out DIR]
+       DIR/gpu_check.sh [--bundle DIR] [--device TEXT] [--nvidia-library PATH] [--sizes N,N,...]
+                        [--steps N] [--scenes NAME,NAME,...] [--out DIR]
   --pack DIR      make the bundle DIR from a release build (on the build machine)
   --build BUILD   the build to pack (default: build/release of this source tree)
   --bundle DIR    the bundle to check (default: the folder this script is in)
   --device TEXT   OpenCL device: an index of `collide devices`, or a case-insensitive piece of
                   "platform: device" (default NVIDIA; a platform's name picks its first
                   device). A selector naming NVIDIA requires the NVIDIA ICD.
+  --nvidia-library PATH
+                  the driver's libnvidia-opencl.so.1 where the check does not find it: it is
+                  registered for this run (OCL_ICD_VENDORS) whatever else is installed
   --sizes LIST    disk counts of the benchmark (default 10000,1000000,4000000)
   --steps N       most timed steps per benchmark case (default 100)
   --scenes LIST   scenes of the library compared bit for bit (default: all of them)
@@ -127,11 +130,15 @@ check_bundle() {
 # The ICD loader reads the vendors' *.icd files from OCL_ICD_VENDORS, else /etc/OpenCL/vendors.
 # A driver installed without its ICD file is registered in a vendors folder of the results.
 find_nvidia_icd() {
-    local vendors=${OCL_ICD_VENDORS:-/etc/OpenCL/vendors} icd lib ldconfig
+    local vendors=${OCL_ICD_VENDORS:-/etc/OpenCL/vendors} icd lib=$nvidia_library ldconfig
+    if [[ -n $lib ]]; then
+        [[ -f $lib ]] || fail "--nvidia-library: no file '$lib'"
+        register_icd "$lib" "$vendors"; return
+    fi
     icd=$(grep -lis nvidia "$vendors"/*.icd 2>/dev/null | head -1 || true)
     if [[ -n "$icd" ]]; then echo "NVIDIA ICD: $icd ($(head -1 "$icd"))"; return; fi
     if [[ -n "${OCL_ICD_VENDORS:-}" ]]; then
-        fail "no NVIDIA OpenCL ICD: OCL_ICD_VENDORS=$OCL_ICD_VENDORS holds no *.icd file naming NVIDIA; unset it to let the check look in /etc/OpenCL/vendors and for libnvidia-opencl.so.1, or pass --device to check another device"
+        fail "no NVIDIA OpenCL ICD: OCL_ICD_VENDORS=$OCL_ICD_VENDORS holds no *.icd file naming NVIDIA; unset it to let the check look in /etc/OpenCL/vendors and for libnvidia-opencl.so.1, name the library with --nvidia-library, or pass --device to check another device"
     fi
     ldconfig=$(command -v ldconfig || echo /sbin/ldconfig)
     lib=$("$ldconfig" -p 2>/dev/null | awk '$1 == "libnvidia-opencl.so.1" && /x86-64/ { print $NF; exit }' || true)
@@ -140,12 +147,16 @@ find_nvidia_icd() {
         [[ -n "$lib" ]] && break
         [[ -e "$icd" ]] && lib=$icd
     done
-    [[ -n "$lib" ]] || fail "no NVIDIA OpenCL ICD: $vendors has no *.icd file naming NVIDIA, and libnvidia-opencl.so.1 is neither in 'ldconfig -p' nor in /usr/lib/x86_64-linux-gnu, /usr/lib64 or /usr/local/nvidia/lib64. Install the NVIDIA driver's OpenCL part (Debian: nvidia-opencl-icd), or pass --device to check another OpenCL device"
+    [[ -n "$lib" ]] || fail "no NVIDIA OpenCL ICD: $vendors has no *.icd file naming NVIDIA, and libnvidia-opencl.so.1 is neither in 'ldconfig -p' nor in /usr/lib/x86_64-linux-gnu, /usr/lib64 or /usr/local/nvidia/lib64. Install the NVIDIA driver's OpenCL part (Debian: nvidia-opencl-icd), name the library with --nvidia-library, or pass --device to check another OpenCL device"
+    register_icd "$lib" "$vendors"
+}
+
+register_icd() {  # LIBRARY VENDORS: the library as nvidia.icd beside copies of VENDORS' files
     mkdir -p "$out/vendors"
-    cp "$vendors"/*.icd "$out/vendors/" 2>/dev/null || true  # keep the other devices listed
-    echo "$lib" > "$out/vendors/nvidia.icd"
+    cp "$2"/*.icd "$out/vendors/" 2>/dev/null || true  # keep the other devices listed
+    echo "$1" > "$out/vendors/nvidia.icd"
     export OCL_ICD_VENDORS="$out/vendors"
-    echo "NVIDIA ICD: $lib, registered for this run (OCL_ICD_VENDORS=$OCL_ICD_VENDORS)"
+    echo "NVIDIA ICD: $1, registered for this run (OCL_ICD_VENDORS=$OCL_ICD_VENDORS)"
 }
 
 # Step 2: the device. Sets device_type (GPU, CPU, ...) and device_line.
@@ -322,7 +333,7 @@ step() {  # NAME FUNCTION
 script_path=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/$(basename "${BASH_SOURCE[0]}")
 source_dir=$(cd "$(dirname "$script_path")/.." && pwd)
 bundle=$(dirname "$script_path") pack_dir="" build="$source_dir/build/release" device=NVIDIA
-sizes=(10000 1000000 4000000) steps=100 scenes=() out=""
+sizes=(10000 1000000 4000000) steps=100 scenes=() out="" nvidia_library=""
 if [[ ${1:-} == --compare ]]; then
     [[ $# -eq 3 && -f $2 && -f $3 ]] || fail "--compare needs two files written by collide export -o NAME.xyz"
     compare_files "$2" "$3"
@@ -336,6 +347,7 @@ while [[ $# -gt 0 ]]; do
         --build) build=$2 ;;
         --bundle) bundle=$2 ;;
         --device) device=$2 ;;
+        --nvidia-library) nvidia_library=$2 ;;
         --sizes) IFS=, read -r -a sizes <<< "$2" ;;
         --steps) steps=$2 ;;
         --scenes) IFS=, read -r -a scenes <<< "$2" ;;

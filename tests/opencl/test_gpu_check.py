@@ -8,8 +8,9 @@ on a GPU").
     test_gpu_check.py SOURCE BUILD refusals  asked for the GPU where no NVIDIA ICD is
                                              registered (OCL_ICD_VENDORS an empty folder), the
                                              check stops at once and names what is missing;
-                                             a missing device and a folder without a bundle
-                                             are named too
+                                             a library named by --nvidia-library is
+                                             registered for the run; a missing device and a
+                                             folder without a bundle are named too
 
 Both pack their own bundle into a temporary folder, as a person does on the build machine."""
 import os
@@ -128,6 +129,13 @@ def check_comparison(tmp, bundle):
            "one velocity one ulp apart: expected %s, got %s" % (expected, differ))
 
 
+def pocl_library_path():
+    listed = subprocess.run(["/sbin/ldconfig", "-p"], capture_output=True, text=True).stdout
+    found = re.search(r"^\s*libpocl\.so\S* \(.*x86-64.*\) => (\S+)$", listed, re.M)
+    expect(found is not None, "PoCL's library is not in ldconfig -p (install pocl-opencl-icd)", listed)
+    return found.group(1) if found else "/nonexistent/libpocl.so"
+
+
 def check_refusals(tmp):
     bundle, _ = pack(tmp)
     empty = os.path.join(tmp, "no-vendors")
@@ -140,6 +148,21 @@ def check_refusals(tmp):
            "the refusal does not name the missing NVIDIA ICD and the vendors folder", refused.text)
     expect("== tests" not in refused.text, "the check went on without a device", refused.text)
     expect("failed: no NVIDIA OpenCL ICD" in summary_of(out), "the refusal is not in the summary", refused.text)
+
+    # The registration of a driver without its ICD file, with PoCL's library standing in for
+    # NVIDIA's: the only vendor the loader then sees is the one the check registered.
+    pocl_library = pocl_library_path()
+    out = os.path.join(tmp, "registered")
+    registered = run(os.path.join(bundle, "gpu_check.sh"), "--nvidia-library", pocl_library, "--out", out,
+                     env={"OCL_ICD_VENDORS": empty})
+    icd = os.path.join(out, "vendors", "nvidia.icd")
+    expect(os.path.isfile(icd) and open(icd).read().strip() == pocl_library and "registered for this run" in registered.text,
+           "--nvidia-library was not registered in the results' vendors folder", registered.text)
+    devices = os.path.join(out, "devices.txt")
+    expect(os.path.isfile(devices) and pocl in open(devices).read(), "the registered library's device is not listed",
+           registered.text)
+    expect(registered.returncode == 2 and "no OpenCL device matches --device 'NVIDIA'" in registered.text,
+           "a CPU device was taken for the NVIDIA GPU", registered.text)
 
     missing = run(os.path.join(bundle, "gpu_check.sh"), "--device", "NoSuchDevice42", "--out", os.path.join(tmp, "o2"))
     expect(missing.returncode == 2 and "NoSuchDevice42" in missing.text, "a missing device was not named", missing.text)
