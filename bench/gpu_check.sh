@@ -248,6 +248,22 @@ run_frames() {  # NAME SCENE BACKEND [OPTIONS...]
 compare_files() { awk -v second="$2" "$compare_frames" "$1"; }
 compare() { compare_files "$work/$1.xyz" "$work/$2.xyz"; }
 
+# The float operations that can round otherwise on the device, from its float properties
+# (`collide devices`: "float: denormals yes, fma yes, correctly rounded divide/sqrt yes").
+float_suspects() {
+    local suspects=()
+    [[ $device_float == *"divide/sqrt no"* ]] &&
+        suspects+=("division and sqrt, not correctly rounded on this device (OpenCL allows 2.5 and 3 ulp)")
+    [[ $device_float == *"denormals no"* ]] && suspects+=("values below 2^-126, flushed to zero on this device")
+    if [[ ${#suspects[@]} -eq 0 ]]; then
+        echo "the device has correctly rounded division and sqrt and keeps denormals, so the likely cause is a*b + c contracted into one FMA despite FP_CONTRACT OFF (fma: $([[ $device_float == *"fma yes"* ]] && echo yes || echo no))"
+    else
+        printf '%s' "${suspects[0]}"
+        [[ ${#suspects[@]} -eq 1 ]] || printf '; %s' "${suspects[1]}"
+        echo
+    fi
+}
+
 # Why `opencl` and `cpu` differ on SCENE: two reruns separate the order of the sums from the
 # arithmetic of the device.
 diagnose() {  # SCENE
@@ -257,7 +273,7 @@ diagnose() {  # SCENE
     elif ! run_frames step "$1" step 2> /dev/null || ! run_frames opencl-double "$1" opencl --real double --cl-device "$device" 2> /dev/null; then
         echo "not separated: the double rerun (step against opencl --real double) did not run (no fp64?)"
     elif [[ $(compare step opencl-double) == equal* ]]; then
-        echo "the float operations of the device: in double the kernels give step's bits, so the order and the formulas agree and the float arithmetic rounds otherwise; the device reports $device_float (no correctly rounded divide/sqrt: up to 2.5 ulp for division and 3 ulp for sqrt; no denormals: tiny values flushed to zero; both are fine: the compiler contracting a*b + c into FMA despite FP_CONTRACT OFF)"
+        echo "the float operations of the device: in double the kernels give step's bits, so the order of the sums and the formulas agree and the float arithmetic rounds otherwise: $(float_suspects)"
     else
         echo "the arithmetic in both precisions: opencl --real double differs from step too, so a*b + c contracted into FMA (applies to float and double alike; the device reports $device_float) or kernels that no longer follow the rules"
     fi

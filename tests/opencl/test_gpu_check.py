@@ -71,6 +71,9 @@ def check_run(tmp):
     expect(checked.returncode == 0, "the check failed on PoCL (status %d)" % checked.returncode, checked.text)
     summary = summary_of(out)
     shown = summary + "\n--- check output\n" + checked.text
+    expect(re.search(r"^device: \[\d+\] .*\(CPU, .*; float: denormals (yes|no), fma (yes|no), "
+                     r"correctly rounded divide/sqrt (yes|no)$", summary, re.M) is not None,
+           "no device line with its float properties", shown)
     expect(f"tests: {programs} passed, 0 failed" in summary, f"not all {programs} OpenCL test programs passed", shown)
 
     # Bits: every scene equal, or each differing one named with its first and largest
