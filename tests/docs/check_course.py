@@ -27,7 +27,8 @@
                                         pressure across the hexatic transition at N = 72 and 870,
                                         self-diffusion against Enskog's, the velocity
                                         autocorrelation function (Green-Kubo, the 1/t tail), the
-                                        equilibration cut from the data, and wording found false
+                                        equilibration cut from the data, the Metropolis slips'
+                                        wall pressures, and wording found false
 
 An exercise is a "### Exercise" section of a chapter (docs/course/[1-9]-*.md): its first ```sh
 block is the command a student runs, with `collide` meaning the built program, in a scratch
@@ -932,6 +933,32 @@ def stationary_series_cut(collide, scratch, page):
     return []
 
 
+def fact_metropolis_slips(collide, scratch):
+    """Exercise 4.6: the wall pressure and z the checker finds for the two slips that sample legal
+    configurations with the wrong measure (redrawing until legal, a window clipped to the box)."""
+    page = re.sub(r"\s+", " ", (COURSE / "4-validating-a-solver.md").read_text())
+    said = re.search(r"drawing again until a move is legal gives βPd² = ([\d.]+) ± ([\d.]+), (\d+) combined errors "
+                     r"low .*? clipping the step's window to the box so that no move leaves it, ([\d.]+) ± ([\d.]+)", page)
+    if not said:
+        return ["4-validating-a-solver.md: exercise 4.6 states no wall pressure for the redrawing and clipped samplers"]
+    env = dict(os.environ)
+    env["PATH"] = f"{pathlib.Path(collide).resolve().parent}{os.pathsep}{env['PATH']}"
+    measured = []
+    for name in ("metropolis.py", "metropolis--clipped_window.py"):
+        done = subprocess.run(["/usr/bin/python3", str(COURSE / "lab.py"), "check", "metropolis",
+                               str(ROOT / "tests/docs/wrong_answers" / name)], capture_output=True, text=True, env=env)
+        got = re.search(r"beta P d\^2 = ([\d.]+) ± ([\d.]+) .*?\(z = ([-+][\d.]+)\)", done.stdout)
+        if not got:
+            return [f"exercise 4.6: the checker printed no wall pressure for {name}:\n{done.stdout}{done.stderr}"]
+        measured.append([float(g) for g in got.groups()])
+    (redraw, redraw_error, redraw_z), (clipped, clipped_error, _) = measured
+    values = [float(v) for v in said.groups()]
+    wanted = [redraw, redraw_error, -redraw_z, clipped, clipped_error]
+    if any(abs(v - m) > (0.6 if k == 2 else 0.0006) for k, (v, m) in enumerate(zip(values, wanted))):
+        return [f"4-validating-a-solver.md: exercise 4.6's slips: the page says {values}, the checker {wanted}"]
+    return []
+
+
 def check_facts(collide):
     with tempfile.TemporaryDirectory(prefix="collide-facts-") as scratch:
         scratch = pathlib.Path(scratch)
@@ -944,8 +971,9 @@ def check_facts(collide):
                     + fact_fitted_grid(collide, scratch) + fact_sampling(collide, scratch)
                     + fact_declared_exact(collide, scratch) + fact_pair_correlation(collide, scratch)
                     + fact_hexatic(collide, scratch) + fact_diffusion(collide, scratch)
-                    + fact_vacf(collide, scratch) + fact_equilibration_cut(collide, scratch))
-    print("22 statements of the text measured")
+                    + fact_vacf(collide, scratch) + fact_equilibration_cut(collide, scratch)
+                    + fact_metropolis_slips(collide, scratch))
+    print("23 statements of the text measured")
     return failures
 
 
