@@ -25,6 +25,7 @@
 #include "path_argument.h"
 #include "scene_from_dict.h"
 #include "simulation.h"
+#include "statistics.h"
 #include "structure.h"
 #include "validation/record/case_result.h"
 #include "validation/plan/external_solvers.h"
@@ -405,4 +406,5 @@ PYBIND11_MODULE(_collide, m) {
           "None if `backend` can run `scene`, else why not (the reason Simulation would give)");
     m.def("build_provenance", &build_provenance, "Commit, compiler, flags and library versions of this build");
     bind_structure(m);
+    bind_statistics(m);
 }

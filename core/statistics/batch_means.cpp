@@ -28,19 +28,26 @@ double tau_int(const double* x, std::size_t n) {
     return std::max(tau, 0.5);
 }
 
+// The first candidate with the most effective samples (Chodera 2016).
 std::size_t chosen_cut(const std::vector<double>& x) {
-    const std::size_t n = x.size(), step = std::max<std::size_t>(1, n / 20);
     std::size_t best = 0;
     double best_effective = -1;
-    for (std::size_t t0 = 0; t0 <= n / 2; t0 += step) {
-        const double g = 2 * tau_int(x.data() + t0, n - t0);
-        const double effective = double(n - t0) / std::max(g, 1.0);
-        if (effective > best_effective) best_effective = effective, best = t0;
-    }
+    for (const CutCandidate& c : equilibration_candidates(x))
+        if (c.effective_samples > best_effective) best_effective = c.effective_samples, best = c.cut;
     return best;
 }
 
 }  // namespace
+
+std::vector<CutCandidate> equilibration_candidates(const std::vector<double>& x) {
+    const std::size_t n = x.size(), step = std::max<std::size_t>(1, n / 20);
+    std::vector<CutCandidate> candidates;
+    for (std::size_t t0 = 0; t0 <= n / 2 && t0 < n; t0 += step) {
+        const double g = 2 * tau_int(x.data() + t0, n - t0);
+        candidates.push_back({t0, double(n - t0) / std::max(g, 1.0)});
+    }
+    return candidates;
+}
 
 double integrated_autocorrelation_time(const std::vector<double>& x) { return tau_int(x.data(), x.size()); }
 

@@ -35,6 +35,15 @@ struct SeriesEstimate {
 // tau_int of x (Sokal's window); 0.5 for an uncorrelated series, 0 for fewer than 2 entries.
 double integrated_autocorrelation_time(const std::vector<double>& x);
 
+// One candidate start of the stationary part: the entries cut, and the effectively independent
+// samples (n - cut) / max(1, 2 tau_int) of what is left. The cut is the candidate with the most.
+struct CutCandidate {
+    std::size_t cut = 0;
+    double effective_samples = 0;
+};
+// The candidates t0 = 0, n/20, 2n/20, ... up to n/2 (every entry for n < 20), in order.
+std::vector<CutCandidate> equilibration_candidates(const std::vector<double>& x);
+
 // The estimate of x's stationary mean: cut chosen from the data, then batch means.
 // With cut_from_data false the whole series is used (for series known to start stationary).
 SeriesEstimate estimate_stationary_mean(const std::vector<double>& x, bool cut_from_data = true,

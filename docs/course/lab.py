@@ -14,14 +14,20 @@
                                         the contact route and by the collision virial, and the
                                         mean |psi6|, from the frames at t >= T (collide's module:
                                         collide.pair_correlation, collide.psi6; needs --frames)
+    python3 docs/course/lab.py equilibration SCENE.toml [--duration T]   runs the scene on
+                                        `event` through collide's module and prints its beta P d^2
+                                        in 1000 windows cut from the data: each candidate start,
+                                        its effective samples, the one chosen, and the means
+                                        (collide.stationary_mean, the run record's estimate)
     python3 docs/course/lab.py check EXERCISE FILE.py  checks the code a student wrote for a
                                         coding exercise (galperin, root, haff, tunnel, blocks,
                                         metropolis, counting_sort, event_loop: this one runs
                                         `collide validate`, gofr, green_kubo); exit status 0
                                         when it is right
 
-Each reads the HDF5 layout of docs/output-format.md with h5py; nothing here simulates, and the
-structure (g(r), psi6) is collide's own, from the module beside the program on PATH.
+Each reads the HDF5 layout of docs/output-format.md with h5py, except `equilibration`, which runs
+collide's module; the structure (g(r), psi6) and the statistics are collide's own, from the
+module beside the program on PATH.
 """
 import argparse
 import json
@@ -109,11 +115,18 @@ def sweep(summary, scene, backend):
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("what", choices=["velocities", "counters", "energy", "error", "same", "settings",
-                                         "checks", "sweep", "check", "structure"])
+                                         "checks", "sweep", "check", "structure", "equilibration"])
     parser.add_argument("files", nargs="+")
     parser.add_argument("--from", dest="start", type=float, default=0.0,
                         help="structure: use the frames from this time on (after the melt)")
+    parser.add_argument("--duration", type=float, default=None,
+                        help="equilibration: run this long instead of the scene's duration")
     args = parser.parse_args()
+    if args.what == "equilibration":
+        import lab_equilibration
+        for path in args.files:
+            lab_equilibration.equilibration(path, args.duration)
+        return
     if args.what == "structure":
         import lab_structure
         for path in args.files:

@@ -761,6 +761,40 @@ def sampling(lab, out):
            "72 disks, periodic, η = 0.5: three routes to one pressure", legend_loc="upper center")
 
 
+def equilibration(lab, out):
+    # The cut from the data (chapter 4.4, exercise 4.7) on hard_disk_fluid's pressure series, as
+    # `lab.py equilibration` computes it: left the series and the cut, right each candidate
+    # start's effectively independent samples (n - t0) / (2 tau_int), the cut their maximum.
+    import lab_equilibration
+    r = lab_equilibration.cuts(SCENES / "physics/hard_disk_fluid.toml")
+    w, x, chosen = r["window"], r["series"], r["chosen"]
+    cut = chosen["equilibration_cut"] * w
+    t = (np.arange(len(x)) + 0.5) * w
+    block = 50   # windows of 0.04: blocks of 2 time units
+    fig, (left, right) = plt.subplots(1, 2, figsize=(8.4, 3.4), gridspec_kw={"width_ratios": [1.6, 1]})
+    fine = x.reshape(-1, 10).mean(axis=1)   # means over 0.4: the windows' noise, ten times less
+    left.plot((np.arange(len(fine)) + 0.5) * 10 * w, fine, color="0.6", lw=0.6, label=f"means over {10 * w:g}")
+    means = x[: len(x) // block * block].reshape(-1, block).mean(axis=1)
+    left.plot((np.arange(len(means)) + 0.5) * block * w, means, "o-", ms=3, color="C0", label="means over 2 time units")
+    left.axvline(cut, color="C3", lw=1.2, label=f"the cut from the data, t = {cut:g}")
+    left.axhspan(chosen["mean"] - chosen["error"], chosen["mean"] + chosen["error"], color="C3", alpha=0.25,
+                 label=f"after it: {chosen['mean']:.4f} ± {chosen['error']:.4f}")
+    whole = r["whole"]
+    left.axhline(whole["mean"], color="k", ls=":", lw=1, label=f"whole run: {whole['mean']:.4f} ± {whole['error']:.4f}")
+    left.set_ylim(5.4, max(fine.max(), 7.2) + 0.05)   # room below the melted fluid for the legend
+    left.set_xlabel(TIME)
+    left.set_ylabel(r"$\beta P d^2$ (dimensionless)")
+    left.legend(loc="lower right", fontsize=7, ncol=2)
+    left.set_title("hard_disk_fluid on event: 1152 disks melting at η = 0.65", fontsize=9)
+    starts = [c * w for c, _ in chosen["candidates"]]
+    effective = [e for _, e in chosen["candidates"]]
+    right.bar(starts, effective, width=0.8 * (starts[1] - starts[0]),
+              color=["C3" if s == cut else "C0" for s in starts])
+    right.set_xlabel(r"candidate start $t_0$ ($\sigma\sqrt{m/kT}$)")
+    finish(fig, right, out, "ch4_equilibration", None, "effective samples (windows)",
+           "(n − t₀) / (2τ_int) after each start", legend=False)
+
+
 # --- Chapter 5: making it fast ------------------------------------------------------------
 
 def bench_rows(lab, suite, extra=()):
@@ -830,6 +864,8 @@ FIGURES = {f.__name__: f for f in (head_on_mass_ratio, glancing, pi_circle, maxw
                                     snapshot, chaos, haff, pair_correlation, diffusion, vacf, hexatic, convergence,
                                     cradle, energy_crowd, work_precision, overlap_series, replicates, sampling,
                                     speed_ladder, stepped_throughput, threads)}
+# (chapter 4.4's figure, registered apart from the tuple above)
+FIGURES["equilibration"] = equilibration
 
 
 def main():

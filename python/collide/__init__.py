@@ -29,10 +29,12 @@ from ._collide import (  # noqa: F401  (re-exported)
     SuiteError,
     backends,
     build_provenance,
+    integrated_autocorrelation_time,
     local_psi6,
     pair_correlation,
     psi6,
     refusal,
+    stationary_mean,
     toml_from_dict,
 )
 from . import _collide, safe_output
@@ -41,7 +43,7 @@ __version__ = build_provenance().get("collide_version", "")
 
 __all__ = ["Scene", "SceneError", "Simulation", "SuiteError", "RunResult", "run", "read_run", "validate", "export",
            "backends", "build_provenance", "refusal", "toml_from_dict", "pair_correlation", "local_psi6", "psi6",
-           "PSI6_CUTOFF_DIAMETERS"]
+           "PSI6_CUTOFF_DIAMETERS", "stationary_mean", "integrated_autocorrelation_time"]
 
 
 class RunResult(dict):

@@ -3,7 +3,9 @@
 // x_{t+1} = a x_t + noise, whose tau_int = (1 + a) / (2 (1 - a)).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <random>
 
 #include "core/statistics/batch_means.h"
@@ -49,6 +51,25 @@ TEST(BatchMeans, EquilibrationCutLeavesOutAnInitialDrift) {
     EXPECT_NEAR(e.mean, 0, 5 * e.error);
     const SeriesEstimate whole = estimate_stationary_mean(x, false);
     EXPECT_GT(std::abs(whole.mean), 5 * e.error);  // without the cut the drift biases it
+}
+
+// The candidates behind the cut: starts 0, n/20, ... n/2, each with (n - t0) / (2 tau_int(t0)),
+// and the cut the estimate takes is the first with the most; the melt makes the early ones few.
+TEST(BatchMeans, TheCutIsTheCandidateWithTheMostEffectiveSamples) {
+    auto x = ar1(0.5, 10000, 3);
+    for (std::size_t i = 0; i < 1500; ++i) x[i] += 20.0 * (1500 - double(i)) / 1500;
+    const std::vector<CutCandidate> candidates = equilibration_candidates(x);
+    ASSERT_EQ(candidates.size(), 11u);
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+        EXPECT_EQ(candidates[k].cut, 500 * k);
+        const std::vector<double> rest(x.begin() + std::ptrdiff_t(500 * k), x.end());
+        EXPECT_DOUBLE_EQ(candidates[k].effective_samples,
+                         double(rest.size()) / std::max(1.0, 2 * integrated_autocorrelation_time(rest)));
+    }
+    const auto best = std::max_element(candidates.begin(), candidates.end(),
+                                       [](const CutCandidate& a, const CutCandidate& b) { return a.effective_samples < b.effective_samples; });
+    EXPECT_EQ(estimate_stationary_mean(x).equilibration_cut, best->cut);
+    EXPECT_LT(candidates[0].effective_samples, 0.5 * best->effective_samples);
 }
 
 }  // namespace

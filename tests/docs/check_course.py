@@ -26,8 +26,9 @@
                                         virial and by lines over four windows, |psi6| and the
                                         pressure across the hexatic transition at N = 72 and 870,
                                         self-diffusion against Enskog's, the velocity
-                                        autocorrelation function (Green-Kubo, the 1/t tail), and
-                                        wording found false
+                                        autocorrelation function (Green-Kubo, the 1/t tail), the
+                                        equilibration cut from the data, the Metropolis slips'
+                                        wall pressures, and wording found false
 
 An exercise is a "### Exercise" section of a chapter (docs/course/[1-9]-*.md): its first ```sh
 block is the command a student runs, with `collide` meaning the built program, in a scratch
@@ -869,6 +870,95 @@ def fact_vacf(collide, scratch):
     return failures
 
 
+def fact_equilibration_cut(collide, scratch):
+    """Chapter 4.4, the cut from the data: on hard_disk_fluid's pressure series (lab.py
+    equilibration, 40 and 200 time units), the cut, tau_int and effective samples from t = 0 and
+    from the cut, the means with the cut, whole and over the second half, the window from 2 to 4
+    and the bias it leaves, and the long run's cut, mean and z against the short one."""
+    page = re.sub(r"\s+", " ", (COURSE / "4-validating-a-solver.md").read_text())
+    said = re.search(r"from t₀ = 0 the series has τ_int = ([\d.]+) windows and (\d+) effective samples, from t₀ = "
+                     r"([\d.]+) it has τ_int = ([\d.]+) and (\d+), the most of any start: the cut is t = ([\d.]+), and "
+                     r"βPd² = ([\d.]+) ± ([\d.]+) .*? the run reads ([\d.]+) ± ([\d.]+), .*? second half, ([\d.]+) ± "
+                     r"([\d.]+), .*? from t = 2 to 4 still reads ([\d.]+), .*? by −([\d.]+) \(the mean from t = 2 less the "
+                     r"mean from t = 4\).*? \(200 time units\) cuts at t = ([\d.]+) and gives ([\d.]+) ± ([\d.]+), ([\d.]+) "
+                     r"combined errors", page)
+    if not said:
+        return ["4-validating-a-solver.md: section 4.4 states no equilibration cut from the data on hard_disk_fluid "
+                "(the candidates' tau_int and effective samples, the means, the long run)"]
+    sys.path.insert(0, str(COURSE))
+    import lab_structure
+    lab_structure.collide_module(collide)   # the module beside this collide, for lab_equilibration
+    import lab_equilibration
+    scene = SCENES / "physics/hard_disk_fluid.toml"
+    short, long = lab_equilibration.cuts(scene), lab_equilibration.cuts(scene, 200)
+    w, x, chosen = short["window"], short["series"], short["chosen"]
+    cut = chosen["equilibration_cut"]
+    effective = dict(chosen["candidates"])
+    tau = lab_structure.collide().integrated_autocorrelation_time
+    from_4 = int(round(4 / w))
+    z = abs(long["chosen"]["mean"] - chosen["mean"]) / np.hypot(long["chosen"]["error"], chosen["error"])
+    measured = [tau(x), effective[0], cut * w, tau(x[cut:]), effective[cut], cut * w, chosen["mean"], chosen["error"],
+                short["whole"]["mean"], short["whole"]["error"], short["second_half"]["mean"],
+                short["second_half"]["error"], x[int(round(2 / w)):from_4].mean(), x[from_4:].mean() - chosen["mean"],
+                long["chosen"]["equilibration_cut"] * long["window"], long["chosen"]["mean"], long["chosen"]["error"], z]
+    slack = [0.006, 0.6, 1e-9, 0.006, 0.6, 1e-9] + [6e-5] * 8 + [1e-9, 6e-5, 6e-5, 0.006]
+    values = [float(v) for v in said.groups()]
+    wrong = [k for k, (v, m, e) in enumerate(zip(values, measured, slack)) if abs(v - m) > e]
+    failures = []
+    if wrong:
+        failures.append(f"4-validating-a-solver.md: the equilibration cut on hard_disk_fluid: the page says {values}, the "
+                        f"runs {[round(float(m), 4) for m in measured]} (differing at positions {wrong})")
+    return failures + stationary_series_cut(collide, scratch, page)
+
+
+def stationary_series_cut(collide, scratch, page):
+    """Chapter 4.4: the cut the rule takes on exercise 4.4's stationary series (the kinetic energy
+    of ten disks of a gas in equilibrium), and the means without and with it."""
+    said = re.search(r"on exercise 4\.4's ten disks it cuts (\d+) of (\d+) samples, and the mean moves from ([\d.]+) to "
+                     r"([\d.]+) ± ([\d.]+)", page)
+    if not said:
+        return ["4-validating-a-solver.md: section 4.4 does not say what the cut does to exercise 4.4's stationary series"]
+    text = (SCENES / "periodic_gas.toml").read_text().replace("count = 1000", "count = 200")
+    text = set_key(text.replace("box = [0.0, 0.0, 60.0, 60.0]", "box = [0.0, 0.0, 26.8, 26.8]"), "duration", "200.0")
+    v = run(collide, text, "event", scratch, "ten_cut")["frames/velocity"][:]
+    k = (v[:, :10] ** 2).sum(axis=(1, 2)) / 2
+    sys.path.insert(0, str(COURSE))
+    import lab_structure
+    e = lab_structure.collide_module(collide).stationary_mean(k)
+    measured = [e["equilibration_cut"], len(k), k.mean(), e["mean"], e["error"]]
+    values = [float(v) for v in said.groups()]
+    if any(abs(v - m) > 0.006 for v, m in zip(values, measured)):
+        return [f"4-validating-a-solver.md: the cut on exercise 4.4's series: the page says {values}, the run "
+                f"{[round(float(m), 3) for m in measured]}"]
+    return []
+
+
+def fact_metropolis_slips(collide, scratch):
+    """Exercise 4.6: the wall pressure and z the checker finds for the two slips that sample legal
+    configurations with the wrong measure (redrawing until legal, a window clipped to the box)."""
+    page = re.sub(r"\s+", " ", (COURSE / "4-validating-a-solver.md").read_text())
+    said = re.search(r"drawing again until a move is legal gives βPd² = ([\d.]+) ± ([\d.]+), (\d+) combined errors "
+                     r"low .*? clipping the step's window to the box so that no move leaves it, ([\d.]+) ± ([\d.]+)", page)
+    if not said:
+        return ["4-validating-a-solver.md: exercise 4.6 states no wall pressure for the redrawing and clipped samplers"]
+    env = dict(os.environ)
+    env["PATH"] = f"{pathlib.Path(collide).resolve().parent}{os.pathsep}{env['PATH']}"
+    measured = []
+    for name in ("metropolis.py", "metropolis--clipped_window.py"):
+        done = subprocess.run(["/usr/bin/python3", str(COURSE / "lab.py"), "check", "metropolis",
+                               str(ROOT / "tests/docs/wrong_answers" / name)], capture_output=True, text=True, env=env)
+        got = re.search(r"beta P d\^2 = ([\d.]+) ± ([\d.]+) .*?\(z = ([-+][\d.]+)\)", done.stdout)
+        if not got:
+            return [f"exercise 4.6: the checker printed no wall pressure for {name}:\n{done.stdout}{done.stderr}"]
+        measured.append([float(g) for g in got.groups()])
+    (redraw, redraw_error, redraw_z), (clipped, clipped_error, _) = measured
+    values = [float(v) for v in said.groups()]
+    wanted = [redraw, redraw_error, -redraw_z, clipped, clipped_error]
+    if any(abs(v - m) > (0.6 if k == 2 else 0.0006) for k, (v, m) in enumerate(zip(values, wanted))):
+        return [f"4-validating-a-solver.md: exercise 4.6's slips: the page says {values}, the checker {wanted}"]
+    return []
+
+
 def check_facts(collide):
     with tempfile.TemporaryDirectory(prefix="collide-facts-") as scratch:
         scratch = pathlib.Path(scratch)
@@ -881,8 +971,9 @@ def check_facts(collide):
                     + fact_fitted_grid(collide, scratch) + fact_sampling(collide, scratch)
                     + fact_declared_exact(collide, scratch) + fact_pair_correlation(collide, scratch)
                     + fact_hexatic(collide, scratch) + fact_diffusion(collide, scratch)
-                    + fact_vacf(collide, scratch))
-    print("21 statements of the text measured")
+                    + fact_vacf(collide, scratch) + fact_equilibration_cut(collide, scratch)
+                    + fact_metropolis_slips(collide, scratch))
+    print("23 statements of the text measured")
     return failures
 
 
