@@ -11,7 +11,7 @@
 // Pressure, after each sampled sweep, from the density of separations at contact, extrapolated
 // by a straight line over a window of 5 % of the diameter (contact_histogram.h):
 //  - periodic box: the pair virial, beta P A / N = 1 + sigma h(sigma) / (2 N), h(r) the number
-//    of pairs per unit separation at r (Allen & Tildesley eq. 2.58 for hard disks; the same
+//    of pairs per unit separation at r (Allen & Tildesley §2.4 and §2.6 for hard disks; the same
 //    as 1 + (pi/2) rho sigma^2 g(sigma) for large N);
 //  - reflecting walls: the wall contact theorem, beta P = (centres per unit distance from the
 //    walls, at contact, summed over the walls) / (the box's perimeter), as `event` measures the
