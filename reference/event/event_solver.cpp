@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 
 #include "core/numerics/disk_overlap.h"
@@ -113,7 +114,7 @@ void EventSolver::load(const Scene& scene, const ParticleState<double>& initial)
     if (shells_on()) {
         // Room for 1.5 times the disks a list holds on average, plus 8 (it grows when full).
         const double cutoff = 2 * r_max + 2 * shell_;
-        const double expected = n > 0 ? double(n) * 3.14159 * cutoff * cutoff / (w.width() * w.height()) : 0;
+        const double expected = n > 0 ? double(n) * std::numbers::pi * cutoff * cutoff / (w.width() * w.height()) : 0;
         shells_.reset(n, std::uint32_t(std::min(1.5 * expected + 8, double(n) + 4)));
         for (std::uint32_t i = 0; i < n; ++i) shells_.shell(i).cx = disks_[i].x, shells_.shell(i).cy = disks_[i].y;
         for (std::uint32_t i = 0; i < n; ++i) build_shell(i, false);
@@ -179,7 +180,7 @@ std::optional<double> EventSolver::read_options(double r_max) {
     // shell: the shell width delta of the neighbour-list design (neighbour_shells.h) as a
     // fraction of the largest contact distance 2 r_max; 0, the default, keeps the cell-list
     // design. The lists were measured slower than the cells in two dimensions (per collision
-    // 1.5x at area fraction 0.5 with the best shell, 0.3; 2.4x at 0.1 with 1.0; N = 1e5;
+    // 1.5x at area fraction 0.5 with the best shell, 0.3; 2.3x at 0.1 with 1.0; N = 1e5;
     // docs/event-driven.md, "Neighbour lists with shells"), so they are an experiment, not
     // the default.
     const double shell_fraction = options.get_double("shell", 0.0, 0, "a fraction of 2 r_max >= 0");
