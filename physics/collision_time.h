@@ -71,4 +71,22 @@ inline double downward_crossing_time(double d, double v, double a) {
     return upward_crossing_time(-d, -v, -a);
 }
 
+// Shell exit time of a disk in free flight (the neighbour-list design of Smallenburg, "Efficient
+// event-driven simulations of hard spheres", Eur. Phys. J. E 45, 22 (2022)): the disk leaves
+// the circle of radius delta around its shell centre when |d + v t| = delta, d = x - c, i.e.
+//   (v.v) t^2 + 2 (d.v) t + (d.d - delta^2) = 0.
+// The disk is inside (c = d.d - delta^2 <= 0), so the exit is the later root
+//   t = (-b + sqrt(D)) / (v.v) = -c / (b + sqrt(D)),   b = d.v, D = b^2 - (v.v) c,
+// the first form when b <= 0 and the second when b > 0 (each adds non-negative numbers: no
+// cancellation). A disk on or outside the circle by round-off exits now; one at rest never.
+inline double shell_exit_time(double dx, double dy, double vx, double vy, double delta) {
+    const double vv = vx * vx + vy * vy;
+    if (!(vv > 0)) return never;
+    const double b = dx * vx + dy * vy;
+    const double c = dx * dx + dy * dy - delta * delta;
+    if (c >= 0) return 0;
+    const double root = std::sqrt(b * b - vv * c);
+    return b <= 0 ? (root - b) / vv : -c / (b + root);
+}
+
 }  // namespace collide::event_time

@@ -6,12 +6,13 @@ SolverStats event_statistics(const Scene& scene, std::size_t disks, double now, 
                              double kinetic_integral) {
     SolverStats s;
     s.contacts = counts.pair;
-    s.steps = counts.pair + counts.wall + counts.cell;
+    s.steps = counts.pair + counts.wall + counts.cell + counts.shell;
     auto& c = s.counters;
     c["events_pair"] = double(counts.pair);
     c["events_wall"] = double(counts.wall);
     c["events_cell"] = double(counts.cell);
     c["events_stale"] = double(counts.stale);
+    c["events_shell"] = double(counts.shell);
     c["simulated_time"] = now;
     const double t = now, n = double(disks), area = scene.world.width() * scene.world.height();
     if (t > 0 && n > 0) {

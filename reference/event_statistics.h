@@ -17,6 +17,7 @@ struct EventCounts {
     std::int64_t pair = 0, wall = 0, cell = 0, stale = 0;  // events processed (stale: dropped)
     double virial = 0;                   // sum over collisions of d.(J n) (the collision virial)
     const CompensatedSum* wall_impulse = nullptr;  // momentum given to each wall: xmin, xmax, ymin, ymax
+    std::int64_t shell = 0;  // shell exits (the neighbour-list design of `event`)
 };
 
 // steps, contacts and the counters events_*, simulated_time, collision_rate (collisions per disk

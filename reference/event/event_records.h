@@ -26,7 +26,9 @@
 
 namespace collide {
 
-enum class EventKind : std::uint8_t { none, pair, wall, cell };
+// (cell: a cell crossing, in the cell-list design; shell: a shell exit, in the neighbour-list
+// design, neighbour_shells.h.)
+enum class EventKind : std::uint8_t { none, pair, wall, cell, shell };
 
 // A disk's prediction. Walls and cell borders are numbered: 0 = x low, 1 = x high, 2 = y low,
 // 3 = y high. The earliest pair collision is kept apart from the earliest wall or border

@@ -14,6 +14,11 @@
 // (event_queue.h), the allocation on huge pages (event_memory.h), the prefetch pipeline
 // (prefetch_pipeline.h) and the renumbering in cell order (cell_order_renumbering.h). The
 // same method without any of them is `event-plain` (reference/plain_event_solver.cpp).
+//
+// An experimental second design replaces the cell crossings by neighbour lists with shells
+// (neighbour_shells.h; Smallenburg, Eur. Phys. J. E 45, 22 (2022)): [backend.event] shell > 0.
+// Its events are collisions, walls and shell exits. It is off by default: in two dimensions
+// it was measured slower than the cells (docs/event-driven.md, "Neighbour lists with shells").
 #pragma once
 
 #include <algorithm>
@@ -32,6 +37,7 @@
 #include "event_memory.h"
 #include "event_queue.h"
 #include "event_records.h"
+#include "neighbour_shells.h"
 #include "physics/collision_time.h"
 #include "prefetch_pipeline.h"
 
@@ -106,6 +112,16 @@ private:
     // (earliest_border_or_wall under gravity, _straight without.)
     double earliest_border_or_wall(std::uint32_t i, std::uint8_t& which, EventKind& kind) const;
     double earliest_border_or_wall_straight(std::uint32_t i, std::uint8_t& which, EventKind& kind) const;
+    // The neighbour-list design (neighbour_shells.h): on when shell_ > 0.
+    bool shells_on() const { return shell_ > 0; }
+    // The shell width to use (0: the cell-list design) for the option's fraction of 2 r_max.
+    double choose_shell(double fraction, double r_max) const;
+    // Disk i's earliest wall collision or shell exit (time from now; kind none if neither).
+    double earliest_wall_or_exit(std::uint32_t i, std::uint8_t& which, EventKind& kind) const;
+    // Makes disk i's current position its shell centre and lists the disks whose centres lie
+    // within the contact distance plus 2 shell_ (adding i to their lists too if both_ways).
+    void build_shell(std::uint32_t i, bool both_ways);
+    void exit_shell(std::uint32_t i);
 
     void collide_pair(std::uint32_t i, std::uint32_t j);
     void collide_wall(std::uint32_t i, std::uint32_t wall);
@@ -125,7 +141,11 @@ private:
     EventArray<Disk> disks_;  // (huge pages: read at random places, event_memory.h)
     std::vector<double> last_collision_;  // TC model: each disk's last collision (kept if inelastic_)
     bool inelastic_ = false;               // pair or wall restitution below 1
-    CellList cells_;
+    CellList cells_;  // (in the neighbour-list design, a grid of the shell centres)
+    NeighbourShells shells_;
+    double shell_ = 0;        // shell width delta (0: the cell-list design)
+    double shell_slack_ = 0;  // added to the list cutoff against round-off (build_shell)
+    std::vector<std::uint32_t> old_neighbours_;  // (exit_shell's scratch space)
     EventQueue<Slot> queue_;
     CellOrderRenumbering renumbering_;
     PrefetchPipeline prefetch_;
@@ -142,7 +162,7 @@ private:
     std::int64_t events_since_mark_ = 0;
 
     // Statistics.
-    std::int64_t pair_events_ = 0, wall_events_ = 0, cell_events_ = 0, stale_events_ = 0;
+    std::int64_t pair_events_ = 0, wall_events_ = 0, cell_events_ = 0, shell_events_ = 0, stale_events_ = 0;
     std::int64_t tc_elastic_ = 0;
     CompensatedSum virial_;            // sum over collisions of |d| J (pair impulse J)
     CompensatedSum wall_impulse_[4];   // momentum transferred to each wall

@@ -36,6 +36,7 @@
 #include "event_memory.h"
 #include "event_queue.h"
 #include "event_records.h"
+#include "neighbour_shells.h"
 
 namespace collide {
 
@@ -92,6 +93,49 @@ public:
         if (upcoming_[0].disk != none) {
             prefetch_line(&disks[upcoming_[0].disk]);
             prefetch_line(queue.slot_address(upcoming_[0].disk));
+            names_.remember(upcoming_[0].disk);
+        }
+    }
+
+    // The same for the neighbour-list design (neighbour_shells.h), whose predictions read a
+    // disk's list and the records it names instead of cells: the list's address follows from
+    // the disk's number, so the chain is one link shorter.
+    //   stage 0: its calendar slot, record and list are requested;
+    //   stage 1: the records its list names, and its predicted partner's record, slot and list;
+    //   stage 2: the records the partner's list names.
+    // A shell exit reads the cells around its new centre, which lies in the cell of its old
+    // one or next to it: stage 1 requests the list heads of the 3x3 cells around the old
+    // centre, and stage 2 their first records.
+    void advance(const EventArray<EventDisk>& disks, const CellList& cells, const NeighbourShells& shells,
+                 Queue& queue) {
+        const Upcoming& second = upcoming_[1];
+        if (second.disk != none) {
+            const EventPrediction& p = queue.payload(second.disk).prediction;
+            if (p.kind == EventKind::pair) shells.prefetch_neighbours(disks, p.partner);
+            if (p.kind == EventKind::shell) cells.prefetch_records(disks, second.cells, 0);
+        }
+        Upcoming& first = upcoming_[0];
+        if (first.disk != none) {
+            shells.prefetch_neighbours(disks, first.disk);
+            const EventPrediction& p = queue.payload(first.disk).prediction;
+            if (p.kind == EventKind::shell) {
+                first.cells = cells.neighbourhood_block(disks[first.disk].links);
+                cells.prefetch_heads(first.cells);
+            }
+            if (p.kind == EventKind::pair) {
+                prefetch_line(&disks[p.partner]);
+                prefetch_line(queue.slot_address(p.partner));
+                shells.prefetch_list(p.partner);
+                partners_.remember(p.partner);
+            }
+        }
+        upcoming_[2] = upcoming_[1];
+        upcoming_[1] = upcoming_[0];
+        upcoming_[0] = Upcoming{next_to_name(queue), {}};
+        if (upcoming_[0].disk != none) {
+            prefetch_line(&disks[upcoming_[0].disk]);
+            prefetch_line(queue.slot_address(upcoming_[0].disk));
+            shells.prefetch_list(upcoming_[0].disk);
             names_.remember(upcoming_[0].disk);
         }
     }

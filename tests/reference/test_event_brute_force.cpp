@@ -139,14 +139,22 @@ void expect_same_run(const Gas& gas, double t_end, const char* label, const Opti
     // ~1e-12 per run, and the end times below are fixed.)
     const test::StateDifference d = test::state_difference(gas.scene, fast_state, plain_state, false);
     const auto cell_crossings = static_cast<long long>(stats.counters.at("events_cell"));
+    const auto shell_exits = static_cast<long long>(stats.counters.at("events_shell"));
     std::printf("%s: N = %zu, area fraction %.3f, t = %g: %lld pair and %lld wall collisions (%lld cell crossings "
-                "in the event solver); max |dx| = %.2e, max |dv| = %.2e\n",
+                "and %lld shell exits in the event solver); max |dx| = %.2e, max |dv| = %.2e\n",
                 label, gas.initial.size(), area_fraction(gas), t_end, static_cast<long long>(plain_stats.contacts),
-                static_cast<long long>(plain_walls), cell_crossings, d.position, d.velocity);
+                static_cast<long long>(plain_walls), cell_crossings, shell_exits, d.position, d.velocity);
 
-    // The comparison must have exercised what it is meant to: disks moved between cells and,
-    // in a box with walls, hit the walls.
-    EXPECT_GT(cell_crossings, 0);
+    // The comparison must have exercised what it is meant to: disks moved between cells (or,
+    // with neighbour lists, rebuilt them at shell exits, and never crossed a cell) and, in a
+    // box with walls, hit the walls.
+    if (options.contains("shell")) {
+        EXPECT_GT(shell_exits, 0);
+        EXPECT_EQ(cell_crossings, 0);
+    } else {
+        EXPECT_GT(cell_crossings, 0);
+        EXPECT_EQ(shell_exits, 0);
+    }
     if (!gas.scene.periodic()) {
         EXPECT_GT(plain_walls, 0);
     }
@@ -170,6 +178,12 @@ TEST(EventBruteForce, PeriodicEqualDisksMatchPlainSolver) {
     // Cells of any edge >= 2 r_max hold every partner in the 3x3 around a disk: 2.6 (4 x 4
     // cells) finds the same collisions with fewer crossings.
     expect_same_run(gas, 2.5, "periodic, cells of 2.6", {{"cell_size", "2.6"}});
+    // Neighbour lists with shells (reference/event/neighbour_shells.h): the same collisions,
+    // through the periodic sides too, for a thin and a thick shell, and with the lists renamed
+    // at every renumbering.
+    expect_same_run(gas, 2.5, "periodic, shells of 0.1", {{"shell", "0.1"}});
+    expect_same_run(gas, 2.5, "periodic, shells of 0.3, renumbered every 7 events",
+                    {{"shell", "0.3"}, {"renumber_interval", "7"}});
 }
 
 TEST(EventBruteForce, ReflectingBidisperseUnequalMassesMatchPlainSolver) {
@@ -182,6 +196,7 @@ TEST(EventBruteForce, ReflectingBidisperseUnequalMassesMatchPlainSolver) {
     expect_same_run(gas, 1.5, "reflecting, bidisperse");
     expect_same_run(gas, 1.5, "reflecting, bidisperse, renumbered every 7 events", {{"renumber_interval", "7"}});
     expect_same_run(gas, 1.5, "reflecting, bidisperse, cells of 1.7", {{"cell_size", "1.7"}});
+    expect_same_run(gas, 1.5, "reflecting, bidisperse, shells of 0.25", {{"shell", "0.25"}});
 }
 
 // The state (in the scene's order) and the collision count of the event solver at time t.
@@ -313,9 +328,10 @@ TEST(EventPrefetch, LookAheadNamesNearlyEveryEvent) {
 // a miss grazing to within about a per cent of the contact distance could fall between two
 // looks, and a systematic error (a cell never searched, a wrong border) would miss head-on
 // collisions too.
-TEST(EventBruteForce, LongDenseRunNeverOverlapsOrLeavesTheBox) {
+void expect_long_dense_run_without_overlaps(const Options& options) {
     const std::vector<Species> two = {{0.4, 1.0}, {0.5, 2.0}};
-    const Gas gas = lattice_gas(Boundary::reflect, 20, 15, spacing_for(0.6, two), two, 5);
+    Gas gas = lattice_gas(Boundary::reflect, 20, 15, spacing_for(0.6, two), two, 5);
+    for (const auto& [key, value] : options) gas.scene.backend_options["event"][key] = value;
     const Scene& scene = gas.scene;
     const World& w = scene.world;
     EventSolver solver;
@@ -362,6 +378,46 @@ TEST(EventBruteForce, LongDenseRunNeverOverlapsOrLeavesTheBox) {
                 "(negative: the smallest gap)\n",
                 s.size(), area_fraction(gas), static_cast<long long>(solver.stats().contacts),
                 static_cast<long long>(solver.stats().counters.at("events_wall")), looks, t, worst_overlap, worst_wall);
+}
+
+TEST(EventBruteForce, LongDenseRunNeverOverlapsOrLeavesTheBox) { expect_long_dense_run_without_overlaps({}); }
+
+// The same with neighbour lists (a pair left out of the lists, or a shell exit found late,
+// would let two disks pass into each other), with a thin shell: many exits.
+TEST(EventBruteForce, LongDenseRunWithShellsNeverOverlapsOrLeavesTheBox) {
+    expect_long_dense_run_without_overlaps({{"shell", "0.05"}});
+}
+
+// Neighbour lists under renumbering and prefetching: both stay exact with shells too (the
+// lists are renamed and keep their order; the pipeline's shell stages only request memory),
+// so the state is the same to the last bit; and a scene under gravity keeps the cell lists
+// (a parabola's shell exit would be a quartic), as does a periodic box too narrow for the
+// one-shift minimum image.
+TEST(EventBruteForce, ShellsRenumberedAndPrefetchedChangeNoBit) {
+    const std::vector<Species> two = {{0.4, 1.0}, {0.5, 2.0}};
+    const Gas gas = lattice_gas(Boundary::periodic, 15, 14, spacing_for(0.55, two), two, 5);
+    const auto [reference, collisions] = final_state(gas, 40.0, {{"shell", "0.3"}, {"prefetch", "off"}});
+    ASSERT_GT(collisions, 20000);
+    for (const Options& options : {Options{{"shell", "0.3"}, {"renumber_interval", "7"}, {"prefetch", "off"}},
+                                   Options{{"shell", "0.3"}, {"prefetch", "on"}, {"renumber_interval", "13"}}}) {
+        const auto [state, count] = final_state(gas, 40.0, options);
+        EXPECT_EQ(count, collisions);
+        expect_bitwise_equal(state, reference, "shells with options " + options.begin()->second);
+    }
+    const auto neighbours = [](Scene scene, const ParticleState<double>& initial) {
+        scene.backend_options["event"]["shell"] = "0.3";
+        EventSolver solver;
+        solver.load(scene, initial);
+        return solver.provenance().at("event.neighbours");
+    };
+    EXPECT_EQ(neighbours(gas.scene, gas.initial), "shells of width 0.3");
+    Scene falling = gas.scene;
+    falling.world.boundary = Boundary::reflect;
+    falling.physics.gravity_y = -1;
+    EXPECT_EQ(neighbours(falling, gas.initial), "cells");
+    const std::vector<Species> one = {{0.5, 1.0}};
+    const Gas narrow = lattice_gas(Boundary::periodic, 3, 3, spacing_for(0.3, one), one, 5);
+    EXPECT_EQ(neighbours(narrow.scene, narrow.initial), "cells");
 }
 
 }  // namespace
