@@ -521,7 +521,7 @@ def vacf(lab, out):
 # Bernard and Krauth's transition at two sizes: Li et al.'s crystal-shaped periodic boxes (72 and
 # 870 disks; physics/li2022_n72_crystal.toml, li2022_n870_crystal.toml), started from the lattice
 # that fills them, a frame every time unit, |psi6| and beta P d^2 over the run's second half.
-HEXATIC_ETAS = (0.65, 0.67, 0.69, 0.698, 0.70, 0.708, 0.72, 0.74)
+HEXATIC_ETAS = (0.65, 0.67, 0.68, 0.69, 0.698, 0.70, 0.708, 0.71, 0.72, 0.74)
 HEXATIC_BOXES = ((72, "physics/li2022_n72_crystal.toml", 9 * 6.928203230275509, 2000.0),
                  (870, "physics/li2022_n870_crystal.toml", 29 * 25.980762113533157, 200.0))
 
@@ -532,9 +532,41 @@ def hexatic_point(lab, disks, name, area, duration, eta):
     return lab_structure.routes(lab.run(scene, "event", frames=True)["path"], duration / 2)
 
 
+def published_rows(name):
+    return tomllib.loads((ROOT / f"data/references/{name}.toml").read_text())["rows"]
+
+
+# The loop, close up: Li et al.'s ECMC curves at N = 224 (square box) and 870 (crystal box) against
+# Engel et al.'s (2013) at N = 256^2 and 1024^2, flat across the coexistence; the event points of
+# N = 870 (`points`) that fall in the window.
+LOOP_WINDOW = ((0.686, 0.723), (8.15, 9.3))
+
+
+def published_loop(ax, points):
+    li = published_rows("li_2022")
+    for disks, box, style in ((224, "square", "k^:"), (870, "crystal", "ks-")):
+        rows = sorted((r["eta"], r["beta_pressure_d2"]) for r in li if r["id"].startswith(f"N{disks}_{box}"))
+        ax.plot(*zip(*rows), style, mfc="none", ms=5, lw=0.8, label=f"Li et al. 2022, N = {disks}, ECMC")
+    engel = published_rows("engel_2013")
+    for disks, method, style in ((1048576, "MPMC", "C3D-"), (65536, "EDMD", "C2v")):
+        rows = sorted((r["eta"], r["beta_pressure_d2"]) for r in engel if r["disks"] == disks and r["method"] == method)
+        ax.plot(*zip(*rows), style, mfc="none", ms=5, lw=0.8,
+                label=f"Engel et al. 2013, N = {round(np.sqrt(disks))}², {method}")
+    for mixed, style in ((True, "o"), (False, "x")):
+        shown = [(eta, p["beta_pressure"], p["beta_pressure_error"]) for eta, p in points if p["mixed"] == mixed
+                 and LOOP_WINDOW[0][0] <= eta <= LOOP_WINDOW[0][1]]
+        if shown:
+            eta, value, error = zip(*shown)
+            ax.errorbar(eta, value, yerr=error, fmt=style, color="C1", ms=6, capsize=2,
+                        label="event, N = 870" + ("" if mixed else ", not mixed"))
+    ax.set_xlim(*LOOP_WINDOW[0])
+    ax.set_ylim(*LOOP_WINDOW[1])
+    ax.legend(loc="lower left", fontsize=6)
+
+
 def hexatic(lab, out):
-    published = tomllib.loads((ROOT / "data/references/li_2022.toml").read_text())["rows"]
-    fig, (order, pressure) = plt.subplots(1, 2, figsize=(9, 3.6), sharex=True)
+    published = published_rows("li_2022")
+    fig, (order, pressure, loop) = plt.subplots(1, 3, figsize=(13, 3.8))
     for k, (disks, name, area, duration) in enumerate(HEXATIC_BOXES):
         points = [hexatic_point(lab, disks, name, area, duration, eta) for eta in HEXATIC_ETAS]
         for eta, p in zip(HEXATIC_ETAS, points):   # the numbers chapter 2.8 quotes
@@ -558,8 +590,12 @@ def hexatic(lab, out):
     order.set_title("orientational order, from the lattice", fontsize=10)
     order.legend()
     pressure.legend(loc="lower right", fontsize=7)
-    finish(fig, pressure, out, "ch2_hexatic", "area fraction η (dimensionless)", r"$\beta P d^2$ (dimensionless)",
-           "pressure: the loop of a finite box", legend=False)
+    pressure.set_xlabel("area fraction η (dimensionless)")
+    pressure.set_ylabel(r"$\beta P d^2$ (dimensionless)")
+    pressure.set_title("pressure: event against Li et al.", fontsize=10)
+    published_loop(loop, list(zip(HEXATIC_ETAS, points)))   # points: the last box's, N = 870
+    finish(fig, loop, out, "ch2_hexatic", "area fraction η (dimensionless)", r"$\beta P d^2$ (dimensionless)",
+           "the loop of a finite box, flat at large N", legend=False)
 
 
 # --- Chapter 3: many disks, stepped -------------------------------------------------------

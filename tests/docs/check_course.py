@@ -25,6 +25,8 @@
                                         scene only when declared exact), g(d) by the collision
                                         virial and by lines over four windows, |psi6| and the
                                         pressure across the hexatic transition at N = 72 and 870,
+                                        the square boxes' pressures at N = 72, 224 and 870,
+                                        Engel et al.'s table against its data file,
                                         self-diffusion against Enskog's, the velocity
                                         autocorrelation function (Green-Kubo, the 1/t tail), the
                                         equilibration cut from the data, the Metropolis slips'
@@ -808,6 +810,60 @@ def fact_hexatic(collide, scratch):
     return failures
 
 
+FINITE_SIZE_ROW = re.compile(r"\| (72|224|870) \| `(event|ecmc)`, (\d+) seeds × ([\d.]+) \| ([\d., ]+) \| ([\d.]+) ± "
+                             r"([\d.]+) \| ([\d.]+)\((\d+)\) \| ([−-]?[\d.]+) \|")
+
+
+def fact_finite_size(collide, scratch):
+    """Chapter 2.8, finite size: Li et al.'s square boxes at eta = 0.670 (N = 72, 224, 870) on
+    `event` and `ecmc`. Seed 1 of each row is rerun with the row's run.duration; the mean, its
+    standard error from the seeds' spread and z against the published value are recomputed
+    from the seeds the page states."""
+    page = re.sub(r"\s+", " ", (COURSE / "2-many-disks-exactly.md").read_text())
+    rows = FINITE_SIZE_ROW.findall(page)
+    if {(n, b) for n, b, *_ in rows} != {(n, b) for n in ("72", "224", "870") for b in ("event", "ecmc")}:
+        return ["2-many-disks-exactly.md: section 2.8 has no table of the square boxes' pressures at eta = 0.670 "
+                "on event and ecmc for N = 72, 224 and 870"]
+    failures = []
+    for disks, backend, seeds, duration, values, mean, error, li, li_digits, z in rows:
+        said = [float(v) for v in values.split(",")]
+        where = f"2-many-disks-exactly.md: N = {disks} on {backend}"
+        if len(said) != int(seeds):
+            failures.append(f"{where}: {seeds} seeds named, {len(said)} values given")
+            continue
+        out = scratch / f"square{disks}_{backend}.h5"
+        subprocess.run([collide, "run", str(SCENES / f"physics/li2022_n{disks}_square.toml"), "--backend", backend,
+                        "--out", str(out), "--set", "seed=1", "--set", f"run.duration={duration}"],
+                       check=True, capture_output=True)
+        first = float(h5py.File(out, "r")["stats/counters"].attrs["beta_pressure"])
+        if abs(first - said[0]) > 1e-4:
+            failures.append(f"{where}: seed 1 gives {said[0]} on the page, {first:.5f} in the run")
+        li_error = int(li_digits) * 10.0 ** -len(li.split(".")[1])
+        spread = np.std(said, ddof=1) / np.sqrt(len(said))
+        computed = (np.mean(said), spread, (np.mean(said) - float(li)) / np.hypot(spread, li_error))
+        stated = (float(mean), float(error), float(z.replace("−", "-")))
+        if any(abs(s - c) > tol for s, c, tol in zip(stated, computed, (1.5e-4, 1.5e-4, 0.06))):
+            failures.append(f"{where}: mean, error and z {stated} on the page, {tuple(round(c, 5) for c in computed)} "
+                            f"from its seeds")
+    return failures
+
+
+def fact_engel_table():
+    """Chapter 2.8: every row of the table of Engel et al.'s (2013) pressures is a row of
+    data/references/engel_2013.toml (eta, beta P d^2, N, method, standard error), the file the
+    hexatic figure plots."""
+    import tomllib
+    page = re.sub(r"\s+", " ", (COURSE / "2-many-disks-exactly.md").read_text())
+    said = re.findall(r"\| (0\.\d+) \| ([\d.]+) \| (\d+)² \| (MPMC|EDMD) \| ([\d.]+) \|", page)
+    if len(said) < 6:
+        return ["2-many-disks-exactly.md: section 2.8 has no table of Engel et al.'s (2013) pressures"]
+    rows = tomllib.loads((ROOT / "data/references/engel_2013.toml").read_text())["rows"]
+    known = {(r["eta"], r["beta_pressure_d2"], r["disks"], r["method"], r["standard_error"]) for r in rows}
+    return [f"2-many-disks-exactly.md: Engel et al.'s row eta {eta}, {p} at N = {side}², {method} ± {e} is no row of "
+            f"engel_2013.toml" for eta, p, side, method, e in said
+            if (float(eta), float(p), int(side) ** 2, method, float(e)) not in known]
+
+
 def fact_diffusion(collide, scratch):
     """Chapter 2.9: the table of D(tau) / D_E at tau = 1, 2, 4 and 9 for eta = 0.3 and 0.5, and the
     collision rate of each run, recomputed by lab_structure.diffusion from the fluid runs of 2.7."""
@@ -970,10 +1026,11 @@ def check_facts(collide):
                     + fact_replicates(collide, scratch) + fact_enskog_walls(collide, scratch)
                     + fact_fitted_grid(collide, scratch) + fact_sampling(collide, scratch)
                     + fact_declared_exact(collide, scratch) + fact_pair_correlation(collide, scratch)
-                    + fact_hexatic(collide, scratch) + fact_diffusion(collide, scratch)
+                    + fact_hexatic(collide, scratch) + fact_finite_size(collide, scratch) + fact_engel_table()
+                    + fact_diffusion(collide, scratch)
                     + fact_vacf(collide, scratch) + fact_equilibration_cut(collide, scratch)
                     + fact_metropolis_slips(collide, scratch))
-    print("23 statements of the text measured")
+    print("25 statements of the text measured")
     return failures
 
 

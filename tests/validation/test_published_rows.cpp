@@ -25,7 +25,7 @@ std::string references() { return std::string(COLLIDE_SOURCE_DIR) + "/data/refer
 TEST(PublishedFiniteN, LiAndEngelRowsStateTheirNAndBox) {
     const PublishedReference li = load_reference(references(), "li_2022");
     EXPECT_EQ(li.quantity, "beta_pressure_d2");
-    EXPECT_EQ(li.finite_n.size(), 15u);
+    EXPECT_EQ(li.finite_n.size(), 26u);
     const FiniteNPoint& p = li.finite_n_point("N72_crystal_0.670");
     EXPECT_EQ(p.disks, 72);
     EXPECT_DOUBLE_EQ(p.beta_pressure_d2, 7.82314);
@@ -33,6 +33,11 @@ TEST(PublishedFiniteN, LiAndEngelRowsStateTheirNAndBox) {
     EXPECT_NEAR(p.aspect_ratio, 8 * std::sqrt(3.0) / 2 / 9, 1e-15);
     EXPECT_EQ(p.boundary, "periodic");
     EXPECT_EQ(li.finite_n_point("N870_crystal_0.670").beta_pressure_d2, 7.986735);
+    const FiniteNPoint& square224 = li.finite_n_point("N224_square_0.670");   // ThisWork.csv, N = 224, (1 : 1)
+    EXPECT_EQ(square224.disks, 224);
+    EXPECT_DOUBLE_EQ(square224.beta_pressure_d2, 7.979479);
+    EXPECT_DOUBLE_EQ(square224.standard_error, 0.000058);
+    EXPECT_EQ(square224.aspect_ratio, 1.0);
     EXPECT_FALSE(li.text("provenance").find("ThisWork.csv") == std::string::npos);
     try {
         li.finite_n_point("N72_crystal_0.671");
@@ -42,7 +47,7 @@ TEST(PublishedFiniteN, LiAndEngelRowsStateTheirNAndBox) {
         EXPECT_NE(std::string(e.what()).find("N72_crystal_0.670"), std::string::npos) << "lists the ids: " << e.what();
     }
     const PublishedReference engel = load_reference(references(), "engel_2013");
-    ASSERT_EQ(engel.finite_n.size(), 4u);
+    ASSERT_EQ(engel.finite_n.size(), 13u);
     EXPECT_EQ(engel.finite_n_point("N1048576_square_0.698_MPMC").disks, 1024 * 1024);
     EXPECT_EQ(engel.finite_n_point("N65536_square_0.698_EDMD").method, "EDMD");
 }
