@@ -10,10 +10,12 @@
     python3 docs/course/lab.py settings RUN.h5...   the backend's recorded settings (provenance)
     python3 docs/course/lab.py checks SUMMARY.json SCENE BACKEND   one case group's checks
     python3 docs/course/lab.py sweep SUMMARY.json SCENE BACKEND    its error at each dt
-    python3 docs/course/lab.py structure RUN.h5 [--from T]   g(d) with its batch-means error, Z by
+    python3 docs/course/lab.py structure RUN.h5 [--from T|data]   g(d) with its batch-means error, Z by
                                         the contact route and by the collision virial, and the
-                                        mean |psi6|, from the frames at t >= T (collide's module:
-                                        collide.pair_correlation, collide.psi6; needs --frames)
+                                        mean |psi6|, from the frames at t >= T, or (data) from
+                                        the cut the run's |psi6| series chooses (chapter 4.4)
+                                        (collide's module: collide.pair_correlation,
+                                        collide.psi6; needs --frames)
     python3 docs/course/lab.py equilibration SCENE.toml [--duration T]   runs the scene on
                                         `event` through collide's module and prints its beta P d^2
                                         in 1000 windows cut from the data: each candidate start,
@@ -112,13 +114,24 @@ def sweep(summary, scene, backend):
                       f"({p['replicates']} replicates)")
 
 
+def start_time(text):
+    """--from: a time, or "data" for the cut chosen from the run's own series."""
+    if text == "data":
+        return text
+    try:
+        return float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"--from {text}: a time or 'data'") from None
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("what", choices=["velocities", "counters", "energy", "error", "same", "settings",
                                          "checks", "sweep", "check", "structure", "equilibration"])
     parser.add_argument("files", nargs="+")
-    parser.add_argument("--from", dest="start", type=float, default=0.0,
-                        help="structure: use the frames from this time on (after the melt)")
+    parser.add_argument("--from", dest="start", type=start_time, default=0.0,
+                        help="structure: use the frames from this time on (after the melt), or from "
+                             "the cut the run's |psi6| series chooses: --from data (chapter 4.4)")
     parser.add_argument("--duration", type=float, default=None,
                         help="equilibration: run this long instead of the scene's duration")
     args = parser.parse_args()

@@ -69,8 +69,21 @@ def batch_contact(c, scene, frames, diameter):
     return float(np.mean(values)), float(np.std(values, ddof=1) / np.sqrt(BLOCKS))
 
 
+def psi6_per_frame(c, scene, frames, diameter):
+    """|psi6| of each frame (neighbours within PSI6_CUTOFF_DIAMETERS diameters)."""
+    return np.array([abs(c.psi6(scene, x, c.PSI6_CUTOFF_DIAMETERS * diameter)) for x in frames])
+
+
+def cut_from_data(c, times, psi6):
+    """The time where the run's |psi6| series is stationary, chosen from the series itself by
+    collide.stationary_mean (the start that leaves the most effectively independent samples,
+    Chodera 2016; chapter 4.4, lab_equilibration.py)."""
+    return float(times[c.stationary_mean(psi6)["equilibration_cut"]])
+
+
 def routes(run, start):
-    """The structure of a run of equal disks in a periodic box, from its frames at t >= start:
+    """The structure of a run of equal disks in a periodic box, from its frames at t >= start
+    (start "data": from the cut its |psi6| series chooses, cut_from_data):
     a dict of n, eta, frames, contact (g(d)) and contact_error, z_contact (1 + 2 eta g(d)) and
     its error, z_virial and its error and beta_pressure and its error (the run's collision
     virial, where it has one), mixed (the run's psi6 mixing check) and psi6 (the mean of |psi6|
@@ -85,17 +98,22 @@ def routes(run, start):
         counters = dict(f["stats/counters"].attrs)
     if not np.all(radius == radius[0]):
         sys.exit(f"{run}: g(r) and Z = 1 + 2 eta g(d) are stated for equal disks")
-    frames = frames[times >= start]
+    n, d = len(radius), 2 * float(radius[0])
+    psi6 = psi6_per_frame(c, scene, frames, d) if start == "data" else None
+    if start == "data":
+        start = cut_from_data(c, times, psi6)
+    kept = times >= start
+    frames = frames[kept]
+    psi6 = psi6[kept] if psi6 is not None else psi6_per_frame(c, scene, frames, d)
     if len(frames) < BLOCKS:
         sys.exit(f"{run}: {len(frames)} frames at t >= {start:g}; at least {BLOCKS} wanted")
-    n, d = len(radius), 2 * float(radius[0])
     x0, y0, x1, y1 = scene.box
     area = (x1 - x0) * (y1 - y0)
     eta = n * np.pi * d * d / (4 * area)
     contact, error = batch_contact(c, scene, frames, d)
     out = {"n": n, "eta": eta, "frames": len(frames), "contact": contact, "contact_error": error,
            "z_contact": 1 + 2 * eta * contact, "z_contact_error": 2 * eta * error,
-           "psi6": float(np.mean([abs(c.psi6(scene, x, c.PSI6_CUTOFF_DIAMETERS * d)) for x in frames]))}
+           "start": start, "psi6": float(np.mean(psi6))}
     if "beta_pressure" in counters:
         scale = area / (n * d * d)   # Z = beta P / rho = beta P d^2 * A / (N d^2)
         out["z_virial"] = float(counters["beta_pressure"]) * scale
@@ -110,7 +128,8 @@ def routes(run, start):
 def structure(run, start):
     """Prints routes(run, start)."""
     r = routes(run, start)
-    print(f"{r['n']} disks, eta {r['eta']:.4f}, {r['frames']} frames from t = {start:g}")
+    chosen = " (the cut from the data: where |psi6| per frame is stationary, chapter 4.4)" if start == "data" else ""
+    print(f"{r['n']} disks, eta {r['eta']:.4f}, {r['frames']} frames from t = {r['start']:g}{chosen}")
     print(f"g(d) {r['contact']:.3f} +- {r['contact_error']:.3f} (a line through {CONTACT_BINS} bins over "
           f"[d, {1 + CONTACT_WIDTH:g} d])")
     print(f"Z contact 1 + 2 eta g(d) = {r['z_contact']:.3f} +- {r['z_contact_error']:.3f}")
