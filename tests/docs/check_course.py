@@ -30,7 +30,8 @@
                                         self-diffusion against Enskog's, the velocity
                                         autocorrelation function (Green-Kubo, the 1/t tail), the
                                         equilibration cut from the data, the Metropolis slips'
-                                        wall pressures, and wording found false
+                                        wall pressures, chapter 2's fixed cuts against the cut
+                                        from the data, and wording found false
 
 An exercise is a "### Exercise" section of a chapter (docs/course/[1-9]-*.md): its first ```sh
 block is the command a student runs, with `collide` meaning the built program, in a scratch
@@ -989,6 +990,91 @@ def stationary_series_cut(collide, scratch, page):
     return []
 
 
+def structure_from_data(collide, run):
+    """`lab.py structure RUN --from data`, as a student runs it: (the cut it chose, the frames from
+    there, g(d), its error, |psi6|), or the failure when it prints no cut."""
+    env = dict(os.environ)
+    env["PATH"] = f"{pathlib.Path(collide).resolve().parent}{os.pathsep}{env['PATH']}"
+    done = subprocess.run(["/usr/bin/python3", str(COURSE / "lab.py"), "structure", str(run), "--from", "data"],
+                          capture_output=True, text=True, env=env)
+    got = re.search(r"(\d+) frames from t = ([\d.]+) \(the cut from the data.*?g\(d\) ([\d.]+) \+- ([\d.]+).*?"
+                    r"\|psi6\| ([\d.]+)", done.stdout, re.S)
+    if not got:
+        return f"lab.py structure {run.name} --from data printed no cut:\n{done.stdout}{done.stderr}"
+    frames, cut, contact, error, psi6 = got.groups()
+    return float(cut), int(frames), float(contact), float(error), float(psi6)
+
+
+def periodic_gas_cut(collide, scratch, page):
+    """Chapter 2.4: the cut `lab.py equilibration` takes on box_gas_1000 in a periodic box over
+    60 time units, at or before the fixed cut of 10 the collision rates leave out."""
+    said = re.search(r"the cut the data choose \(4\.4; `lab\.py equilibration` on box_gas_1000 with `boundary = "
+                     r"\"periodic\"` and `duration = 60\.0`\) is t = ([\d.]+), so the fixed cut at 10 is after it", page)
+    if not said:
+        return ["2-many-disks-exactly.md: section 2.4 does not state the cut from the data of box_gas_1000"]
+    scene = scratch / "box_gas_periodic.toml"
+    scene.write_text(set_key(set_key((SCENES / "box_gas_1000.toml").read_text(), "boundary", '"periodic"'),
+                             "duration", "60.0"))
+    sys.path.insert(0, str(COURSE))
+    import lab_structure
+    lab_structure.collide_module(collide)   # the module beside this collide, for lab_equilibration
+    import lab_equilibration
+    r = lab_equilibration.cuts(scene)
+    cut = r["chosen"]["equilibration_cut"] * r["window"]
+    if cut > 10 or abs(float(said.group(1)) - cut) > 1e-9:
+        return [f"2-many-disks-exactly.md: box_gas_1000 (periodic, 60 time units): the page says the data cut at "
+                f"t = {said.group(1)}, lab.py equilibration at t = {cut:g}"]
+    return []
+
+
+def fact_fixed_cuts(collide, scratch):
+    """Chapter 2, the fixed cuts of `lab.py structure` against the cut from the data (4.4): exercise
+    2.8's fluid at eta = 0.5 (the cut the solution and the g(r) figure's caption state, at or
+    before t = 20, and what the frames from it give) and exercise 2.9's crystal-shaped boxes at
+    eta = 0.65 (the cuts at N = 72 and 870, before the second half, and |psi6| from them), and
+    2.4's collision rates after t = 10 (periodic_gas_cut)."""
+    page = re.sub(r"\s+", " ", (COURSE / "2-many-disks-exactly.md").read_text())
+    caption = re.search(r"at η = 0\.5 the cut from the data, `lab\.py structure fluid\.h5 --from data` on exercise "
+                        r"2\.8's run, is t = ([\d.]+), so t = 20 is after it", page)
+    fluid = re.search(r"With `--from data` the run's \|Ψ₆\| series chooses t = ([\d.]+) \(4\.4\): .*? from t = ([\d.]+) "
+                      r"its (\d+) frames give g\(d\) ([\d.]+) ± ([\d.]+)", page)
+    boxes = re.search(r"The second half starts after the cut the data choose \(`--from data`, 4\.4\): t = ([\d.]+) at "
+                      r"N = 72, .*? and t = ([\d.]+) at N = 870; from there \|Ψ₆\| is ([\d.]+) and ([\d.]+)", page)
+    if not (caption and fluid and boxes):
+        return ["2-many-disks-exactly.md: the cut from the data is not stated beside the fixed cuts of the g(r) "
+                "figure, exercise 2.8 and exercise 2.9"]
+    fluid_cut = structure_from_data(collide, fluid_run(collide, scratch / "fluid_cut.h5", "0.5", "0.25"))
+    if isinstance(fluid_cut, str):
+        return [fluid_cut]
+    cut, frames, contact, error, _ = fluid_cut
+    failures = []
+    said = [float(caption.group(1)), float(fluid.group(1)), float(fluid.group(2)), int(fluid.group(3)),
+            float(fluid.group(4)), float(fluid.group(5))]
+    if cut > 20 or any(abs(v - m) > 0.0006 for v, m in zip(said, [cut, cut, cut, frames, contact, error])):
+        failures.append(f"2-many-disks-exactly.md: the fluid at eta = 0.5 from the cut of the data: the page says "
+                        f"{said}, lab.py structure --from data {[cut, cut, cut, frames, contact, error]}")
+    measured = []
+    for disks, duration in ((72, 2000), (870, 200)):
+        out = scratch / f"n{disks}_cut.h5"
+        subprocess.run([collide, "run", str(SCENES / f"physics/li2022_n{disks}_crystal.toml"), "--backend", "event",
+                        "--frames", "--out", str(out), "--set", "particles.0.radius=0.42329881999845265",
+                        "--set", f"run.duration={duration}"], check=True, capture_output=True)
+        printed = structure_from_data(collide, out)
+        if isinstance(printed, str):
+            return failures + [printed]
+        cut, *_, psi6 = printed
+        if cut >= duration / 2:
+            failures.append(f"2-many-disks-exactly.md: exercise 2.9 at N = {disks}: the data cut at t = {cut:g}, "
+                            f"not before the second half")
+        measured.append((cut, psi6))
+    said = [float(v) for v in boxes.groups()]
+    wanted = [measured[0][0], measured[1][0], measured[0][1], measured[1][1]]
+    if any(abs(v - m) > 0.0006 for v, m in zip(said, wanted)):
+        failures.append(f"2-many-disks-exactly.md: exercise 2.9's cuts from the data and |psi6| from them: the page "
+                        f"says {said}, lab.py structure --from data {wanted}")
+    return failures + periodic_gas_cut(collide, scratch, page)
+
+
 def fact_metropolis_slips(collide, scratch):
     """Exercise 4.6: the wall pressure and z the checker finds for the two slips that sample legal
     configurations with the wrong measure (redrawing until legal, a window clipped to the box)."""
@@ -1029,8 +1115,8 @@ def check_facts(collide):
                     + fact_hexatic(collide, scratch) + fact_finite_size(collide, scratch) + fact_engel_table()
                     + fact_diffusion(collide, scratch)
                     + fact_vacf(collide, scratch) + fact_equilibration_cut(collide, scratch)
-                    + fact_metropolis_slips(collide, scratch))
-    print("25 statements of the text measured")
+                    + fact_metropolis_slips(collide, scratch) + fact_fixed_cuts(collide, scratch))
+    print("26 statements of the text measured")
     return failures
 
 
