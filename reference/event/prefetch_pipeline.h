@@ -87,14 +87,7 @@ public:
                 partners_.remember(p.partner);
             }
         }
-        upcoming_[2] = upcoming_[1];
-        upcoming_[1] = upcoming_[0];
-        upcoming_[0] = Upcoming{next_to_name(queue), {}};
-        if (upcoming_[0].disk != none) {
-            prefetch_line(&disks[upcoming_[0].disk]);
-            prefetch_line(queue.slot_address(upcoming_[0].disk));
-            names_.remember(upcoming_[0].disk);
-        }
+        name_next(disks, queue, [](std::uint32_t) {});
     }
 
     // The same for the neighbour-list design (neighbour_shells.h), whose predictions read a
@@ -129,15 +122,7 @@ public:
                 partners_.remember(p.partner);
             }
         }
-        upcoming_[2] = upcoming_[1];
-        upcoming_[1] = upcoming_[0];
-        upcoming_[0] = Upcoming{next_to_name(queue), {}};
-        if (upcoming_[0].disk != none) {
-            prefetch_line(&disks[upcoming_[0].disk]);
-            prefetch_line(queue.slot_address(upcoming_[0].disk));
-            shells.prefetch_list(upcoming_[0].disk);
-            names_.remember(upcoming_[0].disk);
-        }
+        name_next(disks, queue, [&](std::uint32_t disk) { shells.prefetch_list(disk); });
     }
 
     // The statistic events_named_ahead: events (of all four kinds, stale ones included) whose
@@ -158,6 +143,21 @@ public:
     }
 
 private:
+    // Stage 0 of both designs: the stages move on by one event, and the next event not yet
+    // named enters: its record and calendar slot are requested, and whatever else its design
+    // reads first (`also_request`: nothing for the cells, its list for the shells).
+    template <typename AlsoRequest>
+    void name_next(const EventArray<EventDisk>& disks, Queue& queue, AlsoRequest&& also_request) {
+        upcoming_[2] = upcoming_[1];
+        upcoming_[1] = upcoming_[0];
+        upcoming_[0] = Upcoming{next_to_name(queue), {}};
+        if (upcoming_[0].disk == none) return;
+        prefetch_line(&disks[upcoming_[0].disk]);
+        prefetch_line(queue.slot_address(upcoming_[0].disk));
+        also_request(upcoming_[0].disk);
+        names_.remember(upcoming_[0].disk);
+    }
+
     // The cells whose lists the coming event of disk k will read: for a cell crossing the cell
     // it enters and the three beyond (crossing_block), else the 3x3 block around its cell.
     static CellList::Block cells_to_visit(const EventArray<EventDisk>& disks, const CellList& cells,
