@@ -70,6 +70,9 @@ now() { date +%s.%N; }
 since() { awk -v a="$1" -v b="$(now)" 'BEGIN { printf "%.1f", b - a }'; }
 # Seconds left before a deadline (at least 1, so that `timeout` always gets a valid limit).
 left() { awk -v d="$1" -v n="$(now)" 'BEGIN { s = int(d - n); print (s < 1 ? 1 : s) }'; }
+# The time SECONDS from now, to the millisecond. (awk's plain `print` of a sum writes 6
+# significant digits, so an epoch time would come out rounded by up to 5000 s.)
+deadline_in() { awk -v n="$(now)" -v l="$1" 'BEGIN { printf "%.3f", n + l }'; }
 
 # ---------------------------------------------------------------------------------------------
 # Packing (on the build machine)
@@ -180,7 +183,7 @@ pick_device() {
 # Step 3: the OpenCL test programs, run directly (the carried bundle has no CTest files).
 run_tests() {
     local deadline program name passed=0 failed=() code
-    deadline=$(awk -v n="$(now)" -v l="$limit_tests" 'BEGIN { print n + l }')
+    deadline=$(deadline_in "$limit_tests")
     mkdir -p "$out/tests"
     for program in "$bundle"/tests/test_opencl_*; do
         name=${program##*/}
@@ -282,7 +285,7 @@ diagnose() {  # SCENE
 # Step 4: cpu against opencl, bit for bit, on each scene of the library.
 compare_bits() {
     local path name result equal=0 differ=() left_out=()
-    bits_deadline=$(awk -v n="$(now)" -v l="$limit_bits" 'BEGIN { print n + l }')
+    bits_deadline=$(deadline_in "$limit_bits")
     mkdir -p "$out/bits" "$work"
     for name in "${scenes[@]}"; do
         path="$bundle/share/collide/data/scenes/$name.toml"

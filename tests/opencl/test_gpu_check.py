@@ -15,6 +15,7 @@ on a GPU").
 Both pack their own bundle into a temporary folder, as a person does on the build machine."""
 import os
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -100,6 +101,27 @@ def check_run(tmp):
         expect(os.path.isfile(os.path.join(out, kept)), "the results lack " + kept, shown)
     expect(not os.path.exists(os.path.join(out, "work")), "the scratch folder was left in the results")
     check_comparison(tmp, bundle)
+    check_deadlines_at_any_hour(tmp, bundle, programs)
+
+
+def check_deadlines_at_any_hour(tmp, bundle, programs):
+    """The steps' deadlines are epoch times: at a clock reading that 6 significant digits would
+    round down by more than a step's limit (awk's plain print), every test program must still get
+    its full time. The clock is frozen there by a `date` found first on PATH."""
+    shim = os.path.join(tmp, "frozen-clock")
+    os.makedirs(shim)
+    real_date = shutil.which("date")
+    with open(os.path.join(shim, "date"), "w") as f:
+        f.write('#!/bin/bash\nif [[ "$1" == "+%s.%N" ]]; then echo 1795864303.500000000; '
+                f'else exec {real_date} "$@"; fi\n')
+    os.chmod(os.path.join(shim, "date"), 0o755)
+    out = os.path.join(tmp, "results-frozen-clock")
+    checked = run(os.path.join(bundle, "gpu_check.sh"), "--device", pocl, "--sizes", "1000", "--steps", "10",
+                  "--scenes", "head_on_equal", "--out", out, env={"PATH": shim + os.pathsep + os.environ["PATH"]})
+    summary = summary_of(out)
+    expect(f"tests: {programs} passed, 0 failed" in summary,
+           "with the clock at 1795864303.5 s the test programs did not get their time (a deadline rounded?)",
+           summary + "\n--- check output\n" + checked.text)
 
 
 def check_comparison(tmp, bundle):
