@@ -52,13 +52,16 @@ void run_features_suite(const BenchArgs& args, BenchReport& report) {
     const int threads = args.threads.empty() ? 0 : args.threads.front();
     const BackendInfo& cpu = find_backend("cpu");
     const double no_limit = 1e9;
-    auto run = [&](const std::string& variant, const GasCase& gas, const std::string& specialise, int sort_interval) {
+    const double default_skin = cpu::CpuSolver::kDefaultSkin;
+    auto run = [&](const std::string& variant, const GasCase& gas, const std::string& specialise, int sort_interval,
+                   double skin = cpu::CpuSolver::kDefaultSkin) {
         BackendOptions options;
         options.threads = threads;
-        options.extra = {{"specialise", specialise}, {"sort_interval", std::to_string(sort_interval)}};
+        options.extra = {{"specialise", specialise}, {"sort_interval", std::to_string(sort_interval)},
+                         {"skin", std::to_string(skin)}};
         const FrameTiming t = measure_frames(cpu, options, gas, args.steps, no_limit);
         Row row{{"backend", "cpu"}, {"feature", variant}, {"specialise", specialise},
-                {"sort_interval", std::int64_t(sort_interval)}, {"steps", std::int64_t(args.steps)},
+                {"sort_interval", std::int64_t(sort_interval)}, {"skin", skin}, {"steps", std::int64_t(args.steps)},
                 {"rule", to_string(gas.scene.run.order)}};
         add_timing(row, t, n);
         report.add(row);
@@ -72,7 +75,10 @@ void run_features_suite(const BenchArgs& args, BenchReport& report) {
     }
     const GasCase plain = bench_gas(n);
     for (int k : {0, 4, 16}) run("none", plain, "on", k);
+    for (double skin : {0.0, 0.1, 0.25, 0.5, 0.75, 1.0})
+        if (skin != default_skin) run("none", plain, "on", default_sort, skin);
     report.note("sort_interval K = particles moved into cell order at every K-th grid build, 0 = never; the default is " + std::to_string(default_sort));
+    report.note("skin s = the pair list's reach r_i + r_j + s * 2 r_max (0: no list, the grid and every disk's 3x3 neighbourhood at every step); the default is " + std::to_string(default_skin));
 }
 
 }  // namespace collide::bench

@@ -17,10 +17,18 @@ FrameTiming measure_frames(const BackendInfo& backend, const BackendOptions& opt
         return t;
     }
     const SolverStats before = solver->stats();
+    const double cpu_start = cpu_seconds();
     t.seconds = time_seconds([&] { solver->advance_to(dt * double(1 + frames)); });
+    t.cpu_seconds = cpu_seconds() - cpu_start;
     const SolverStats after = solver->stats();
+    t.counters = after.counters;
+    for (const auto& [name, value] : after.counters) {
+        const auto b = before.counters.find(name);
+        t.counters_gained[name] = value - (b == before.counters.end() ? 0.0 : b->second);
+    }
     const double n = double(gas.initial.size());
     t.particle_steps_per_second = n * frames / t.seconds;
+    t.cpu_ns_per_particle_step = 1e9 * t.cpu_seconds / (n * frames);
     for (const auto& [phase, seconds] : after.phase_seconds) {
         const auto b = before.phase_seconds.find(phase);
         t.phase_ms_per_frame[phase] = 1e3 * (seconds - (b == before.phase_seconds.end() ? 0.0 : b->second)) / frames;
@@ -33,6 +41,7 @@ void add_timing(Row& row, const FrameTiming& t, std::int64_t n) {
     row["seconds"] = t.seconds;
     row["particle_steps_per_s"] = t.particle_steps_per_second;
     row["ns_per_particle_step"] = 1e9 / t.particle_steps_per_second;
+    row["cpu_ns_per_particle_step"] = t.cpu_ns_per_particle_step;
     row["n"] = n;
     for (const auto& [phase, ms] : t.phase_ms_per_frame) row["ms_per_frame_" + phase] = ms;
 }

@@ -270,7 +270,7 @@ float_suspects() {
 # Why `opencl` and `cpu` differ on SCENE: two reruns separate the order of the sums from the
 # arithmetic of the device.
 diagnose() {  # SCENE
-    if run_frames cpu-unsorted "$1" cpu --set backend.cpu.sort_interval=0 2> /dev/null &&
+    if run_frames cpu-unsorted "$1" cpu --set backend.cpu.skin=0 --set backend.cpu.sort_interval=0 2> /dev/null &&
        [[ $(compare cpu-unsorted opencl) == equal* ]]; then
         echo "the order of the sums: cpu moves the disks into cell order (backend.cpu.sort_interval, default 1) and then adds a disk's contacts in slot order, not in scene order as opencl does; with sort_interval = 0 the bits are equal"
     elif ! run_frames step "$1" step 2> /dev/null || ! run_frames opencl-double "$1" opencl --real double --cl-device "$device" 2> /dev/null; then
@@ -282,7 +282,9 @@ diagnose() {  # SCENE
     fi
 }
 
-# Step 4: cpu against opencl, bit for bit, on each scene of the library.
+# Step 4: cpu against opencl, bit for bit, on each scene of the library. cpu runs its cell path
+# (backend.cpu.skin = 0), the search the kernels mirror: its default pair list adds a disk's
+# contacts in the list's order, which parts the bits where a disk has three contacts at once.
 compare_bits() {
     local path name result equal=0 differ=() left_out=()
     bits_deadline=$(deadline_in "$limit_bits")
@@ -291,7 +293,7 @@ compare_bits() {
         path="$bundle/share/collide/data/scenes/$name.toml"
         [[ -f "$path" ]] || { echo "bits $name: no such scene in the bundle"; left_out+=("$name (no such scene)"); continue; }
         if [[ $(left "$bits_deadline") -le 1 ]]; then left_out+=("$name (out of time)"); status=1; continue; fi
-        if ! run_frames cpu "$path" cpu 2> "$work/error" ||
+        if ! run_frames cpu "$path" cpu --set backend.cpu.skin=0 2> "$work/error" ||
            ! run_frames opencl "$path" opencl --cl-device "$device" 2> "$work/error"; then
             left_out+=("$name ($(cat "$work/error"))"); echo "bits $name: left out: $(cat "$work/error")"; continue
         fi

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <climits>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -28,6 +29,7 @@ void CpuSolver::read_settings(const Scene* scene) {
     specialise_ = settings.get_choice("specialise", {"on", "off"}, "on") == "on";
     sort_interval_ = int(settings.get_int("sort_interval", kDefaultSortInterval, 0, INT_MAX,
                                           "an integer >= 0 (0: never reorder)"));
+    skin_ = settings.get_double("skin", kDefaultSkin, 0.0, "a number >= 0 (0: the cell path, no pair list)");
     settings.refuse_unknown();
 }
 
@@ -60,7 +62,10 @@ void CpuSolver::load(const Scene& scene, const ParticleState<double>& initial) {
                           float(w.xmin), float(w.ymin), float(w.xmax), float(w.ymax),
                           float(w.width()), float(w.height())};
     const float r_max = n > 0 ? *std::max_element(state_.radius.begin(), state_.radius.end()) : 0.5f;
-    grid_.configure(w, 2.0 * double(r_max));
+    // With a pair list the grid only builds the list: its cells must hold the reach.
+    const double diameter = 2.0 * double(r_max);
+    grid_.configure(w, diameter * (1.0 + skin_));
+    pairs_.reset(float(skin_ * diameter));
 }
 
 void CpuSolver::advance_to(double t) {
@@ -76,9 +81,9 @@ void CpuSolver::step() {
 }
 
 void CpuSolver::step_collide_first(float dt) {
-    build_grid();
-    collide();
+    contact_phase();
     correct_and_integrate(dt);
+    after_update();
 }
 
 // The integrate-first sub-step in six steps: (1) field accelerations, (2) velocity with damping,
@@ -86,9 +91,25 @@ void CpuSolver::step_collide_first(float dt) {
 // (6) corrections and world bounds.
 void CpuSolver::substep_integrate_first(float h) {
     integrate(h);
-    build_grid();
-    collide();
+    contact_phase();
     correct();
+    after_update();
+}
+
+// Phases 4 and 5: with a skin, the pair list (rebuilt with the grid only when stale) and the
+// contacts on it; without, the grid and the cell path's one-sided pass at every step.
+void CpuSolver::contact_phase() {
+    if (skin_ > 0) {
+        refresh_pairs();
+        collide_pairs();
+    } else {
+        build_grid();
+        collide();
+    }
+}
+
+void CpuSolver::after_update() {
+    if (skin_ > 0) clear_pair_contacts();
 }
 
 void CpuSolver::integrate(float h) {
@@ -162,6 +183,38 @@ void CpuSolver::collide() {
     }, features_.friction, features_.stones, features_.uniform_radius, features_.periodic, in_cell_order_);
 }
 
+void CpuSolver::refresh_pairs() {
+    bool stale = false;
+    {
+        PhaseTimer timer(stats_, phase::grid);
+        dispatch([&]<bool Periodic>() { stale = pairs_.is_stale<Periodic>(state_, params_, threads_); },
+                 features_.periodic);
+    }
+    if (!stale) return;
+    build_grid();
+    PhaseTimer timer(stats_, phase::grid);
+    dispatch([&]<bool UniformRadius, bool Periodic, bool InCellOrder>() {
+        pairs_.build<UniformRadius, Periodic, InCellOrder>(state_, grid_, params_, threads_);
+    }, features_.uniform_radius, features_.periodic, in_cell_order_);
+    stats_.counters["pair_list_builds"] = double(pairs_.builds());
+    stats_.counters["pair_list_pairs"] = double(pairs_.size());
+}
+
+void CpuSolver::collide_pairs() {
+    PhaseTimer timer(stats_, phase::collide);
+    dispatch([&]<bool Friction, bool Stones, bool UniformRadius, bool Periodic>() {
+        pairs_.find_contacts<UniformRadius, Periodic>(state_, params_, threads_);
+        const auto& found = pairs_.contacts();
+        stats_.contacts += apply_pair_contacts<Friction, Stones, UniformRadius, Periodic>(state_, params_, found.data(),
+                                                                                         found.size(), corrections());
+    }, features_.friction, features_.stones, features_.uniform_radius, features_.periodic);
+}
+
+void CpuSolver::clear_pair_contacts() {
+    PhaseTimer timer(stats_, phase::collide);
+    clear_pair_corrections(pairs_.contacts().data(), pairs_.contacts().size(), corrections());
+}
+
 void CpuSolver::correct() {
     PhaseTimer timer(stats_, phase::correct);
     dispatch([&]<bool Stones, bool Periodic>() {
@@ -196,6 +249,14 @@ void CpuSolver::read_state(ParticleState<double>& out) const {
     }
 }
 
+namespace {
+std::string shortest(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.17g", v);
+    return text;
+}
+}  // namespace
+
 std::map<std::string, std::string> CpuSolver::provenance() const {
     auto on_off = [](bool b) { return std::string(b ? "on" : "off"); };
     return {
@@ -203,6 +264,7 @@ std::map<std::string, std::string> CpuSolver::provenance() const {
         {"cpu.openmp", std::to_string(_OPENMP)},
         {"cpu.specialise", on_off(specialise_)},
         {"cpu.sort_interval", std::to_string(sort_interval_)},
+        {"cpu.skin", shortest(skin_)},
         {"cpu.features", "gravity=" + on_off(features_.gravity) + " damping=" + on_off(features_.damping) +
                              " friction=" + on_off(features_.friction) + " stones=" + on_off(features_.stones) +
                              " uniform_radius=" + on_off(features_.uniform_radius) +

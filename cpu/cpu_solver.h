@@ -15,6 +15,7 @@
 #include "cpu_cell_list.h"
 #include "core/solver.h"
 #include "feature_set.h"
+#include "pair_list.h"
 #include "phase_kernels.h"
 
 namespace collide::cpu {
@@ -27,7 +28,11 @@ public:
     //                  the generic loop with every feature compiled in (for the benchmark);
     //   "sort_interval" = K >= 0: move particles into cell order at every K-th grid build
     //                  (one build per sub-step; 0: never, the contact pass then reads
-    //                  through the cell list's index).
+    //                  through the cell list's index);
+    //   "skin" = s >= 0: the contact search on a Verlet list of pairs within reach
+    //                  r_i + r_j + s * 2 r_max, each pair once, rebuilt (with the grid) when
+    //                  a disk has moved far enough (pair_list.h); 0: the cell path, a grid
+    //                  rebuilt and every disk's 3x3 neighbourhood searched at every step.
     explicit CpuSolver(const BackendOptions& options);
 
     std::string name() const override { return "cpu"; }
@@ -44,6 +49,9 @@ public:
 
     // Default of "sort_interval": chosen by the `features` benchmark (docs/cpu-backend.md).
     static constexpr int kDefaultSortInterval = 1;
+    // Default of "skin", in units of the largest diameter: chosen by `collide bench features`
+    // (docs/cpu-backend.md).
+    static constexpr double kDefaultSkin = 0.5;
 
 private:
     void read_settings(const Scene* scene);
@@ -53,6 +61,11 @@ private:
     void integrate(float h);          // phases 1-3 of integrate-first
     void build_grid();                // phase 4, with the reorder by cell
     void collide();                   // phase 5: one-sided Jacobi contact pass
+    void refresh_pairs();             // the grid and the pair list, when the list is stale
+    void collide_pairs();             // phase 5 on the pair list
+    void clear_pair_contacts();       // after the update: corrections back to zero
+    void contact_phase();             // phases 4 and 5, on the pair list or the cell path
+    void after_update();
     void correct();                   // phase 6 of integrate-first
     void correct_and_integrate(float dt);  // collide-first after its contact pass
     Corrections corrections() { return {dx_.data(), dy_.data(), dvx_.data(), dvy_.data()}; }
@@ -61,6 +74,7 @@ private:
     int threads_ = 1;
     bool specialise_ = true;
     int sort_interval_ = kDefaultSortInterval;
+    double skin_ = kDefaultSkin;      // in units of 2 r_max
 
     Scene scene_;
     FeatureSet features_;
@@ -73,6 +87,7 @@ private:
     bool equal_radii_ = false, equal_masses_ = false;  // arrays the reorder need not move
     std::vector<float> dx_, dy_, dvx_, dvy_;
     CellList grid_;
+    PairList pairs_;
     std::int64_t step_count_ = 0;
     std::int64_t grid_builds_ = 0;
     SolverStats stats_;

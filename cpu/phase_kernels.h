@@ -27,6 +27,11 @@ struct PhaseParams {
     float xmin = 0, ymin = 0, xmax = 1, ymax = 1, width = 1, height = 1;
 };
 
+// Two state slots, a < b: a pair of disks within reach (pair_list.h).
+struct DiskPair {
+    std::uint32_t a, b;
+};
+
 // Per-particle corrections of one Jacobi contact pass, in arrays of their own.
 struct Corrections {
     float* dx;
@@ -379,6 +384,50 @@ std::int64_t correct_and_integrate_range(ParticleState<float>& s, Corrections c,
         vy[i] = vyi;
     }
     return 0;
+}
+
+// The contacts a PairList found (pair_list.h), applied in list order on the calling thread: for
+// each pair both disks' shares, each from the shared contact law as the cell path computes it
+// (sep = x_self - x_other, the relative velocity v_self - v_other), added to the corrections
+// (which are zero outside the contacts: clear_pair_corrections resets them after the update).
+// A stone's share is always zero and is not computed. Returns the contacts, each pair once,
+// as the cell path counts them (pairs of two stones not at all).
+template <bool Friction, bool Stones, bool UniformRadius, bool Periodic>
+std::int64_t apply_pair_contacts(const ParticleState<float>& s, const PhaseParams& p, const DiskPair* contacts,
+                                 std::size_t count, Corrections out) {
+    const float *x = s.x.data(), *y = s.y.data(), *vx = s.vx.data(), *vy = s.vy.data();
+    const float *radius = s.radius.data(), *inv_mass = s.inv_mass.data();
+    const float mu = Friction ? p.friction : 0.0f;
+    auto add_share = [&](std::uint32_t self, std::uint32_t other) {
+        float sep_x = x[self] - x[other], sep_y = y[self] - y[other];
+        if constexpr (Periodic) {
+            sep_x = WallLaw<float>::minimum_image(sep_x, p.width);
+            sep_y = WallLaw<float>::minimum_image(sep_y, p.height);
+        }
+        const float contact = UniformRadius ? p.radius + p.radius : radius[self] + radius[other];
+        const auto d = ContactLaw<float>::delta(sep_x, sep_y, vx[self] - vx[other], vy[self] - vy[other], contact,
+                                                inv_mass[self], inv_mass[other], p.restitution, mu);
+        out.dx[self] += d.dx;
+        out.dy[self] += d.dy;
+        out.dvx[self] += d.dvx;
+        out.dvy[self] += d.dvy;
+    };
+    std::int64_t found = 0;
+    for (std::size_t k = 0; k < count; ++k) {
+        const std::uint32_t a = contacts[k].a, b = contacts[k].b;
+        const bool a_moves = !Stones || inv_mass[a] != 0.0f, b_moves = !Stones || inv_mass[b] != 0.0f;
+        if (a_moves) add_share(a, b);
+        if (b_moves) add_share(b, a);
+        found += a_moves || b_moves;
+    }
+    return found;
+}
+
+// After the update has read them: the corrections of the disks in contact back to zero, so
+// that the next step's sums start from zero again without a pass over every disk.
+inline void clear_pair_corrections(const DiskPair* contacts, std::size_t count, Corrections out) {
+    for (std::size_t k = 0; k < count; ++k)
+        for (const std::uint32_t i : {contacts[k].a, contacts[k].b}) out.dx[i] = out.dy[i] = out.dvx[i] = out.dvy[i] = 0.0f;
 }
 
 }  // namespace collide::cpu

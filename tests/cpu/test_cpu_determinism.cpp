@@ -76,13 +76,43 @@ TEST_P(CpuDeterminism, SpecialisedAndGenericLoopsAgreeBitwise) {
 }
 
 TEST_P(CpuDeterminism, SameStateForAnyThreadCountWithoutEveryStepReorder) {
-    // sort_interval 0: the contact pass reads through the cell list's index; 3: both paths.
+    // sort_interval 0: the search reads through the cell list's index; 3: both paths. Each on
+    // the pair list (the default) and on the cell path (skin 0).
     const BusyCase c = busy_case(GetParam());
-    for (const char* k : {"0", "3"}) {
-        const BackendOptions options{0, "", "", {{"sort_interval", k}}};
-        const std::uint64_t one = hash_after_200_steps(c, 1, options);
-        EXPECT_EQ(hash_after_200_steps(c, 2, options), one) << "sort_interval " << k;
-        EXPECT_EQ(hash_after_200_steps(c, 8, options), one) << "sort_interval " << k;
+    for (const char* skin : {"0.5", "0"})
+        for (const char* k : {"0", "3"}) {
+            const BackendOptions options{0, "", "", {{"sort_interval", k}, {"skin", skin}}};
+            const std::uint64_t one = hash_after_200_steps(c, 1, options);
+            EXPECT_EQ(hash_after_200_steps(c, 2, options), one) << "sort_interval " << k << ", skin " << skin;
+            EXPECT_EQ(hash_after_200_steps(c, 8, options), one) << "sort_interval " << k << ", skin " << skin;
+        }
+}
+
+TEST_P(CpuDeterminism, CellPathSameStateForAnyThreadCount) {
+    const BusyCase c = busy_case(GetParam());
+    const BackendOptions cells{0, "", "", {{"skin", "0"}}};
+    const std::uint64_t one = hash_after_200_steps(c, 1, cells);
+    EXPECT_EQ(hash_after_200_steps(c, 2, cells), one);
+    EXPECT_EQ(hash_after_200_steps(c, 8, cells), one);
+}
+
+// The two searches add a disk's contacts in different orders. Float addition is commutative
+// but not associative, so the bits part only where a disk has three or more contacts at once
+// (the pile of the reflecting case), and the option must really switch the search.
+TEST(CpuSolver, SkinChoosesTheSearch) {
+    const BusyCase c = busy_case(Boundary::reflect);
+    for (const char* skin : {"0.5", "0"}) {
+        cpu::CpuSolver solver({1, "", "", {{"skin", skin}}});
+        solver.load(c.scene, c.initial);
+        for (int k = 0; k < 50; ++k) solver.step();
+        const auto counters = solver.stats().counters;
+        const bool listed = counters.count("pair_list_builds") > 0;
+        EXPECT_EQ(listed, std::string(skin) != "0") << "skin " << skin;
+        if (listed) {
+            EXPECT_GE(counters.at("pair_list_builds"), 1.0);
+            EXPECT_LT(counters.at("pair_list_builds"), 50.0) << "a list that never outlives a step buys nothing";
+        }
+        EXPECT_EQ(solver.provenance().at("cpu.skin"), skin);
     }
 }
 
@@ -127,6 +157,8 @@ TEST(CpuSolver, RejectsUnknownSettingsWithTheirName) {
         EXPECT_NE(std::string(e.what()).find("[backend.cpu]"), std::string::npos) << e.what();
     }
     EXPECT_THROW(cpu::CpuSolver({0, "", "", {{"specialise", "yes"}}}), std::invalid_argument);
+    EXPECT_THROW(cpu::CpuSolver({0, "", "", {{"skin", "-0.1"}}}), std::invalid_argument);
+    EXPECT_THROW(cpu::CpuSolver({0, "", "", {{"skin", "wide"}}}), std::invalid_argument);
 }
 
 }  // namespace

@@ -1,0 +1,242 @@
+// PairList: the `cpu` backend's Verlet list of pairs, each pair once (docs/cpu-backend.md,
+// "Pairs within reach, each tested once").
+//
+// The cell path (collide_range) rebuilds the grid at every step and tests, for every disk, its
+// 3x3 neighbourhood: at area fraction 0.3 about 3.4 candidates per disk and each pair twice,
+// once from each side. A Verlet list (Verlet, Phys. Rev. 159, 98 (1967); Allen & Tildesley,
+// "Computer Simulation of Liquids", 2nd ed., §5.3) keeps instead every pair whose distance was
+// below the reach r_i + r_j + skin when the list was built, and keeps it until some disk has
+// moved by half the skin: until then no pair outside the list can touch, since two disks close
+// in on each other by at most the sum of their displacements. Each pair is stored once (the
+// lower state slot first), its distance is tested once per step, and the grid is rebuilt only
+// when the list is.
+//
+// The contacts a step finds are applied after the search, in list order, both shares of a pair
+// at once, on the calling thread: contacts are rare in a gas (under one disk in a hundred per
+// step at area fraction 0.3) and the order of every per-disk sum is then the order of the list,
+// whatever the number of threads. The list itself is built in parallel over rows of cells into
+// one buffer per chunk, concatenated in chunk order: the same list for any thread count.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "candidate_mask.h"
+#include "cpu_cell_list.h"
+#include "core/particle_state.h"
+#include "parallel_for.h"
+#include "phase_kernels.h"
+
+namespace collide::cpu {
+
+class PairList {
+public:
+    // A disk may move this fraction of the skin between builds (one half, less a margin for the
+    // rounding of float positions: the list stays exact with 0.1 of the skin to spare).
+    static constexpr float kMoveFraction = 0.4f;
+
+    // Forgets the list (a new scene): the next is_stale() says true.
+    void reset(float skin) {
+        skin_ = skin;
+        pairs_.clear();
+        x0_.clear();
+        y0_.clear();
+        contacts_.clear();
+    }
+    float skin() const { return skin_; }
+    std::size_t size() const { return pairs_.size(); }
+    std::int64_t builds() const { return builds_; }
+    const std::vector<DiskPair>& contacts() const { return contacts_; }
+
+    // True when the list may have missed a pair: there is none yet, or some disk has moved
+    // kMoveFraction of the skin since it was built (a NaN position counts as moved).
+    template <bool Periodic>
+    bool is_stale(const ParticleState<float>& s, const PhaseParams& p, int threads) const;
+
+    // Rebuilds the list from a grid just built from s's positions, with cells at least
+    // 2 r_max + skin wide. InCellOrder: s is in the grid's cell order (slot k is disk k);
+    // otherwise slots map to disks through grid.sorted_index().
+    template <bool UniformRadius, bool Periodic, bool InCellOrder>
+    void build(const ParticleState<float>& s, const CellList& grid, const PhaseParams& p, int threads);
+
+    // Fills contacts() with the pairs whose distance is below r_a + r_b, in list order: the
+    // test of the cell path (not >=, so a NaN distance counts), once per pair.
+    template <bool UniformRadius, bool Periodic>
+    void find_contacts(const ParticleState<float>& s, const PhaseParams& p, int threads);
+
+private:
+    template <bool UniformRadius, bool Periodic, bool InCellOrder>
+    void pairs_in_rows(const ParticleState<float>& s, const CellList& grid, const PhaseParams& p,
+                       std::size_t row_begin, std::size_t row_end, std::vector<DiskPair>& out) const;
+    template <bool UniformRadius>
+    void pairs_in_rows_forward(const ParticleState<float>& s, const CellList& grid, const PhaseParams& p,
+                               std::size_t row_begin, std::size_t row_end, std::vector<DiskPair>& out) const;
+    template <typename Item, typename Body>
+    static void gather_chunks(std::size_t items, int threads, std::size_t particles,
+                              std::vector<std::vector<Item>>& chunks, std::vector<Item>& out, Body&& body);
+
+    float skin_ = 0;
+    std::int64_t builds_ = 0;
+    std::vector<DiskPair> pairs_;
+    std::vector<float> x0_, y0_;  // positions at the last build
+    std::vector<DiskPair> contacts_;
+    std::vector<std::vector<DiskPair>> chunk_pairs_, chunk_contacts_;
+};
+
+// Runs body(first, last, buffer) over chunks of [0, items) in parallel, each chunk into its own
+// buffer, and concatenates the buffers in chunk order into `out`: the result does not depend
+// on how many threads ran the chunks.
+template <typename Item, typename Body>
+void PairList::gather_chunks(std::size_t items, int threads, std::size_t particles,
+                             std::vector<std::vector<Item>>& chunks, std::vector<Item>& out, Body&& body) {
+    const std::size_t count = std::max<std::size_t>(1, std::min(items, kChunksPerThread * std::size_t(std::max(threads, 1))));
+    chunks.resize(count);
+    parallel_for(count, threads, [&](std::size_t c0, std::size_t c1) {
+        for (std::size_t c = c0; c < c1; ++c) {
+            chunks[c].clear();
+            body(items * c / count, items * (c + 1) / count, chunks[c]);
+        }
+        return std::int64_t(0);
+    }, particles, 1);
+    out.clear();
+    for (const auto& chunk : chunks) out.insert(out.end(), chunk.begin(), chunk.end());
+}
+
+template <bool Periodic>
+bool PairList::is_stale(const ParticleState<float>& s, const PhaseParams& p, int threads) const {
+    const std::size_t n = s.size();
+    if (x0_.size() != n || builds_ == 0) return true;
+    const float limit = kMoveFraction * skin_, limit2 = limit * limit;
+    const float *x = s.x.data(), *y = s.y.data(), *x0 = x0_.data(), *y0 = y0_.data();
+    const std::int64_t moved = parallel_for(n, threads, [=](std::size_t begin, std::size_t end) {
+        std::int64_t far = 0;
+        for (std::size_t i = begin; i < end; ++i) {
+            float dx = x[i] - x0[i], dy = y[i] - y0[i];
+            if constexpr (Periodic) {  // a disk that wrapped has moved by its image's distance
+                dx = WallLaw<float>::minimum_image(dx, p.width);
+                dy = WallLaw<float>::minimum_image(dy, p.height);
+            }
+            far += !(dx * dx + dy * dy < limit2);
+        }
+        return far;
+    });
+    return moved > 0;
+}
+
+template <bool UniformRadius, bool Periodic, bool InCellOrder>
+void PairList::build(const ParticleState<float>& s, const CellList& grid, const PhaseParams& p, int threads) {
+    auto rows = [&](std::size_t row_begin, std::size_t row_end, std::vector<DiskPair>& out) {
+        if constexpr (InCellOrder && !Periodic)
+            pairs_in_rows_forward<UniformRadius>(s, grid, p, row_begin, row_end, out);
+        else
+            pairs_in_rows<UniformRadius, Periodic, InCellOrder>(s, grid, p, row_begin, row_end, out);
+    };
+    gather_chunks(std::size_t(grid.cells_y()), threads, s.size(), chunk_pairs_, pairs_, rows);
+    x0_.assign(s.x.begin(), s.x.end());
+    y0_.assign(s.y.begin(), s.y.end());
+    ++builds_;
+}
+
+// The pairs within reach of the disks in rows [row_begin, row_end), any order of the state: for
+// every disk i each candidate j of its 3x3 neighbourhood with j > i.
+template <bool UniformRadius, bool Periodic, bool InCellOrder>
+void PairList::pairs_in_rows(const ParticleState<float>& s, const CellList& grid, const PhaseParams& p,
+                             std::size_t row_begin, std::size_t row_end, std::vector<DiskPair>& out) const {
+    const float *x = s.x.data(), *y = s.y.data(), *radius = s.radius.data();
+    const std::uint32_t* cell_start = grid.cell_start();
+    const std::uint32_t* index = InCellOrder ? nullptr : grid.sorted_index();
+    const std::int64_t cells_x = grid.cells_x();
+    auto disk = [index](std::uint32_t slot) { return InCellOrder ? slot : index[slot]; };
+    for (std::int64_t cy = std::int64_t(row_begin); cy < std::int64_t(row_end); ++cy)
+        for (std::int64_t cx = 0; cx < cells_x; ++cx) {
+            const std::int64_t c = cy * cells_x + cx;
+            if (cell_start[c] == cell_start[c + 1]) continue;
+            SlotRange ranges[6];
+            const int range_count = grid.neighbour_ranges<Periodic>(cx, cy, ranges);
+            for (std::uint32_t slot = cell_start[c]; slot < cell_start[c + 1]; ++slot) {
+                const std::uint32_t i = disk(slot);
+                const float xi = x[i], yi = y[i], ri = UniformRadius ? p.radius : radius[i];
+                for (int r = 0; r < range_count; ++r)
+                    for (std::uint32_t b = ranges[r].begin; b < ranges[r].end; ++b) {
+                        const std::uint32_t j = disk(b);
+                        if (j <= i) continue;  // each pair once, from its lower slot
+                        float sep_x = xi - x[j], sep_y = yi - y[j];
+                        if constexpr (Periodic) {
+                            sep_x = WallLaw<float>::minimum_image(sep_x, p.width);
+                            sep_y = WallLaw<float>::minimum_image(sep_y, p.height);
+                        }
+                        const float reach = ri + (UniformRadius ? ri : radius[j]) + skin_;
+                        if (!(sep_x * sep_x + sep_y * sep_y >= reach * reach)) out.push_back({i, j});
+                    }
+            }
+        }
+}
+
+// The same pairs for a state in cell order inside reflecting walls, where slot order is row
+// order: the partners j > i of disk i are the later slots of its own row's three columns and the
+// row above's three columns (the row below holds only earlier slots). Both ranges are tested
+// four slots at a time (candidate_mask.h) against the reach: for unequal radii the query's
+// radius r_i + skin makes the mask's (r_i + r_j)^2 the reach squared.
+template <bool UniformRadius>
+void PairList::pairs_in_rows_forward(const ParticleState<float>& s, const CellList& grid, const PhaseParams& p,
+                                     std::size_t row_begin, std::size_t row_end, std::vector<DiskPair>& out) const {
+    const std::uint32_t* cell_start = grid.cell_start();
+    const std::int64_t cells_x = grid.cells_x();
+    const float reach = p.radius + p.radius + skin_;
+    CandidateQuery q{0, 0, 0, reach * reach, p.width, p.height, s.x.data(), s.y.data(),
+                     UniformRadius ? nullptr : s.radius.data(), std::uint32_t(s.size())};
+    for (std::int64_t cy = std::int64_t(row_begin); cy < std::int64_t(row_end); ++cy) {
+        const std::uint32_t *own = grid.row_start<false>(cy), *above = grid.row_start<false>(cy + 1);
+        for (std::uint32_t a = cell_start[cy * cells_x]; a < cell_start[(cy + 1) * cells_x]; ++a) {
+            q.xi = s.x[a];
+            q.yi = s.y[a];
+            q.ri = UniformRadius ? p.radius : s.radius[a] + skin_;
+            const std::int64_t cx = grid.column_of(q.xi);
+            const std::int64_t lo = cx > 0 ? cx - 1 : 0, hi = cx + 2 < cells_x ? cx + 2 : cells_x;
+            const std::uint32_t b0 = a + 1, e0 = own[hi], b1 = above[lo], e1 = above[hi];
+            auto add = [&](unsigned mask, std::uint32_t block) {
+                for (; mask != 0; mask &= mask - 1) out.push_back({a, block + std::uint32_t(__builtin_ctz(mask))});
+            };
+            if (e0 - b0 <= 8 && e1 - b1 <= 8) [[likely]] {
+                // Up to eight slots a range (nearly always): four block tests, no branch on the
+                // lengths; a block past its range's end tests nothing.
+                const unsigned m0 = candidate_mask<UniformRadius, false>(q, b0, e0, a);
+                const unsigned m1 = candidate_mask<UniformRadius, false>(q, b0 + 4, e0, a);
+                const unsigned m2 = candidate_mask<UniformRadius, false>(q, b1, e1, a);
+                const unsigned m3 = candidate_mask<UniformRadius, false>(q, b1 + 4, e1, a);
+                add(m0, b0);
+                add(m1, b0 + 4);
+                add(m2, b1);
+                add(m3, b1 + 4);
+                continue;
+            }
+            for (const SlotRange range : {SlotRange{b0, e0}, SlotRange{b1, e1}})
+                for (std::uint32_t block = range.begin; block < range.end; block += 4)
+                    add(candidate_mask<UniformRadius, false>(q, block, range.end, a), block);
+        }
+    }
+}
+
+template <bool UniformRadius, bool Periodic>
+void PairList::find_contacts(const ParticleState<float>& s, const PhaseParams& p, int threads) {
+    const float *x = s.x.data(), *y = s.y.data(), *radius = s.radius.data();
+    const DiskPair* pairs = pairs_.data();
+    const float uniform_contact2 = (p.radius + p.radius) * (p.radius + p.radius);
+    auto search = [&](std::size_t begin, std::size_t end, std::vector<DiskPair>& out) {
+        for (std::size_t k = begin; k < end; ++k) {
+            const DiskPair q = pairs[k];
+            float sep_x = x[q.a] - x[q.b], sep_y = y[q.a] - y[q.b];
+            if constexpr (Periodic) {
+                sep_x = WallLaw<float>::minimum_image(sep_x, p.width);
+                sep_y = WallLaw<float>::minimum_image(sep_y, p.height);
+            }
+            const float contact = UniformRadius ? 0.0f : radius[q.a] + radius[q.b];
+            const float contact2 = UniformRadius ? uniform_contact2 : contact * contact;
+            if (!(sep_x * sep_x + sep_y * sep_y >= contact2)) [[unlikely]] out.push_back(q);
+        }
+    };
+    gather_chunks(pairs_.size(), threads, s.size(), chunk_contacts_, contacts_, search);
+}
+
+}  // namespace collide::cpu
