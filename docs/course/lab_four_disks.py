@@ -22,6 +22,8 @@ One quantity, two routes (docs/monte-carlo.md, "Walls"):
     same estimate of the mean and its error.
 Both as beta P d^2 = beta F / perimeter * d^2, Li et al.'s beta P (2 sigma)^2.
 """
+import pathlib
+
 import numpy as np
 
 from lab_check import Wrong, load
@@ -36,22 +38,8 @@ SEED = 11
 # A z beyond this rejects: a right sampler falls outside it about once in 16 000 checks.
 MOST_Z = 4.0
 
-FOUR_DISK_SCENE = """description = "four disks of radius 0.15 in a unit square with walls (Li et al. 2022)"
-seed = 1
-[world]
-box = [0.0, 0.0, 1.0, 1.0]
-boundary = "reflect"
-[run]
-duration = 1.0
-output_interval = 1.0
-dt = 1e-3
-[[particles]]
-kind = "list"
-disks = [{ x = 0.25, y = 0.25, vx = 0.61, vy = -0.93, radius = 0.15, mass = 1.0 },
-         { x = 0.75, y = 0.25, vx = -0.47, vy = 0.28, radius = 0.15, mass = 1.0 },
-         { x = 0.25, y = 0.75, vx = 1.07, vy = 0.35, radius = 0.15, mass = 1.0 },
-         { x = 0.75, y = 0.72, vx = -0.21, vy = -0.82, radius = 0.15, mass = 1.0 }]
-"""
+# The box, one scene file shared with the C++ conformance test (tests/conformance/test_four_disk_box.cpp).
+FOUR_DISK_SCENE = pathlib.Path(__file__).resolve().parents[2] / "data" / "scenes" / "physics" / "four_disk_box.toml"
 
 
 def per_length_d2():
@@ -63,7 +51,7 @@ def event_wall_pressure():
     """`event`'s beta P d^2 in the four-disk box, from the momentum given to the walls in windows of
     WINDOW_TIME over EVENT_TIME: collide.stationary_mean of the series (mean, error)."""
     c = collide()
-    sim = c.Simulation(c.Scene.from_toml(FOUR_DISK_SCENE), "event")
+    sim = c.Simulation(c.Scene.from_file(str(FOUR_DISK_SCENE)), "event")
     kt = sim.metrics()["kinetic_energy"] / len(sim)   # conserved: e = 1, elastic walls
     series, before = [], 0.0
     for k in range(1, int(EVENT_TIME / WINDOW_TIME) + 1):

@@ -28,6 +28,7 @@
 #include "core/run_driver.h"
 #include "core/scene/scene_loader.h"
 #include "core/thermo/kinetic_temperature.h"
+#include "tests/support/test_scenes.h"
 
 namespace collide::test {
 namespace {
@@ -53,20 +54,8 @@ struct BoxStatistics {
 
 // --- Molecular dynamics: one of the exact solvers -------------------------------------------
 
-Scene four_disk_scene() {
-    Scene scene;
-    scene.name = "four_disk_box";
-    scene.world.xmin = scene.world.ymin = 0;
-    scene.world.xmax = scene.world.ymax = side;
-    scene.world.boundary = Boundary::reflect;
-    ParticleGenerator g;
-    g.kind = "list";
-    // Generic velocities (no symmetry the walls could keep); kT = K / N = 0.5735.
-    g.disks = {{0.25, 0.25, 0.61, -0.93, radius, 1.0, false}, {0.75, 0.25, -0.47, 0.28, radius, 1.0, false},
-               {0.25, 0.75, 1.07, 0.35, radius, 1.0, false}, {0.75, 0.72, -0.21, -0.82, radius, 1.0, false}};
-    scene.generators = {g};
-    return scene;
-}
+// The box, one scene file shared with the course's lab (docs/course/lab_four_disks.py).
+Scene four_disk_scene() { return load_scene(test::scene_file("physics/four_disk_box.toml")); }
 
 BoxStatistics molecular_dynamics(const std::string& backend, double duration) {
     const Scene scene = four_disk_scene();
