@@ -33,8 +33,7 @@ py::dict stationary_mean(const Series& x, bool cut_from_data, std::size_t batche
     if (batches < 2) throw py::value_error("batches: at least 2 batch means make an error, got " + std::to_string(batches));
     const SeriesEstimate e = estimate_stationary_mean(series, cut_from_data, batches);
     py::list candidates;
-    if (cut_from_data)
-        for (const CutCandidate& c : equilibration_candidates(series)) candidates.append(py::make_tuple(c.cut, c.effective_samples));
+    for (const CutCandidate& c : e.candidates) candidates.append(py::make_tuple(c.cut, c.effective_samples));
     py::dict d;
     d["mean"] = e.mean;
     d["error"] = e.error;

@@ -29,10 +29,10 @@ double tau_int(const double* x, std::size_t n) {
 }
 
 // The first candidate with the most effective samples (Chodera 2016).
-std::size_t chosen_cut(const std::vector<double>& x) {
+std::size_t chosen_cut(const std::vector<CutCandidate>& candidates) {
     std::size_t best = 0;
     double best_effective = -1;
-    for (const CutCandidate& c : equilibration_candidates(x))
+    for (const CutCandidate& c : candidates)
         if (c.effective_samples > best_effective) best_effective = c.effective_samples, best = c.cut;
     return best;
 }
@@ -54,7 +54,8 @@ double integrated_autocorrelation_time(const std::vector<double>& x) { return ta
 SeriesEstimate estimate_stationary_mean(const std::vector<double>& x, bool cut_from_data, std::size_t batches) {
     SeriesEstimate e;
     if (x.empty()) return e;
-    e.equilibration_cut = cut_from_data ? chosen_cut(x) : 0;
+    if (cut_from_data) e.candidates = equilibration_candidates(x);
+    e.equilibration_cut = chosen_cut(e.candidates);
     const double* y = x.data() + e.equilibration_cut;
     e.used = x.size() - e.equilibration_cut;
     e.mean = mean_of(y, e.used);

@@ -21,6 +21,13 @@
 
 namespace collide {
 
+// One candidate start of the stationary part: the entries cut, and the effectively independent
+// samples (n - cut) / max(1, 2 tau_int) of what is left. The cut is the candidate with the most.
+struct CutCandidate {
+    std::size_t cut = 0;
+    double effective_samples = 0;
+};
+
 struct SeriesEstimate {
     double mean = 0;
     double error = 0;                    // standard error of the mean, by batch means
@@ -28,6 +35,7 @@ struct SeriesEstimate {
     std::size_t equilibration_cut = 0;   // entries left out at the start
     std::size_t batches = 0;             // batch means used for the error
     std::size_t used = 0;                // entries after the cut
+    std::vector<CutCandidate> candidates;  // the starts weighed for the cut (none without a cut from the data)
     // Batches shorter than 5 tau_int: the error bar is too small; a row shows it.
     bool batches_too_short() const { return batches > 0 && double(used) / double(batches) < 5 * autocorrelation_time; }
 };
@@ -35,12 +43,6 @@ struct SeriesEstimate {
 // tau_int of x (Sokal's window); 0.5 for an uncorrelated series, 0 for fewer than 2 entries.
 double integrated_autocorrelation_time(const std::vector<double>& x);
 
-// One candidate start of the stationary part: the entries cut, and the effectively independent
-// samples (n - cut) / max(1, 2 tau_int) of what is left. The cut is the candidate with the most.
-struct CutCandidate {
-    std::size_t cut = 0;
-    double effective_samples = 0;
-};
 // The candidates t0 = 0, n/20, 2n/20, ... up to n/2 (every entry for n < 20), in order.
 std::vector<CutCandidate> equilibration_candidates(const std::vector<double>& x);
 
