@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -178,8 +179,43 @@ TEST(BenchCommand, BandwidthSuitePrintsTheBoundTheComputeCeilingAndTheTargetsVer
     EXPECT_EQ(number(ceiling, "threads"), 1);
     EXPECT_NEAR(number(cpu, "compute_ceiling_particle_steps_per_s"), 2 * number(ceiling, "particle_steps_per_s"),
                 1e-4 * number(ceiling, "particle_steps_per_s"));
-    EXPECT_TRUE(contains(result.out, "target: fraction_of_bound >= 0.8 at N = 1e6, 2 threads")) << result.out;
+    // The bytes: the pair list's model (bench/bandwidth_suite.cpp) from the run's own list.
+    const double p = number(cpu, "pairs_per_particle"), k = number(cpu, "steps_per_list_build");
+    EXPECT_GT(p, 0.1);
+    EXPECT_LT(p, 3.0);
+    EXPECT_GE(k, 1.0);
+    EXPECT_GT(number(cpu, "bytes_per_particle_step"), 76 + 8 * p);   // the per-step part alone
+    EXPECT_LT(number(cpu, "bytes_per_particle_step"), 212);          // below the cell path's model
+    EXPECT_TRUE(contains(result.out, "target: fraction_of_bound >= 0.6 at N = 1e6, 2 threads")) << result.out;
     EXPECT_TRUE(contains(result.out, "not the target's configuration")) << result.out;
+}
+
+// The throughput suite's two targets for cpu at N = 1e4 (processor ns per disk-step on one
+// thread; disk-steps per second against Box2D 2.4 in the same run), each printed with its
+// figures and a verdict that follows them.
+TEST(BenchCommand, ThroughputSuitePrintsCpusTargetsWithTheirFigures) {
+    ScratchDirectory dir;
+    const auto result = run_program(COLLIDE_EXECUTABLE, {"bench", "throughput", "--sizes", "10000", "--backend", "cpu",
+                                                         "--backend", "box2d", "--threads", "1", "--steps", "5", "-o",
+                                                         dir.file("b")}, dir);
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    const std::vector<CsvRow> rows = read_csv(dir.file("b-throughput.csv"));
+    double cpu_ns = 0, cpu_rate = 0, box2d_rate = 0;
+    for (const CsvRow& row : rows) {
+        if (row.at("backend") == "cpu") cpu_ns = number(row, "cpu_ns_per_particle_step"), cpu_rate = number(row, "particle_steps_per_s");
+        if (row.at("backend").rfind("box2d", 0) == 0) box2d_rate = std::max(box2d_rate, number(row, "particle_steps_per_s"));
+    }
+    ASSERT_GT(cpu_ns, 0) << result.out;
+    ASSERT_GT(box2d_rate, 0) << result.out;
+    char ns[32];
+    std::snprintf(ns, sizeof ns, "measured %.2f ns", cpu_ns);
+    EXPECT_TRUE(contains(result.out, "target: cpu <= 8 ns of a core per disk-step in cache (N = 1e4, 1 thread)")) << result.out;
+    EXPECT_TRUE(contains(result.out, std::string(ns) + " \u2014 " + (cpu_ns <= 8 ? "met" : "not met"))) << result.out;
+    const double ratio = cpu_rate / box2d_rate;
+    char times[32];
+    std::snprintf(times, sizeof times, ": %.0fx \u2014 %s", ratio, ratio >= 100 ? "met" : "not met");
+    EXPECT_TRUE(contains(result.out, "target: cpu >= 100x Box2D 2.4's disk-steps/s at N = 1e4, same run")) << result.out;
+    EXPECT_TRUE(contains(result.out, times)) << result.out;
 }
 
 // The opencl suite's launch-cost rows: both scenes of the library, both backends, the ratio
