@@ -202,17 +202,27 @@ void CpuSolver::refresh_pairs() {
 
 void CpuSolver::collide_pairs() {
     PhaseTimer timer(stats_, phase::collide);
+    const std::size_t chunks = pairs_.chunks();
+    shares_.resize(chunks);
+    contacts_per_chunk_.assign(chunks, 0);
     dispatch([&]<bool Friction, bool Stones, bool UniformRadius, bool Periodic>() {
-        pairs_.find_contacts<UniformRadius, Periodic>(state_, params_, threads_);
-        const auto& found = pairs_.contacts();
-        stats_.contacts += apply_pair_contacts<Friction, Stones, UniformRadius, Periodic>(state_, params_, found.data(),
-                                                                                         found.size(), corrections());
+        pairs_.find_contacts<UniformRadius, Periodic>(state_, params_, threads_,
+                                                      [&](std::size_t c, const std::vector<DiskPair>& found) {
+            shares_[c].resize(found.size());
+            contacts_per_chunk_[c] = pair_shares<Friction, Stones, UniformRadius, Periodic>(state_, params_, found.data(),
+                                                                                       found.size(), shares_[c].data());
+        });
     }, features_.friction, features_.stones, features_.uniform_radius, features_.periodic);
+    const auto& found = pairs_.contact_chunks();
+    for (std::size_t c = 0; c < chunks; ++c) {  // in list order, on this thread
+        add_pair_shares(found[c].data(), shares_[c].data(), found[c].size(), corrections());
+        stats_.contacts += contacts_per_chunk_[c];
+    }
 }
 
 void CpuSolver::clear_pair_contacts() {
     PhaseTimer timer(stats_, phase::collide);
-    clear_pair_corrections(pairs_.contacts().data(), pairs_.contacts().size(), corrections());
+    for (const auto& found : pairs_.contact_chunks()) clear_pair_corrections(found.data(), found.size(), corrections());
 }
 
 void CpuSolver::correct() {

@@ -88,6 +88,8 @@ private:
     std::vector<float> dx_, dy_, dvx_, dvy_;
     CellList grid_;
     PairList pairs_;
+    std::vector<std::vector<PairShares>> shares_;  // per chunk of the list: its contacts' shares
+    std::vector<std::int64_t> contacts_per_chunk_;     // per chunk: its contacts, counted
     std::int64_t step_count_ = 0;
     std::int64_t grid_builds_ = 0;
     SolverStats stats_;

@@ -11,11 +11,11 @@
 // lower state slot first), its distance is tested once per step, and the grid is rebuilt only
 // when the list is.
 //
-// The contacts a step finds are applied after the search, in list order, both shares of a pair
-// at once, on the calling thread: contacts are rare in a gas (under one disk in a hundred per
-// step at area fraction 0.3) and the order of every per-disk sum is then the order of the list,
-// whatever the number of threads. The list itself is built in parallel over rows of cells into
-// one buffer per chunk, concatenated in chunk order: the same list for any thread count.
+// Each chunk of the list computes both shares of its contacts (on its thread, right after its
+// search); the shares are then added on the calling thread in list order: adds only, a few per
+// contact (under one disk in a hundred is in contact per step at area fraction 0.3), and the
+// order of every per-disk sum is the order of the list, whatever the number of threads. The list itself is built in parallel over rows of cells into
+// one buffer per chunk, read in chunk order: the same list for any thread count.
 #pragma once
 
 #include <algorithm>
@@ -39,15 +39,26 @@ public:
     // Forgets the list (a new scene): the next is_stale() says true.
     void reset(float skin) {
         skin_ = skin;
-        pairs_.clear();
+        chunk_pairs_.clear();
+        size_ = 0;
         x0_.clear();
         y0_.clear();
-        contacts_.clear();
+        chunk_contacts_.clear();
     }
     float skin() const { return skin_; }
-    std::size_t size() const { return pairs_.size(); }
+    std::size_t size() const { return size_; }
     std::int64_t builds() const { return builds_; }
-    const std::vector<DiskPair>& contacts() const { return contacts_; }
+    // The list's chunks (contact_chunks() has one per chunk): the unit of parallel work.
+    std::size_t chunks() const { return chunk_pairs_.size(); }
+    // The pairs in contact found by the last search, chunk by chunk: read in chunk order, the
+    // list's order.
+    const std::vector<std::vector<DiskPair>>& contact_chunks() const { return chunk_contacts_; }
+    // The same, as one list.
+    std::vector<DiskPair> contacts() const {
+        std::vector<DiskPair> all;
+        for (const auto& chunk : chunk_contacts_) all.insert(all.end(), chunk.begin(), chunk.end());
+        return all;
+    }
 
     // True when the list may have missed a pair: there is none yet, or some disk has moved
     // kMoveFraction of the skin since it was built (a NaN position counts as moved).
@@ -60,10 +71,15 @@ public:
     template <bool UniformRadius, bool Periodic, bool InCellOrder>
     void build(const ParticleState<float>& s, const CellList& grid, const PhaseParams& p, int threads);
 
-    // Fills contacts() with the pairs whose distance is below r_a + r_b, in list order: the
-    // test of the cell path (not >=, so a NaN distance counts), once per pair.
+    // Fills contact_chunks() with the pairs whose distance is below r_a + r_b, in list order:
+    // the test of the cell path (not >=, so a NaN distance counts), once per pair. Then, on the
+    // same thread, calls after_chunk(c, contacts of chunk c) for each chunk.
+    template <bool UniformRadius, bool Periodic, typename AfterChunk>
+    void find_contacts(const ParticleState<float>& s, const PhaseParams& p, int threads, AfterChunk&& after_chunk);
     template <bool UniformRadius, bool Periodic>
-    void find_contacts(const ParticleState<float>& s, const PhaseParams& p, int threads);
+    void find_contacts(const ParticleState<float>& s, const PhaseParams& p, int threads) {
+        find_contacts<UniformRadius, Periodic>(s, p, threads, [](std::size_t, const std::vector<DiskPair>&) {});
+    }
 
 private:
     template <bool UniformRadius, bool Periodic, bool InCellOrder>
@@ -72,35 +88,25 @@ private:
     template <bool UniformRadius>
     void pairs_in_rows_forward(const ParticleState<float>& s, const CellList& grid, const PhaseParams& p,
                                std::size_t row_begin, std::size_t row_end, std::vector<DiskPair>& out) const;
-    template <typename Item, typename Body>
-    static void gather_chunks(std::size_t items, int threads, std::size_t particles,
-                              std::vector<std::vector<Item>>& chunks, std::vector<Item>& out, Body&& body);
+    template <typename Body>
+    static void for_each_chunk(std::size_t count, int threads, std::size_t particles, Body&& body);
 
     float skin_ = 0;
     std::int64_t builds_ = 0;
-    std::vector<DiskPair> pairs_;
+    std::size_t size_ = 0;
     std::vector<float> x0_, y0_;  // positions at the last build
-    std::vector<DiskPair> contacts_;
+    // The list, in chunks of rows of cells (kept as built: one list in chunk order, never
+    // copied into one array), and each chunk's contacts of the last search.
     std::vector<std::vector<DiskPair>> chunk_pairs_, chunk_contacts_;
 };
 
-// Runs body(first, last, buffer) over chunks of [0, items) in parallel, each chunk into its own
-// buffer, and concatenates the buffers in chunk order into `out`: the result does not depend
-// on how many threads ran the chunks.
-template <typename Item, typename Body>
-void PairList::gather_chunks(std::size_t items, int threads, std::size_t particles,
-                             std::vector<std::vector<Item>>& chunks, std::vector<Item>& out, Body&& body) {
-    const std::size_t count = std::max<std::size_t>(1, std::min(items, kChunksPerThread * std::size_t(std::max(threads, 1))));
-    chunks.resize(count);
+// Runs body(c) for the chunks c = 0 .. count - 1 in parallel (inline for few particles).
+template <typename Body>
+void PairList::for_each_chunk(std::size_t count, int threads, std::size_t particles, Body&& body) {
     parallel_for(count, threads, [&](std::size_t c0, std::size_t c1) {
-        for (std::size_t c = c0; c < c1; ++c) {
-            chunks[c].clear();
-            body(items * c / count, items * (c + 1) / count, chunks[c]);
-        }
+        for (std::size_t c = c0; c < c1; ++c) body(c);
         return std::int64_t(0);
     }, particles, 1);
-    out.clear();
-    for (const auto& chunk : chunks) out.insert(out.end(), chunk.begin(), chunk.end());
 }
 
 template <bool Periodic>
@@ -132,7 +138,17 @@ void PairList::build(const ParticleState<float>& s, const CellList& grid, const 
         else
             pairs_in_rows<UniformRadius, Periodic, InCellOrder>(s, grid, p, row_begin, row_end, out);
     };
-    gather_chunks(std::size_t(grid.cells_y()), threads, s.size(), chunk_pairs_, pairs_, rows);
+    // Chunks of rows, each listing into its own buffer: read in chunk order they are the same
+    // list whatever the number of chunks.
+    const std::size_t cells_y = std::size_t(grid.cells_y());
+    const std::size_t count = std::max<std::size_t>(1, std::min(cells_y, kChunksPerThread * std::size_t(std::max(threads, 1))));
+    chunk_pairs_.resize(count);
+    for_each_chunk(count, threads, s.size(), [&](std::size_t c) {
+        chunk_pairs_[c].clear();
+        rows(cells_y * c / count, cells_y * (c + 1) / count, chunk_pairs_[c]);
+    });
+    size_ = 0;
+    for (const auto& chunk : chunk_pairs_) size_ += chunk.size();
     x0_.assign(s.x.begin(), s.x.end());
     y0_.assign(s.y.begin(), s.y.end());
     ++builds_;
@@ -218,14 +234,16 @@ void PairList::pairs_in_rows_forward(const ParticleState<float>& s, const CellLi
     }
 }
 
-template <bool UniformRadius, bool Periodic>
-void PairList::find_contacts(const ParticleState<float>& s, const PhaseParams& p, int threads) {
+template <bool UniformRadius, bool Periodic, typename AfterChunk>
+void PairList::find_contacts(const ParticleState<float>& s, const PhaseParams& p, int threads,
+                             AfterChunk&& after_chunk) {
     const float *x = s.x.data(), *y = s.y.data(), *radius = s.radius.data();
-    const DiskPair* pairs = pairs_.data();
     const float uniform_contact2 = (p.radius + p.radius) * (p.radius + p.radius);
-    auto search = [&](std::size_t begin, std::size_t end, std::vector<DiskPair>& out) {
-        for (std::size_t k = begin; k < end; ++k) {
-            const DiskPair q = pairs[k];
+    chunk_contacts_.resize(chunk_pairs_.size());
+    for_each_chunk(chunk_pairs_.size(), threads, s.size(), [&](std::size_t c) {
+        std::vector<DiskPair>& out = chunk_contacts_[c];
+        out.clear();
+        for (const DiskPair q : chunk_pairs_[c]) {
             float sep_x = x[q.a] - x[q.b], sep_y = y[q.a] - y[q.b];
             if constexpr (Periodic) {
                 sep_x = WallLaw<float>::minimum_image(sep_x, p.width);
@@ -235,8 +253,8 @@ void PairList::find_contacts(const ParticleState<float>& s, const PhaseParams& p
             const float contact2 = UniformRadius ? uniform_contact2 : contact * contact;
             if (!(sep_x * sep_x + sep_y * sep_y >= contact2)) [[unlikely]] out.push_back(q);
         }
-    };
-    gather_chunks(pairs_.size(), threads, s.size(), chunk_contacts_, contacts_, search);
+        after_chunk(c, out);
+    });
 }
 
 }  // namespace collide::cpu

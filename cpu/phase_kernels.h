@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 
 #include "candidate_mask.h"
 #include "cpu_cell_list.h"
@@ -386,19 +387,23 @@ std::int64_t correct_and_integrate_range(ParticleState<float>& s, Corrections c,
     return 0;
 }
 
-// The contacts a PairList found (pair_list.h), applied in list order on the calling thread: for
-// each pair both disks' shares, each from the shared contact law as the cell path computes it
-// (sep = x_self - x_other, the relative velocity v_self - v_other), added to the corrections
-// (which are zero outside the contacts: clear_pair_corrections resets them after the update).
-// A stone's share is always zero and is not computed. Returns the contacts, each pair once,
-// as the cell path counts them (pairs of two stones not at all).
+// One contact's two shares: disk a's and disk b's corrections (dx, dy, dvx, dvy).
+struct PairShares {
+    float a[4], b[4];
+};
+
+// Both shares of each contact a PairList found (pair_list.h), each from the shared contact law
+// exactly as the cell path computes it (separation x_self - x_other, relative velocity
+// v_self - v_other); a stone's share is zero and not computed. Writes only shares[k], so the
+// chunks of a list run in parallel. Returns the contacts, counted as the cell path counts them
+// (pairs of two stones not at all).
 template <bool Friction, bool Stones, bool UniformRadius, bool Periodic>
-std::int64_t apply_pair_contacts(const ParticleState<float>& s, const PhaseParams& p, const DiskPair* contacts,
-                                 std::size_t count, Corrections out) {
+std::int64_t pair_shares(const ParticleState<float>& s, const PhaseParams& p, const DiskPair* contacts,
+                         std::size_t count, PairShares* shares) {
     const float *x = s.x.data(), *y = s.y.data(), *vx = s.vx.data(), *vy = s.vy.data();
     const float *radius = s.radius.data(), *inv_mass = s.inv_mass.data();
     const float mu = Friction ? p.friction : 0.0f;
-    auto add_share = [&](std::uint32_t self, std::uint32_t other) {
+    auto share = [&](std::uint32_t self, std::uint32_t other, float out[4]) {
         float sep_x = x[self] - x[other], sep_y = y[self] - y[other];
         if constexpr (Periodic) {
             sep_x = WallLaw<float>::minimum_image(sep_x, p.width);
@@ -407,20 +412,32 @@ std::int64_t apply_pair_contacts(const ParticleState<float>& s, const PhaseParam
         const float contact = UniformRadius ? p.radius + p.radius : radius[self] + radius[other];
         const auto d = ContactLaw<float>::delta(sep_x, sep_y, vx[self] - vx[other], vy[self] - vy[other], contact,
                                                 inv_mass[self], inv_mass[other], p.restitution, mu);
-        out.dx[self] += d.dx;
-        out.dy[self] += d.dy;
-        out.dvx[self] += d.dvx;
-        out.dvy[self] += d.dvy;
+        out[0] = d.dx, out[1] = d.dy, out[2] = d.dvx, out[3] = d.dvy;
     };
     std::int64_t found = 0;
     for (std::size_t k = 0; k < count; ++k) {
         const std::uint32_t a = contacts[k].a, b = contacts[k].b;
         const bool a_moves = !Stones || inv_mass[a] != 0.0f, b_moves = !Stones || inv_mass[b] != 0.0f;
-        if (a_moves) add_share(a, b);
-        if (b_moves) add_share(b, a);
+        PairShares& out = shares[k];
+        if (a_moves) share(a, b, out.a); else out.a[0] = out.a[1] = out.a[2] = out.a[3] = 0.0f;
+        if (b_moves) share(b, a, out.b); else out.b[0] = out.b[1] = out.b[2] = out.b[3] = 0.0f;
         found += a_moves || b_moves;
     }
     return found;
+}
+
+// The shares added to the corrections, contact by contact in the order given (disk a's, then
+// disk b's): the order of every per-disk sum. The corrections are zero outside the contacts
+// (clear_pair_corrections resets them after the update), so each sum starts from zero, as the
+// cell path's does; a stone's zero share leaves its zero correction zero.
+inline void add_pair_shares(const DiskPair* contacts, const PairShares* shares, std::size_t count, Corrections out) {
+    for (std::size_t k = 0; k < count; ++k)
+        for (const auto& [i, d] : {std::pair{contacts[k].a, shares[k].a}, std::pair{contacts[k].b, shares[k].b}}) {
+            out.dx[i] += d[0];
+            out.dy[i] += d[1];
+            out.dvx[i] += d[2];
+            out.dvy[i] += d[3];
+        }
 }
 
 // After the update has read them: the corrections of the disks in contact back to zero, so
