@@ -130,7 +130,7 @@ void EventSolver::load(const Scene& scene, const ParticleState<double>& initial)
     // with them): their queue time stays infinite.
     for (std::uint32_t i = 0; i < n; ++i) {
         if (state_.is_stone(i)) queue_.update(i, never);
-        else predict(i);
+        else predict_any(i);
     }
     kinetic_ = kinetic_energy_now();
 
@@ -219,23 +219,31 @@ double EventSolver::choose_shell(double fraction, double r_max) const {
 
 void EventSolver::advance_to(double t) {
     check_target_time("event", t, now_, scene_.run.dt, false);  // NaN would become every disk's time
+    if (shells_on()) run_events<true>(t);
+    else run_events<false>(t);
+    now_ = t;
+}
+
+template <bool Shells>
+void EventSolver::run_events(double t) {
     while (!queue_.empty() && queue_.top_time() <= t) {
-        process_event();
+        process_event<Shells>();
         renumber_if_due();
     }
-    now_ = t;
 }
 
 // The speed layer's prefetch pipeline (prefetch_pipeline.h), from 2^16 disks on: it only
 // requests memory, so the events are the same with or without it.
+template <bool Shells>
 void EventSolver::prefetch_coming_events() {
     if (!prefetch_.on()) return;
-    if (shells_on()) prefetch_.advance(disks_, cells_, shells_, queue_);
+    if constexpr (Shells) prefetch_.advance(disks_, cells_, shells_, queue_);
     else prefetch_.advance(disks_, cells_, queue_);
 }
 
+template <bool Shells>
 void EventSolver::process_event() {
-    prefetch_coming_events();
+    prefetch_coming_events<Shells>();
     const std::uint32_t i = queue_.top();
     // Event times are never earlier than the time they were predicted at (collision_time.h
     // clamps to "now"), so simulated time never runs backwards.
@@ -248,27 +256,29 @@ void EventSolver::process_event() {
         if (disks_[p.partner].count != p.partner_count) {
             // The partner changed course after this was predicted: the event is stale.
             ++stale_events_;
-            predict(i);
+            predict<Shells>(i);
             return;
         }
         collide_pair(i, p.partner);
         // (overlaps with predicting i)
-        if (shells_on()) shells_.prefetch_neighbours(disks_, p.partner);
+        if constexpr (Shells) shells_.prefetch_neighbours(disks_, p.partner);
         else cells_.prefetch_neighbourhood(disks_, p.partner);
-        predict(i);  // (the disk of an event is never a stone: stones have no events)
-        if (queue_.payload(p.partner).inv_mass != 0) predict(p.partner);  // (a stone does not move)
+        predict<Shells>(i);  // (the disk of an event is never a stone: stones have no events)
+        if (queue_.payload(p.partner).inv_mass != 0) predict<Shells>(p.partner);  // (a stone does not move)
         return;
     case EventKind::wall:
         collide_wall(i, p.border);
-        predict(i);
+        predict<Shells>(i);
         return;
     case EventKind::cell:
+        if constexpr (Shells) throw std::logic_error("event: a cell crossing in the shells' design");
         cross_cell(i, p.border);
         predict_after_crossing(i, p.border);
         return;
     case EventKind::shell:
+        if constexpr (!Shells) throw std::logic_error("event: a shell exit in the cells' design");
         exit_shell(i);
-        predict(i);
+        predict<Shells>(i);
         return;
     case EventKind::none:
         return;  // unreachable: such a disk's time is infinite
@@ -321,10 +331,11 @@ void EventSolver::bring_to_now(std::uint32_t i) {
     velocity_of(disks_[i]) += g * dt;
 }
 
+template <bool Shells>
 void EventSolver::predict(std::uint32_t i) {
     bring_to_now(i);
     Prediction p;
-    if (shells_on()) {
+    if constexpr (Shells) {
         // (The minimum-image choice of earliest_pair holds here too: a neighbour's centre lies
         // in the 3x3 cells around i's centre, and each disk within delta of its centre.)
         earliest_pair(i, p, [&](auto&& visit) {
@@ -333,7 +344,7 @@ void EventSolver::predict(std::uint32_t i) {
     } else {
         earliest_pair(i, p, [&](auto&& visit) { cells_.for_each_neighbour(disks_, i, visit); });
     }
-    file_prediction(i, p);
+    file_prediction<Shells>(i, p);
 }
 
 // After a cell crossing (cross_cell has brought disk i to now) the disk's course is the same,
@@ -346,11 +357,11 @@ void EventSolver::predict(std::uint32_t i) {
 void EventSolver::predict_after_crossing(std::uint32_t i, std::uint32_t border) {
     Prediction p = prediction(i);
     if (p.pair_time != never && disks_[p.partner].count != p.partner_count) {
-        predict(i);
+        predict<false>(i);
         return;
     }
     earliest_pair(i, p, [&](auto&& visit) { cells_.for_each_entered(disks_, i, border, visit); });
-    file_prediction(i, p);
+    file_prediction<false>(i, p);
 }
 
 // Only disks in the cells along the edges of a periodic box can have neighbours across a side;
@@ -394,11 +405,12 @@ void EventSolver::earliest_pair_in(std::uint32_t i, Prediction& p, VisitCells& v
     });
 }
 
+template <bool Shells>
 void EventSolver::file_prediction(std::uint32_t i, Prediction& p) {
     // (Chosen here, not inside: one call instead of two on every prediction.)
-    const double border_time = now_ + (shells_on() ? earliest_wall_or_exit(i, p.border, p.kind)
-                                       : gravity_  ? earliest_border_or_wall(i, p.border, p.kind)
-                                                   : earliest_border_or_wall_straight(i, p.border, p.kind));
+    const double border_time = now_ + (Shells     ? earliest_wall_or_exit(i, p.border, p.kind)
+                                       : gravity_ ? earliest_border_or_wall(i, p.border, p.kind)
+                                                  : earliest_border_or_wall_straight(i, p.border, p.kind));
     double t = border_time;
     if (p.pair_time < border_time) p.kind = EventKind::pair, t = p.pair_time;
     prediction(i) = p;

@@ -71,9 +71,17 @@ private:
 
     void validate_input(const ParticleState<double>& initial) const;
     void reject_overlaps() const;
+    // The event loop and what it calls on every event are compiled once per neighbour design
+    // (Shells: neighbour_shells.h; otherwise the cells), chosen once per advance: the cells'
+    // loop carries no trace of the shells (measured: with runtime tests it cost 5 to 10 % per
+    // collision, bench/journal.md).
+    template <bool Shells>
+    void run_events(double t);
+    template <bool Shells>
     void process_event();
     // The speed layer, called from the event loop (each in a file of its own).
     // Requests the memory of the coming events ahead of time (prefetch_pipeline.h).
+    template <bool Shells>
     void prefetch_coming_events();
     // Renumbers the disks in cell order when due (cell_order_renumbering.h).
     void renumber_if_due();
@@ -98,7 +106,9 @@ private:
         vy = f.vy + gy_ * dt;
     }
     // Re-predicts disk i's earliest event from `now_` and files it in the queue (i is not a stone).
+    template <bool Shells>
     void predict(std::uint32_t i);
+    void predict_any(std::uint32_t i) { shells_on() ? predict<true>(i) : predict<false>(i); }
     // The same after disk i crossed `border` into a new cell without changing course.
     void predict_after_crossing(std::uint32_t i, std::uint32_t border);
     // Lowers p's pair collision to the earliest one with a disk j that visit_cells(visit) visits.
@@ -108,6 +118,7 @@ private:
     template <bool MinimumImage, typename VisitCells>
     void earliest_pair_in(std::uint32_t i, Prediction& p, VisitCells& visit_cells) const;
     // Adds disk i's earliest wall or border event to p and files the earlier event in the queue.
+    template <bool Shells>
     void file_prediction(std::uint32_t i, Prediction& p);
     // (earliest_border_or_wall under gravity, _straight without.)
     double earliest_border_or_wall(std::uint32_t i, std::uint8_t& which, EventKind& kind) const;
@@ -142,10 +153,6 @@ private:
     std::vector<double> last_collision_;  // TC model: each disk's last collision (kept if inelastic_)
     bool inelastic_ = false;               // pair or wall restitution below 1
     CellList cells_;  // (in the neighbour-list design, a grid of the shell centres)
-    NeighbourShells shells_;
-    double shell_ = 0;        // shell width delta (0: the cell-list design)
-    double shell_slack_ = 0;  // added to the list cutoff against round-off (build_shell)
-    std::vector<std::uint32_t> old_neighbours_;  // (exit_shell's scratch space)
     EventQueue<Slot> queue_;
     CellOrderRenumbering renumbering_;
     PrefetchPipeline prefetch_;
@@ -168,6 +175,14 @@ private:
     CompensatedSum wall_impulse_[4];   // momentum transferred to each wall
     CompensatedSum kinetic_integral_;  // integral of K dt up to kinetic_mark_
     double kinetic_ = 0, kinetic_mark_ = 0;
+
+    // The neighbour-list design, last: the members the cells' event loop reads every event stay
+    // together above (placed between the cells and the queue these cost the cells' loop 5 to
+    // 10 % per collision, bench/journal.md).
+    NeighbourShells shells_;
+    double shell_ = 0;        // shell width delta (0: the cell-list design)
+    double shell_slack_ = 0;  // added to the list cutoff against round-off (build_shell)
+    std::vector<std::uint32_t> old_neighbours_;  // (exit_shell's scratch space)
 };
 
 }  // namespace collide
