@@ -219,7 +219,8 @@ private:
     // Reads the heads of the 3x3 block around interior cell (cx, cy) into first[] (row by row)
     // and asks the memory for each head's record without waiting for it.
     template <typename Disks>
-    void read_interior_heads(const Disks& disks, std::int64_t cx, std::int64_t cy, std::uint32_t first[9]) const {
+    [[gnu::always_inline]] void read_interior_heads(const Disks& disks, std::int64_t cx, std::int64_t cy,
+                                                    std::uint32_t first[9]) const {
         const std::uint32_t* corner = &head_[std::size_t((cy - 1) * cells_x_ + cx - 1)];
         for (int r = 0; r < 3; ++r)
             for (int c = 0; c < 3; ++c) {

@@ -91,8 +91,10 @@ private:
 
     // Free flight of disk i from its own clock to `now_` (written back: the clock moves).
     void bring_to_now(std::uint32_t i);
-    // Position/velocity disk j would have at `now_`, without touching its state.
-    void position_now(std::uint32_t j, double& x, double& y, double& vx, double& vy) const {
+    // Position/velocity disk j would have at `now_`, without touching its state. (Always
+    // inlined: it runs for every neighbour of every prediction, and with the shells' loop
+    // compiled beside the cells' GCC stopped inlining it, which cost the cells' loop 4 to 8 %.)
+    [[gnu::always_inline]] void position_now(std::uint32_t j, double& x, double& y, double& vx, double& vy) const {
         // Stones have zero velocity and scenes with stones have no gravity: no special case.
         const Disk& f = disks_[j];
         const double dt = now_ - f.t;
