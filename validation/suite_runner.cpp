@@ -96,8 +96,9 @@ const CaseResult* reference_for(const CaseResult& r, const std::vector<CaseResul
 // Cases that already have a readable result file from an earlier run (for --resume), whose
 // HDF5 file is complete too (a truncated one, e.g. after a full disk, makes the case run again),
 // and whose definition (case_definition.h) is the case's now: a case whose scene file, suite
-// entry, backend settings, solver or collide build changed runs again, and one line says how
-// many and why ("3 cases rerun: scene file changed (2), duration changed (1)").
+// entry, backend settings, solver or collide build changed runs again, and so does one that
+// timed out; one line says how many and why ("3 cases rerun: scene file changed (2), timed out
+// before (1)").
 std::map<std::string, CaseResult> finished_results(const std::vector<CaseSpec>& specs, const std::string& output_dir,
                                                    std::FILE* progress) {
     std::map<std::string, CaseResult> done;
@@ -114,6 +115,9 @@ std::map<std::string, CaseResult> finished_results(const std::vector<CaseSpec>& 
                 for (const std::string& part : changed_parts(result.spec.definition, spec.definition))
                     why.push_back(part + " changed");
             }
+            // A case killed at the time limit says how long the machine took that hour (or how
+            // long it stood stopped), not what the case gives: it runs again.
+            if (result.status == RunStatus::timed_out) why.push_back("timed out before");
             if (!why.empty()) {
                 ++changed;
                 for (const std::string& reason : why) ++reasons[reason];

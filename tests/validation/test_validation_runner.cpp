@@ -97,14 +97,16 @@ TEST(ValidationRunner, ResumeSkipsFinishedCasesAndRunsMissingOnes) {
 }
 
 // What --resume printed, and its outcome.
-std::pair<validation::SuiteOutcome, std::string> resume(const validation::Suite& suite, const std::string& dir) {
+std::pair<validation::SuiteOutcome, std::string> resume(const validation::Suite& suite, const std::string& dir,
+                                                        const std::vector<BackendInfo>& backends = {
+                                                            test_backend("good", Fault::none)}) {
     std::FILE* progress = std::tmpfile();
     validation::RunnerOptions options;
     options.output_dir = dir;
     options.jobs = 2;
     options.resume = true;
     options.progress = progress;
-    auto outcome = validation::run_suite(suite, {test_backend("good", Fault::none)}, options);
+    auto outcome = validation::run_suite(suite, backends, options);
     std::rewind(progress);
     std::string text;
     for (int c; (c = std::fgetc(progress)) != EOF;) text += char(c);
@@ -137,6 +139,22 @@ TEST(ResumeRerunsChangedCases, AChangedSceneOrSuiteEntryRunsTheCaseAgainAndSaysW
     EXPECT_NE(duration.second.find("resume: 2 cases rerun: duration changed (2)"), std::string::npos) << duration.second;
     EXPECT_EQ(duration.first.cases[0].duration, 0.1);
     EXPECT_EQ(resume(suite, dir).first.cases_resumed, 2u);  // and kept once it ran so
+}
+
+// A case killed at the time limit (a slow hour, a runner stopped with SIGSTOP) is no verdict on
+// the case: --resume runs it again and says so, and keeps the cases that finished.
+TEST(ResumeRerunsChangedCases, ACaseThatTimedOutRunsAgain) {
+    const auto suite = test_suite(two_disk_scene(), {"good", "hangs"});
+    const std::vector<BackendInfo> backends = {test_backend("good", Fault::none), test_backend("hangs", Fault::hangs)};
+    const std::string dir = fresh_output_dir("resume_timed_out");
+    const auto first = run(suite, backends, dir);
+    ASSERT_EQ(first.cases_run, 4u);
+    const auto [second, text] = resume(suite, dir, backends);
+    EXPECT_EQ(second.cases_resumed, 2u) << "the finished cases are kept";
+    EXPECT_EQ(second.cases_run, 2u) << "the timed-out ones run again";
+    EXPECT_NE(text.find("resume: 2 cases rerun: timed out before (2)"), std::string::npos) << text;
+    for (const auto& c : second.cases)
+        EXPECT_EQ(c.status, c.spec.backend == "hangs" ? RunStatus::timed_out : RunStatus::completed) << c.spec.id;
 }
 
 TEST(ValidationRunner, RefusedSceneAndInapplicableChecksAreListedWithReasons) {
