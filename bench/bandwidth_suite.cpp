@@ -71,8 +71,7 @@ double triad_bandwidth(std::size_t n, int threads, int reps) {
 //   contacts: read the pairs, and x, y (the partner's in cache)         8 p + 8
 //   update:   as above                                                  52
 // and every k-th step the grid as above (72 + 16 c), then the list: read x, y and the row
-// starts (8 + 4 c), write each chunk's pairs, read and write them into one list (24 p), save
-// x, y (16).
+// starts (8 + 4 c), write each chunk's pairs (8 p; the chunks are the list), save x, y (16).
 struct TrafficModel {
     double cells_per_particle = 0;
     double pairs_per_particle = 0;  // 0: the cell path
@@ -83,7 +82,7 @@ double cpu_bytes_per_particle_step(const TrafficModel& m) {
     const double c = m.cells_per_particle, p = m.pairs_per_particle;
     const double grid = 12 + 12 + 8 + 40 + 16 * c, update = 36 + 16;
     if (p == 0) return grid + 20 + 16 + 4 * c + update;
-    const double build = grid + 8 + 4 * c + 24 * p + 16;
+    const double build = grid + 8 + 4 * c + 8 * p + 16;
     return 16 + 8 * p + 8 + update + build / m.steps_per_build;
 }
 

@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <chrono>
 #include <climits>
-#include <cstdio>
 #include <stdexcept>
 #include <string>
 
+#include "core/numerics/number_text.h"
 #include "core/scene/option_reader.h"
 #include "core/numerics/phase_timer.h"
 #include "core/numerics/representability.h"
@@ -259,14 +259,6 @@ void CpuSolver::read_state(ParticleState<double>& out) const {
     }
 }
 
-namespace {
-std::string shortest(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.17g", v);
-    return text;
-}
-}  // namespace
-
 std::map<std::string, std::string> CpuSolver::provenance() const {
     auto on_off = [](bool b) { return std::string(b ? "on" : "off"); };
     return {
@@ -274,7 +266,7 @@ std::map<std::string, std::string> CpuSolver::provenance() const {
         {"cpu.openmp", std::to_string(_OPENMP)},
         {"cpu.specialise", on_off(specialise_)},
         {"cpu.sort_interval", std::to_string(sort_interval_)},
-        {"cpu.skin", shortest(skin_)},
+        {"cpu.skin", round_trip_text(skin_)},
         {"cpu.features", "gravity=" + on_off(features_.gravity) + " damping=" + on_off(features_.damping) +
                              " friction=" + on_off(features_.friction) + " stones=" + on_off(features_.stones) +
                              " uniform_radius=" + on_off(features_.uniform_radius) +

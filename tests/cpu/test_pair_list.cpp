@@ -148,9 +148,8 @@ TEST(PairList, HoldsEachPairOnceWhateverTheThreadCount) {
         cpu::PairList list;
         list.reset(0.5f);
         list.build<false, false, false>(c.state, grid, c.params, threads);
-        // All pairs "in contact" at reach: find_contacts against a doubled radius would be
-        // another test; here, the list itself through the contacts of a state where every
-        // disk is grown to its reach.
+        // The list itself, read as the contacts of the same state with every disk grown by
+        // half the skin: contact at r_a + r_b + skin is exactly the list's reach.
         ListCase grown = c;
         for (float& r : grown.state.radius) r += 0.25f;
         list.find_contacts<false, false>(grown.state, grown.params, threads);
