@@ -41,6 +41,51 @@ struct Corrections {
     float* dvy;
 };
 
+// The separation x_i - x_j of two disks, by the minimum image when the walls are periodic.
+template <bool Periodic>
+inline std::pair<float, float> separation(float xi, float yi, float xj, float yj, const PhaseParams& p) {
+    float sep_x = xi - xj, sep_y = yi - yj;
+    if constexpr (Periodic) {
+        sep_x = WallLaw<float>::minimum_image(sep_x, p.width);
+        sep_y = WallLaw<float>::minimum_image(sep_y, p.height);
+    }
+    return {sep_x, sep_y};
+}
+
+// Position and velocity of one disk, as a contact reads them.
+struct DiskMotion {
+    float x, y, vx, vy;
+};
+
+// Disk i's share of its contact with disk j: the shared contact law with the separation
+// x_i - x_j and the relative velocity v_i - v_j. The one call sequence of every contact loop
+// below (the cell path, the cell path in cell order and the pair list), so that all three
+// give the same bits for the same pair.
+template <bool Periodic>
+inline ContactLaw<float>::Delta contact_share(const DiskMotion& i, const DiskMotion& j, float contact, float inv_mass_i,
+                                              float inv_mass_j, const PhaseParams& p, float mu) {
+    const auto [sep_x, sep_y] = separation<Periodic>(i.x, i.y, j.x, j.y, p);
+    return ContactLaw<float>::delta(sep_x, sep_y, i.vx - j.vx, i.vy - j.vy, contact, inv_mass_i, inv_mass_j,
+                                    p.restitution, mu);
+}
+
+// A disk's running sum of its shares, added in the order of the calls.
+struct ShareSum {
+    float dx = 0, dy = 0, dvx = 0, dvy = 0;
+    void add(const ContactLaw<float>::Delta& d) {
+        dx += d.dx;
+        dy += d.dy;
+        dvx += d.dvx;
+        dvy += d.dvy;
+    }
+    void store(Corrections out, std::size_t i) const {
+        out.dx[i] = dx;
+        out.dy[i] = dy;
+        out.dvx[i] = dvx;
+        out.dvy[i] = dvy;
+    }
+};
+
 // Velocity update v += (g - gamma v) h, the field accelerations and linear drag of both rules,
 // with the terms a scene does not use compiled out. Stones (inverse mass 0) are kinematic.
 template <bool Gravity, bool Damping, bool Stones>
@@ -130,39 +175,27 @@ std::int64_t collide_range(const ParticleState<float>& s, const CellList& grid, 
             const int range_count = grid.neighbour_ranges<Periodic>(cx, cy, ranges);
             for (std::uint32_t a = first; a < last; ++a) {
                 const std::uint32_t i = index[a];
-                float dx = 0, dy = 0, dvx = 0, dvy = 0;
+                ShareSum sum;
                 const float wi = inv_mass[i];
                 if (!Stones || wi != 0.0f) {  // a stone's share is always zero
-                    const float xi = x[i], yi = y[i], vxi = vx[i], vyi = vy[i];
+                    const DiskMotion mi{x[i], y[i], vx[i], vy[i]};
                     const float ri = UniformRadius ? p.radius : radius[i];
                     for (int r = 0; r < range_count; ++r) {
                         for (std::uint32_t b = ranges[r].begin; b < ranges[r].end; ++b) {
                             const std::uint32_t j = index[b];
-                            float sep_x = xi - x[j], sep_y = yi - y[j];
-                            if constexpr (Periodic) {
-                                sep_x = WallLaw<float>::minimum_image(sep_x, p.width);
-                                sep_y = WallLaw<float>::minimum_image(sep_y, p.height);
-                            }
+                            const auto [sep_x, sep_y] = separation<Periodic>(mi.x, mi.y, x[j], y[j], p);
                             // Squared-distance reject first: no square root, no
                             // other load, no law call. Disk i itself (distance 0) passes it
                             // and is skipped by the slot test.
                             const float contact2 = UniformRadius ? uniform_contact2 : (ri + radius[j]) * (ri + radius[j]);
                             if (sep_x * sep_x + sep_y * sep_y >= contact2 || b == a) continue;
                             const float contact = UniformRadius ? ri + ri : ri + radius[j];
-                            const auto d = ContactLaw<float>::delta(sep_x, sep_y, vxi - vx[j], vyi - vy[j], contact,
-                                                                    wi, inv_mass[j], p.restitution, mu);
-                            dx += d.dx;
-                            dy += d.dy;
-                            dvx += d.dvx;
-                            dvy += d.dvy;
+                            sum.add(contact_share<Periodic>(mi, {x[j], y[j], vx[j], vy[j]}, contact, wi, inv_mass[j], p, mu));
                             if (a < b || (Stones && inv_mass[j] == 0.0f)) ++contacts;
                         }
                     }
                 }
-                out.dx[i] = dx;
-                out.dy[i] = dy;
-                out.dvx[i] = dvx;
-                out.dvy[i] = dvy;
+                sum.store(out, i);
             }
         }
     }
@@ -200,34 +233,24 @@ std::int64_t collide_range_in_cell_order(const ParticleState<float>& s, const Ce
         const std::uint32_t *below = grid.row_start<Periodic>(cy - 1), *own = grid.row_start<Periodic>(cy),
                             *above = grid.row_start<Periodic>(cy + 1);
         for (std::uint32_t a = row_first; a < row_last; ++a) {
-            float dx = 0, dy = 0, dvx = 0, dvy = 0;
+            ShareSum sum;
             const float wi = inv_mass[a];
             if (!Stones || wi != 0.0f) {  // a stone's share is always zero
-                const float xi = x[a], yi = y[a], vxi = vx[a], vyi = vy[a];
+                const DiskMotion ma{x[a], y[a], vx[a], vy[a]};
                 const float ri = UniformRadius ? p.radius : radius[a];
-                q.xi = xi;
-                q.yi = yi;
+                q.xi = ma.x;
+                q.yi = ma.y;
                 q.ri = ri;
                 // Disk a's share of its contact with slot b, added in the order of the calls.
                 auto visit = [&](std::uint32_t b) {
-                    float sep_x = xi - x[b], sep_y = yi - y[b];
-                    if constexpr (Periodic) {
-                        sep_x = WallLaw<float>::minimum_image(sep_x, p.width);
-                        sep_y = WallLaw<float>::minimum_image(sep_y, p.height);
-                    }
                     const float contact = UniformRadius ? ri + ri : ri + radius[b];
-                    const auto d = ContactLaw<float>::delta(sep_x, sep_y, vxi - vx[b], vyi - vy[b], contact, wi,
-                                                            inv_mass[b], p.restitution, mu);
-                    dx += d.dx;
-                    dy += d.dy;
-                    dvx += d.dvx;
-                    dvy += d.dvy;
+                    sum.add(contact_share<Periodic>(ma, {x[b], y[b], vx[b], vy[b]}, contact, wi, inv_mass[b], p, mu));
                     if (a < b || (Stones && inv_mass[b] == 0.0f)) ++contacts;
                 };
                 auto visit_mask = [&](unsigned mask, std::uint32_t block) {
                     for (; mask != 0; mask &= mask - 1) visit(block + std::uint32_t(__builtin_ctz(mask)));
                 };
-                const std::int64_t cx = grid.column_of(xi);
+                const std::int64_t cx = grid.column_of(ma.x);
                 bool general = Periodic && (!periodic_fast || cx == 0 || cx == cells_x - 1);
                 if (!general) {
                     const std::int64_t lo = Periodic || cx > 0 ? cx - 1 : 0;
@@ -255,10 +278,7 @@ std::int64_t collide_range_in_cell_order(const ParticleState<float>& s, const Ce
                     }
                 }
             }
-            out.dx[a] = dx;
-            out.dy[a] = dy;
-            out.dvx[a] = dvx;
-            out.dvy[a] = dvy;
+            sum.store(out, a);
         }
     }
     return contacts;
@@ -404,14 +424,10 @@ std::int64_t pair_shares(const ParticleState<float>& s, const PhaseParams& p, co
     const float *radius = s.radius.data(), *inv_mass = s.inv_mass.data();
     const float mu = Friction ? p.friction : 0.0f;
     auto share = [&](std::uint32_t self, std::uint32_t other, float out[4]) {
-        float sep_x = x[self] - x[other], sep_y = y[self] - y[other];
-        if constexpr (Periodic) {
-            sep_x = WallLaw<float>::minimum_image(sep_x, p.width);
-            sep_y = WallLaw<float>::minimum_image(sep_y, p.height);
-        }
         const float contact = UniformRadius ? p.radius + p.radius : radius[self] + radius[other];
-        const auto d = ContactLaw<float>::delta(sep_x, sep_y, vx[self] - vx[other], vy[self] - vy[other], contact,
-                                                inv_mass[self], inv_mass[other], p.restitution, mu);
+        const auto d = contact_share<Periodic>({x[self], y[self], vx[self], vy[self]},
+                                               {x[other], y[other], vx[other], vy[other]}, contact, inv_mass[self],
+                                               inv_mass[other], p, mu);
         out[0] = d.dx, out[1] = d.dy, out[2] = d.dvx, out[3] = d.dvy;
     };
     std::int64_t found = 0;
