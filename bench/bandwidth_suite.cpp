@@ -17,10 +17,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "cpu/cpu_solver.h"
 #include "frame_timing.h"
 
 namespace collide::bench {
@@ -86,20 +87,21 @@ double cpu_bytes_per_particle_step(const TrafficModel& m) {
     return 16 + 8 * p + 8 + update + build / m.steps_per_build;
 }
 
-// The model's inputs from a run: the grid's cells (edge 2 r_max (1 + skin), the grid's rule)
-// and, for the pair list, the list's length and builds over the measured frames.
+// The model's inputs from a run: the grid's cells (the solver's own count, whatever the skin
+// it ran with) and, for the pair list, the list's length and builds over the measured frames.
 TrafficModel traffic_of(const GasCase& gas, const FrameTiming& t, int frames) {
     const double n = double(gas.initial.size());
-    const auto pairs = t.counters.find("pair_list_pairs");
-    const auto builds = t.counters_gained.find("pair_list_builds");
-    const bool listed = pairs != t.counters.end();
-    const double cell = 1.0 * (1.0 + (listed ? cpu::CpuSolver::kDefaultSkin : 0.0));  // 2 r_max = 1
+    auto counter = [&](const std::map<std::string, double>& counters, const char* name) {
+        const auto found = counters.find(name);
+        return found != counters.end() ? found->second : -1.0;
+    };
+    const double cells = counter(t.counters, "grid_cells"), pairs = counter(t.counters, "pair_list_pairs");
+    if (cells < 0) throw std::runtime_error("bench bandwidth: the cpu run reported no grid_cells counter");
     TrafficModel m;
-    m.cells_per_particle = std::floor(gas.scene.world.width() / cell) * std::floor(gas.scene.world.height() / cell) / n;
-    if (listed) {
-        m.pairs_per_particle = pairs->second / n;
-        const double built = builds != t.counters_gained.end() ? builds->second : 0.0;
-        m.steps_per_build = double(frames) / std::max(1.0, built);
+    m.cells_per_particle = cells / n;
+    if (pairs >= 0) {
+        m.pairs_per_particle = pairs / n;
+        m.steps_per_build = double(frames) / std::max(1.0, counter(t.counters_gained, "pair_list_builds"));
     }
     return m;
 }

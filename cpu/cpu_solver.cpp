@@ -65,6 +65,7 @@ void CpuSolver::load(const Scene& scene, const ParticleState<double>& initial) {
     // With a pair list the grid only builds the list: its cells must hold the reach.
     const double diameter = 2.0 * double(r_max);
     grid_.configure(w, diameter * (1.0 + skin_));
+    stats_.counters["grid_cells"] = double(grid_.cell_count());
     pairs_.reset(float(skin_ * diameter));
 }
 
