@@ -43,7 +43,7 @@ struct CandidateQuery {
 // not disk i's own slot `self`, and the scalar loop would not skip it for distance. Slots at or
 // past `end` are not tested.
 template <bool UniformRadius, bool Periodic>
-inline unsigned candidate_mask(const CandidateQuery& q, std::uint32_t b, std::uint32_t end, std::uint32_t self) {
+[[gnu::always_inline]] inline unsigned candidate_mask(const CandidateQuery& q, std::uint32_t b, std::uint32_t end, std::uint32_t self) {
 #if defined(__SSE2__)
     __m128 xj, yj, rj = _mm_setzero_ps();
     if (b + 4 <= q.n) [[likely]] {

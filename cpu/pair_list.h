@@ -30,6 +30,37 @@
 
 namespace collide::cpu {
 
+// Appends pairs to a chunk's buffer without a branch on whether a candidate is kept. Whether a
+// block of candidates holds a pair within reach is a branch the processor cannot predict: its
+// misses were a third of the list build's time (bench/journal.md). Here every candidate is
+// written at the end and the end moves past it only when it is kept, so the kept pairs come
+// out in the order of the candidates, as push_back would give them.
+class PairAppender {
+public:
+    explicit PairAppender(std::vector<DiskPair>& out) : out_(out), size_(out.size()) {}
+    PairAppender(const PairAppender&) = delete;
+    PairAppender& operator=(const PairAppender&) = delete;
+    ~PairAppender() { out_.resize(size_); }  // the buffer ends at the last kept pair
+
+    // Room for `count` more candidates.
+    void make_room(std::size_t count) {
+        if (out_.size() < size_ + count) [[unlikely]]
+            out_.resize(std::max(2 * out_.size(), size_ + count));
+    }
+    void put(DiskPair pair, bool keep) {
+        out_[size_] = pair;
+        size_ += std::size_t(keep);
+    }
+    // The pairs (a, block + l) for the set bits l of a candidate mask (candidate_mask.h).
+    void put_mask(std::uint32_t a, std::uint32_t block, unsigned mask) {
+        for (unsigned l = 0; l < 4; ++l) put({a, block + l}, (mask >> l) & 1u);
+    }
+
+private:
+    std::vector<DiskPair>& out_;
+    std::size_t size_;
+};
+
 class PairList {
 public:
     // A disk may move this fraction of the skin between builds (one half, less a margin for the
@@ -164,6 +195,7 @@ void PairList::pairs_in_rows(const ParticleState<float>& s, const CellList& grid
     const std::uint32_t* index = InCellOrder ? nullptr : grid.sorted_index();
     const std::int64_t cells_x = grid.cells_x();
     auto disk = [index](std::uint32_t slot) { return InCellOrder ? slot : index[slot]; };
+    PairAppender kept(out);
     for (std::int64_t cy = std::int64_t(row_begin); cy < std::int64_t(row_end); ++cy)
         for (std::int64_t cx = 0; cx < cells_x; ++cx) {
             const std::int64_t c = cy * cells_x + cx;
@@ -173,18 +205,20 @@ void PairList::pairs_in_rows(const ParticleState<float>& s, const CellList& grid
             for (std::uint32_t slot = cell_start[c]; slot < cell_start[c + 1]; ++slot) {
                 const std::uint32_t i = disk(slot);
                 const float xi = x[i], yi = y[i], ri = UniformRadius ? p.radius : radius[i];
-                for (int r = 0; r < range_count; ++r)
+                for (int r = 0; r < range_count; ++r) {
+                    kept.make_room(ranges[r].end - ranges[r].begin);
                     for (std::uint32_t b = ranges[r].begin; b < ranges[r].end; ++b) {
                         const std::uint32_t j = disk(b);
-                        if (j <= i) continue;  // each pair once, from its lower slot
                         float sep_x = xi - x[j], sep_y = yi - y[j];
                         if constexpr (Periodic) {
                             sep_x = WallLaw<float>::minimum_image(sep_x, p.width);
                             sep_y = WallLaw<float>::minimum_image(sep_y, p.height);
                         }
                         const float reach = ri + (UniformRadius ? ri : radius[j]) + skin_;
-                        if (!(sep_x * sep_x + sep_y * sep_y >= reach * reach)) out.push_back({i, j});
+                        // Each pair once, from its lower slot; within reach (not >=: a NaN counts).
+                        kept.put({i, j}, j > i && !(sep_x * sep_x + sep_y * sep_y >= reach * reach));
                     }
+                }
             }
         }
 }
@@ -202,6 +236,7 @@ void PairList::pairs_in_rows_forward(const ParticleState<float>& s, const CellLi
     const float reach = p.radius + p.radius + skin_;
     CandidateQuery q{0, 0, 0, reach * reach, p.width, p.height, s.x.data(), s.y.data(),
                      UniformRadius ? nullptr : s.radius.data(), std::uint32_t(s.size())};
+    PairAppender kept(out);
     for (std::int64_t cy = std::int64_t(row_begin); cy < std::int64_t(row_end); ++cy) {
         const std::uint32_t *own = grid.row_start<false>(cy), *above = grid.row_start<false>(cy + 1);
         for (std::uint32_t a = cell_start[cy * cells_x]; a < cell_start[(cy + 1) * cells_x]; ++a) {
@@ -211,25 +246,21 @@ void PairList::pairs_in_rows_forward(const ParticleState<float>& s, const CellLi
             const std::int64_t cx = grid.column_of(q.xi);
             const std::int64_t lo = cx > 0 ? cx - 1 : 0, hi = cx + 2 < cells_x ? cx + 2 : cells_x;
             const std::uint32_t b0 = a + 1, e0 = own[hi], b1 = above[lo], e1 = above[hi];
-            auto add = [&](unsigned mask, std::uint32_t block) {
-                for (; mask != 0; mask &= mask - 1) out.push_back({a, block + std::uint32_t(__builtin_ctz(mask))});
-            };
             if (e0 - b0 <= 8 && e1 - b1 <= 8) [[likely]] {
                 // Up to eight slots a range (nearly always): four block tests, no branch on the
                 // lengths; a block past its range's end tests nothing.
-                const unsigned m0 = candidate_mask<UniformRadius, false>(q, b0, e0, a);
-                const unsigned m1 = candidate_mask<UniformRadius, false>(q, b0 + 4, e0, a);
-                const unsigned m2 = candidate_mask<UniformRadius, false>(q, b1, e1, a);
-                const unsigned m3 = candidate_mask<UniformRadius, false>(q, b1 + 4, e1, a);
-                add(m0, b0);
-                add(m1, b0 + 4);
-                add(m2, b1);
-                add(m3, b1 + 4);
+                kept.make_room(16);
+                kept.put_mask(a, b0, candidate_mask<UniformRadius, false>(q, b0, e0, a));
+                kept.put_mask(a, b0 + 4, candidate_mask<UniformRadius, false>(q, b0 + 4, e0, a));
+                kept.put_mask(a, b1, candidate_mask<UniformRadius, false>(q, b1, e1, a));
+                kept.put_mask(a, b1 + 4, candidate_mask<UniformRadius, false>(q, b1 + 4, e1, a));
                 continue;
             }
             for (const SlotRange range : {SlotRange{b0, e0}, SlotRange{b1, e1}})
-                for (std::uint32_t block = range.begin; block < range.end; block += 4)
-                    add(candidate_mask<UniformRadius, false>(q, block, range.end, a), block);
+                for (std::uint32_t block = range.begin; block < range.end; block += 4) {
+                    kept.make_room(4);
+                    kept.put_mask(a, block, candidate_mask<UniformRadius, false>(q, block, range.end, a));
+                }
         }
     }
 }
