@@ -75,14 +75,15 @@ double triad_bandwidth(std::size_t n, int threads, int reps) {
 // starts (8 + 4 c), write each chunk's pairs (8 p; the chunks are the list), save x, y (16).
 struct TrafficModel {
     double cells_per_particle = 0;
-    double pairs_per_particle = 0;  // 0: the cell path
+    bool listed = false;            // the pair list (else the cell path)
+    double pairs_per_particle = 0;
     double steps_per_build = 1;
 };
 
 double cpu_bytes_per_particle_step(const TrafficModel& m) {
     const double c = m.cells_per_particle, p = m.pairs_per_particle;
     const double grid = 12 + 12 + 8 + 40 + 16 * c, update = 36 + 16;
-    if (p == 0) return grid + 20 + 16 + 4 * c + update;
+    if (!m.listed) return grid + 20 + 16 + 4 * c + update;
     const double build = grid + 8 + 4 * c + 8 * p + 16;
     return 16 + 8 * p + 8 + update + build / m.steps_per_build;
 }
@@ -100,6 +101,7 @@ TrafficModel traffic_of(const GasCase& gas, const FrameTiming& t, int frames) {
     TrafficModel m;
     m.cells_per_particle = cells / n;
     if (pairs >= 0) {
+        m.listed = true;
         m.pairs_per_particle = pairs / n;
         m.steps_per_build = double(frames) / std::max(1.0, counter(t.counters_gained, "pair_list_builds"));
     }

@@ -27,10 +27,10 @@ namespace collide::cpu {
 // Below this many items a loop runs inline on the calling thread: waking the pool costs a
 // few microseconds, about the time a single thread needs for this many particles.
 inline constexpr std::size_t kInlineBelow = 4096;
-// Chunks smaller than this cost more in claiming than they save in balance.
+// Chunks smaller than this cost more in hand-offs than they save in balance.
 inline constexpr std::size_t kMinChunk = 1024;
-// About four chunks per worker: a worker that finishes a light chunk claims another, so a
-// dense region costs at most about a quarter of one worker's share in idle time.
+// About four chunks per worker, dealt in turn: a dense region spans chunks of several workers
+// instead of falling to one.
 inline constexpr std::size_t kChunksPerThread = 4;
 
 // Runs body over [0, n) in chunks. `particles` is the number of particles the loop covers,
