@@ -149,11 +149,8 @@ bool PairList::is_stale(const ParticleState<float>& s, const PhaseParams& p, int
     const std::int64_t moved = parallel_for(n, threads, [=](std::size_t begin, std::size_t end) {
         std::int64_t far = 0;
         for (std::size_t i = begin; i < end; ++i) {
-            float dx = x[i] - x0[i], dy = y[i] - y0[i];
-            if constexpr (Periodic) {  // a disk that wrapped has moved by its image's distance
-                dx = WallLaw<float>::minimum_image(dx, p.width);
-                dy = WallLaw<float>::minimum_image(dy, p.height);
-            }
+            // A disk that wrapped has moved by its image's distance.
+            const auto [dx, dy] = separation<Periodic>(x[i], y[i], x0[i], y0[i], p);
             far += !(dx * dx + dy * dy < limit2);
         }
         return far;
@@ -209,11 +206,7 @@ void PairList::pairs_in_rows(const ParticleState<float>& s, const CellList& grid
                     kept.make_room(ranges[r].end - ranges[r].begin);
                     for (std::uint32_t b = ranges[r].begin; b < ranges[r].end; ++b) {
                         const std::uint32_t j = disk(b);
-                        float sep_x = xi - x[j], sep_y = yi - y[j];
-                        if constexpr (Periodic) {
-                            sep_x = WallLaw<float>::minimum_image(sep_x, p.width);
-                            sep_y = WallLaw<float>::minimum_image(sep_y, p.height);
-                        }
+                        const auto [sep_x, sep_y] = separation<Periodic>(xi, yi, x[j], y[j], p);
                         const float reach = ri + (UniformRadius ? ri : radius[j]) + skin_;
                         // Each pair once, from its lower slot; within reach (not >=: a NaN counts).
                         kept.put({i, j}, j > i && !(sep_x * sep_x + sep_y * sep_y >= reach * reach));
@@ -275,11 +268,7 @@ void PairList::find_contacts(const ParticleState<float>& s, const PhaseParams& p
         std::vector<DiskPair>& out = chunk_contacts_[c];
         out.clear();
         for (const DiskPair q : chunk_pairs_[c]) {
-            float sep_x = x[q.a] - x[q.b], sep_y = y[q.a] - y[q.b];
-            if constexpr (Periodic) {
-                sep_x = WallLaw<float>::minimum_image(sep_x, p.width);
-                sep_y = WallLaw<float>::minimum_image(sep_y, p.height);
-            }
+            const auto [sep_x, sep_y] = separation<Periodic>(x[q.a], y[q.a], x[q.b], y[q.b], p);
             const float contact = UniformRadius ? 0.0f : radius[q.a] + radius[q.b];
             const float contact2 = UniformRadius ? uniform_contact2 : contact * contact;
             if (!(sep_x * sep_x + sep_y * sep_y >= contact2)) [[unlikely]] out.push_back(q);
