@@ -84,7 +84,6 @@ void CpuSolver::step() {
 void CpuSolver::step_collide_first(float dt) {
     contact_phase();
     correct_and_integrate(dt);
-    after_update();
 }
 
 // The integrate-first sub-step in six steps: (1) field accelerations, (2) velocity with damping,
@@ -94,7 +93,6 @@ void CpuSolver::substep_integrate_first(float h) {
     integrate(h);
     contact_phase();
     correct();
-    after_update();
 }
 
 // Phases 4 and 5: with a skin, the pair list (rebuilt with the grid only when stale) and the
@@ -109,8 +107,25 @@ void CpuSolver::contact_phase() {
     }
 }
 
-void CpuSolver::after_update() {
-    if (skin_ > 0) clear_pair_contacts();
+// Runs update(begin, end) over the disks in parallel chunks. On the pair list each chunk first
+// adds its own disks' contact shares to the corrections, in list order, and clears them after
+// the update, in the thread that owns the chunk: no thread writes a correction another reads
+// (phase_kernels.h, add_pair_shares).
+template <typename Update>
+void CpuSolver::update_with_corrections(Update&& update) {
+    const bool on_pairs = skin_ > 0;
+    const auto& found = pairs_.contact_chunks();
+    parallel_for(state_.size(), threads_, [&](std::size_t b, std::size_t e) {
+        const auto begin = std::uint32_t(b), end = std::uint32_t(e);
+        if (on_pairs)
+            for (std::size_t c = 0; c < found.size(); ++c)
+                add_pair_shares(found[c].data(), shares_[c].data(), found[c].size(), corrections(), begin, end);
+        update(b, e);
+        if (on_pairs)
+            for (const auto& contacts : found)
+                clear_pair_corrections(contacts.data(), contacts.size(), corrections(), begin, end);
+        return std::int64_t(0);
+    });
 }
 
 void CpuSolver::integrate(float h) {
@@ -214,23 +229,15 @@ void CpuSolver::collide_pairs() {
                                                                                        found.size(), shares_[c].data());
         });
     }, features_.friction, features_.stones, features_.uniform_radius, features_.periodic);
-    const auto& found = pairs_.contact_chunks();
-    for (std::size_t c = 0; c < chunks; ++c) {  // in list order, on this thread
-        add_pair_shares(found[c].data(), shares_[c].data(), found[c].size(), corrections());
-        stats_.contacts += contacts_per_chunk_[c];
-    }
-}
-
-void CpuSolver::clear_pair_contacts() {
-    PhaseTimer timer(stats_, phase::collide);
-    for (const auto& found : pairs_.contact_chunks()) clear_pair_corrections(found.data(), found.size(), corrections());
+    // The shares reach the corrections in the update (update_with_corrections).
+    for (std::size_t c = 0; c < chunks; ++c) stats_.contacts += contacts_per_chunk_[c];
 }
 
 void CpuSolver::correct() {
     PhaseTimer timer(stats_, phase::correct);
     dispatch([&]<bool Stones, bool Periodic>() {
-        parallel_for(state_.size(), threads_, [&](std::size_t b, std::size_t e) {
-            return correct_range<Stones, Periodic>(state_, corrections(), params_, b, e);
+        update_with_corrections([&](std::size_t b, std::size_t e) {
+            correct_range<Stones, Periodic>(state_, corrections(), params_, b, e);
         });
     }, features_.stones, features_.periodic);
 }
@@ -238,9 +245,8 @@ void CpuSolver::correct() {
 void CpuSolver::correct_and_integrate(float dt) {
     PhaseTimer timer(stats_, phase::integrate);
     dispatch([&]<bool Gravity, bool Damping, bool Stones, bool Periodic>() {
-        parallel_for(state_.size(), threads_, [&](std::size_t b, std::size_t e) {
-            return correct_and_integrate_range<Gravity, Damping, Stones, Periodic>(state_, corrections(), params_,
-                                                                                   dt, b, e);
+        update_with_corrections([&](std::size_t b, std::size_t e) {
+            correct_and_integrate_range<Gravity, Damping, Stones, Periodic>(state_, corrections(), params_, dt, b, e);
         });
     }, features_.gravity, features_.damping, features_.stones, features_.periodic);
 }

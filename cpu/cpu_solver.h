@@ -63,9 +63,9 @@ private:
     void collide();                   // phase 5: one-sided Jacobi contact pass
     void refresh_pairs();             // the grid and the pair list, when the list is stale
     void collide_pairs();             // phase 5 on the pair list
-    void clear_pair_contacts();       // after the update: corrections back to zero
     void contact_phase();             // phases 4 and 5, on the pair list or the cell path
-    void after_update();
+    template <typename Update>
+    void update_with_corrections(Update&& update);  // the update, with the pair list's shares
     void correct();                   // phase 6 of integrate-first
     void correct_and_integrate(float dt);  // collide-first after its contact pass
     Corrections corrections() { return {dx_.data(), dy_.data(), dvx_.data(), dvy_.data()}; }

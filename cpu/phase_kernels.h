@@ -442,13 +442,19 @@ std::int64_t pair_shares(const ParticleState<float>& s, const PhaseParams& p, co
     return found;
 }
 
-// The shares added to the corrections, contact by contact in the order given (disk a's, then
-// disk b's): the order of every per-disk sum. The corrections are zero outside the contacts
+// The shares of the disks in [begin, end) added to the corrections, contact by contact in the
+// order given (disk a's, then disk b's): the order of every per-disk sum, whatever range a
+// thread owns. Each thread adds the shares of its own disks only, so the corrections are
+// written by the thread that then reads them (a serial pass on one thread made the other
+// core fetch every corrected disk's cache lines, and made two threads slower than one at
+// N = 10^4: bench/journal.md). The corrections are zero outside the contacts
 // (clear_pair_corrections resets them after the update), so each sum starts from zero, as the
 // cell path's does; a stone's zero share leaves its zero correction zero.
-inline void add_pair_shares(const DiskPair* contacts, const PairShares* shares, std::size_t count, Corrections out) {
+inline void add_pair_shares(const DiskPair* contacts, const PairShares* shares, std::size_t count, Corrections out,
+                            std::uint32_t begin, std::uint32_t end) {
     for (std::size_t k = 0; k < count; ++k)
         for (const auto& [i, d] : {std::pair{contacts[k].a, shares[k].a}, std::pair{contacts[k].b, shares[k].b}}) {
+            if (i - begin >= end - begin) continue;  // not in [begin, end) (unsigned: one test)
             out.dx[i] += d[0];
             out.dy[i] += d[1];
             out.dvx[i] += d[2];
@@ -456,11 +462,13 @@ inline void add_pair_shares(const DiskPair* contacts, const PairShares* shares, 
         }
 }
 
-// After the update has read them: the corrections of the disks in contact back to zero, so
-// that the next step's sums start from zero again without a pass over every disk.
-inline void clear_pair_corrections(const DiskPair* contacts, std::size_t count, Corrections out) {
+// After the update has read them: the corrections of the disks in [begin, end) in contact back
+// to zero, so that the next step's sums start from zero again without a pass over every disk.
+inline void clear_pair_corrections(const DiskPair* contacts, std::size_t count, Corrections out, std::uint32_t begin,
+                                   std::uint32_t end) {
     for (std::size_t k = 0; k < count; ++k)
-        for (const std::uint32_t i : {contacts[k].a, contacts[k].b}) out.dx[i] = out.dy[i] = out.dvx[i] = out.dvy[i] = 0.0f;
+        for (const std::uint32_t i : {contacts[k].a, contacts[k].b})
+            if (i - begin < end - begin) out.dx[i] = out.dy[i] = out.dvx[i] = out.dvy[i] = 0.0f;
 }
 
 }  // namespace collide::cpu
