@@ -1,16 +1,18 @@
 // parallel_for: the one way the `cpu` backend runs a loop over particles in parallel.
 //
-// A persistent worker pool over about four chunks of the particle range per worker, dealt out
-// in turn (chunk c to worker c mod W), so that a dense region (more contacts, more work per
-// particle) is shared among the workers; workloads too small to pay for the hand-off run
-// inline on the calling thread. OpenMP provides this: the runtime keeps its threads alive
-// between parallel regions (the persistent pool) and `schedule(static, 1)` deals the chunks.
-// Dealt, not claimed from a shared cursor (`schedule(dynamic, 1)`, the earlier choice): a loop
-// of the same length gets the same chunks on the same worker in every region and every step,
-// so each worker finds the disks it wrote in the last phase in its own cache. On two quiet
-// cores that took two threads from 7.1-8.6 to 6.1-6.3 ns per disk-step at N = 10^4 and from
-// 2.3-2.4 to 2.7·10^8 disk-steps/s at N = 10^6 (bench/journal.md); with another job on the
-// cores the two tied.
+// A persistent worker pool over about four chunks of the particle range per worker, each worker
+// taking one contiguous run of chunks (`schedule(static)`); workloads too small to pay for the
+// hand-off run inline on the calling thread. OpenMP provides this: the runtime keeps its threads
+// alive between parallel regions (the persistent pool). A loop of the same length gets the same
+// disks on the same worker in every region and every step, so each worker finds the disks it
+// wrote in the last phase in its own cache, and the workers' ranges meet at one boundary each
+// instead of at every chunk. Two earlier choices, measured (bench/journal.md): chunks claimed
+// from a shared cursor (`schedule(dynamic, 1)`) sent the data between the cores' caches at
+// every phase; chunks dealt in turn (`schedule(static, 1)`) kept it but put a boundary between
+// the workers at every chunk, where both cores write the same cache lines, and two threads
+// stayed slower than one at N = 10^4 (4.1-8.2 against 3.9-4.0 ns per disk-step); contiguous
+// runs give 3.2 ns there on two quiet cores. What is given up is the balance of a dense region
+// spread over several workers' chunks: a dense half of the box now falls to one worker.
 //
 // The body receives a half-open range [begin, end) so that its inner loop is a plain loop the
 // compiler can vectorise, and returns a count (contacts found, or 0) that is summed over
@@ -52,7 +54,7 @@ std::int64_t parallel_for(std::size_t n, int threads, Body&& body, std::size_t p
         for (std::int64_t c = 0; c < chunks; ++c) total += run_chunk(c);
         return total;
     }
-#pragma omp parallel for schedule(static, 1) num_threads(threads) reduction(+ : total)
+#pragma omp parallel for schedule(static) num_threads(threads) reduction(+ : total)
     for (std::int64_t c = 0; c < chunks; ++c) total += run_chunk(c);
     return total;
 }
