@@ -9,10 +9,11 @@
 // instead of at every chunk. Two earlier choices, measured (bench/journal.md): chunks claimed
 // from a shared cursor (`schedule(dynamic, 1)`) sent the data between the cores' caches at
 // every phase; chunks dealt in turn (`schedule(static, 1)`) kept it but put a boundary between
-// the workers at every chunk, where both cores write the same cache lines, and two threads
-// stayed slower than one at N = 10^4 (4.1-8.2 against 3.9-4.0 ns per disk-step); contiguous
-// runs give 3.2 ns there on two quiet cores. What is given up is the balance of a dense region
-// spread over several workers' chunks: a dense half of the box now falls to one worker.
+// the workers at every chunk (where, we take it, both cores write the same cache lines), and
+// two threads stayed slower than one at N = 10^4 (4.1-8.2 against 3.9-4.0 ns per disk-step);
+// contiguous runs give 3.0-3.2 ns there on two quiet cores. What is given up is the balance of
+// a dense region spread over several workers' chunks: a dense half of the box now falls to one
+// worker.
 //
 // The body receives a half-open range [begin, end) so that its inner loop is a plain loop the
 // compiler can vectorise, and returns a count (contacts found, or 0) that is summed over
@@ -31,8 +32,9 @@ namespace collide::cpu {
 inline constexpr std::size_t kInlineBelow = 4096;
 // Chunks smaller than this cost more in hand-offs than they save in balance.
 inline constexpr std::size_t kMinChunk = 1024;
-// About four chunks per worker, dealt in turn: a dense region spans chunks of several workers
-// instead of falling to one.
+// About four chunks per worker, each worker taking its chunks as one contiguous run. The pair
+// list builds one buffer per chunk of rows with the same count, so its chunks line up with the
+// workers' ranges of disks (in cell order).
 inline constexpr std::size_t kChunksPerThread = 4;
 
 // Runs body over [0, n) in chunks. `particles` is the number of particles the loop covers,
