@@ -61,8 +61,8 @@ private:
     void integrate(float h);          // phases 1-3 of integrate-first
     void build_grid();                // phase 4, with the reorder by cell
     void collide();                   // phase 5: one-sided Jacobi contact pass
-    void refresh_pairs();             // the grid and the pair list, when the list is stale
-    void collide_pairs();             // phase 5 on the pair list
+    void rebuild_pairs();             // the grid and the pair list, rebuilt
+    void collide_pairs();             // phase 5 on the pair list, rebuilt first when stale
     void contact_phase();             // phases 4 and 5, on the pair list or the cell path
     template <typename Update>
     void update_with_corrections(Update&& update);  // the update, with the pair list's shares

@@ -37,28 +37,73 @@ inline constexpr std::size_t kMinChunk = 1024;
 // workers' ranges of disks (in cell order).
 inline constexpr std::size_t kChunksPerThread = 4;
 
+// The chunks a loop over [0, n) is cut into: about kChunksPerThread per worker, none smaller
+// than min_chunk items.
+struct ChunkPlan {
+    std::size_t n, chunk;
+    std::int64_t count;
+    ChunkPlan(std::size_t items, int threads, std::size_t min_chunk) : n(items) {
+        const std::size_t workers = std::size_t(std::max(threads, 1));
+        chunk = std::max<std::size_t>(1, std::max(min_chunk, (n + kChunksPerThread * workers - 1) / (kChunksPerThread * workers)));
+        count = std::int64_t((n + chunk - 1) / chunk);
+    }
+    // Runs body(begin, end) on chunk c and returns its count.
+    template <typename Body>
+    std::int64_t run(std::int64_t c, Body& body) const {
+        const std::size_t begin = std::size_t(c) * chunk;
+        return body(begin, std::min(n, begin + chunk));
+    }
+};
+
+// Whether a loop over `particles` particles is worth waking the pool for. Inline, outside any
+// OpenMP region: even a region of one thread (`if (false)`) costs a team set-up per call,
+// microseconds that a two-disk scene pays every step.
+inline bool runs_inline(int threads, std::size_t particles) { return threads <= 1 || particles < kInlineBelow; }
+
 // Runs body over [0, n) in chunks. `particles` is the number of particles the loop covers,
 // which decides whether it is worth waking the pool (by default the items are particles);
 // `min_chunk` is the smallest chunk handed out (in items).
 template <typename Body>
 std::int64_t parallel_for(std::size_t n, int threads, Body&& body, std::size_t particles, std::size_t min_chunk) {
-    const std::size_t workers = std::size_t(std::max(threads, 1));
-    const std::size_t chunk = std::max(min_chunk, (n + kChunksPerThread * workers - 1) / (kChunksPerThread * workers));
-    const std::int64_t chunks = std::int64_t((n + chunk - 1) / chunk);
-    auto run_chunk = [&](std::int64_t c) {
-        const std::size_t begin = std::size_t(c) * chunk;
-        return body(begin, std::min(n, begin + chunk));
-    };
+    const ChunkPlan plan(n, threads, min_chunk);
     std::int64_t total = 0;
-    if (workers == 1 || particles < kInlineBelow) {
-        // Inline, outside any OpenMP region: even a region of one thread (`if (false)`) costs
-        // a team set-up per call, microseconds that a two-disk scene pays every step.
-        for (std::int64_t c = 0; c < chunks; ++c) total += run_chunk(c);
+    if (runs_inline(threads, particles)) {
+        for (std::int64_t c = 0; c < plan.count; ++c) total += plan.run(c, body);
         return total;
     }
 #pragma omp parallel for schedule(static) num_threads(threads) reduction(+ : total)
-    for (std::int64_t c = 0; c < chunks; ++c) total += run_chunk(c);
+    for (std::int64_t c = 0; c < plan.count; ++c) total += plan.run(c, body);
     return total;
+}
+
+// A test over [0, n_test) and, only when its total is zero (the test passed), work over
+// [0, n_work), in one parallel region: the threads meet at the barrier that ends the test's loop,
+// where its total is summed, and go on to the work or leave together. One hand-off to the pool
+// instead of two (about 1.2 µs each on two cores: bench/journal.md), for a test that nearly
+// always passes (the pair list's stale test before its contact search). Each loop is cut as
+// parallel_for cuts it. Returns the test's total.
+template <typename Test, typename Work>
+std::int64_t parallel_test_then_work(std::size_t n_test, Test&& test, std::size_t n_work, std::size_t work_min_chunk,
+                                     Work&& work, int threads, std::size_t particles) {
+    const ChunkPlan test_plan(n_test, threads, kMinChunk), work_plan(n_work, threads, work_min_chunk);
+    std::int64_t failed = 0;
+    if (runs_inline(threads, particles)) {
+        for (std::int64_t c = 0; c < test_plan.count; ++c) failed += test_plan.run(c, test);
+        if (failed == 0)
+            for (std::int64_t c = 0; c < work_plan.count; ++c) work_plan.run(c, work);
+        return failed;
+    }
+#pragma omp parallel num_threads(threads)
+    {
+#pragma omp for schedule(static) reduction(+ : failed)
+        for (std::int64_t c = 0; c < test_plan.count; ++c) failed += test_plan.run(c, test);
+        // The loop's implicit barrier has summed `failed` for every thread.
+        if (failed == 0) {
+#pragma omp for schedule(static)
+            for (std::int64_t c = 0; c < work_plan.count; ++c) work_plan.run(c, work);
+        }
+    }
+    return failed;
 }
 
 template <typename Body>

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <random>
 #include <utility>
 #include <vector>
@@ -67,6 +68,20 @@ Contacts list_contacts(cpu::PairList& list, const ListCase& c) {
     return found;
 }
 
+// The same through search_unless_stale(): the contacts, or nothing when it says stale.
+template <bool Periodic>
+std::optional<Contacts> contacts_unless_stale(cpu::PairList& list, const ListCase& c) {
+    std::size_t chunks_seen = 0;
+    if (!list.search_unless_stale<false, Periodic>(c.state, c.params, 2,
+                                                   [&](std::size_t, const std::vector<cpu::DiskPair>&) { ++chunks_seen; }))
+        return std::nullopt;
+    EXPECT_EQ(chunks_seen, list.chunks()) << "every chunk searched once";
+    Contacts found;
+    for (const cpu::DiskPair& q : list.contacts()) found.emplace_back(std::min(q.a, q.b), std::max(q.a, q.b));
+    std::sort(found.begin(), found.end());
+    return found;
+}
+
 // Moves every disk by `step` in a random direction, keeping each within `limit` of where it
 // was at the build (x0, y0), so that the list must still hold.
 void jiggle(ListCase& c, const std::vector<float>& x0, const std::vector<float>& y0, float step, float limit,
@@ -119,6 +134,7 @@ void check_list_until_stale(Boundary boundary, bool in_cell_order) {
         ASSERT_FALSE((list.is_stale<Periodic>(c.state, c.params, 2))) << "round " << round;
         const Contacts expected = all_pairs_in_contact(c);
         ASSERT_EQ(list_contacts<Periodic>(list, c), expected) << "round " << round;
+        ASSERT_EQ(contacts_unless_stale<Periodic>(list, c), expected) << "round " << round;
         contacts_seen += expected.size();
     }
     EXPECT_GT(contacts_seen, 40u) << "the rounds should have brought disks into contact";
@@ -126,6 +142,7 @@ void check_list_until_stale(Boundary boundary, bool in_cell_order) {
     c.state.x[7] = x0[7] + cpu::PairList::kMoveFraction * skin * 1.001f;
     c.state.y[7] = y0[7];
     EXPECT_TRUE((list.is_stale<Periodic>(c.state, c.params, 1)));
+    EXPECT_EQ(contacts_unless_stale<Periodic>(list, c), std::nullopt) << "stale: nothing searched";
 }
 
 TEST(PairList, FindsExactlyTheContactsOfAllPairsUntilStale) {
