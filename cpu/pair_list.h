@@ -12,10 +12,11 @@
 // when the list is.
 //
 // Each chunk of the list computes both shares of its contacts (on its thread, right after its
-// search); the shares are then added on the calling thread in list order: adds only, a few per
-// contact (under one disk in a hundred is in contact per step at area fraction 0.3), and the
-// order of every per-disk sum is the order of the list, whatever the number of threads. The list itself is built in parallel over rows of cells into
-// one buffer per chunk, read in chunk order: the same list for any thread count.
+// search); the `cpu` solver's update then adds them, each thread those of its own disks, walking
+// the contacts in list order (cpu_solver.cpp, update_with_corrections): the order of every
+// per-disk sum is the order of the list, whatever the number of threads. The list itself is
+// built in parallel over rows of cells into one buffer per chunk, read in chunk order: the same
+// list for any thread count.
 #pragma once
 
 #include <algorithm>

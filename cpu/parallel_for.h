@@ -33,8 +33,8 @@ inline constexpr std::size_t kInlineBelow = 4096;
 // Chunks smaller than this cost more in hand-offs than they save in balance.
 inline constexpr std::size_t kMinChunk = 1024;
 // About four chunks per worker, each worker taking its chunks as one contiguous run. The pair
-// list builds one buffer per chunk of rows with the same count, so its chunks line up with the
-// workers' ranges of disks (in cell order).
+// list builds one buffer per chunk of rows with the same count, so in cell order its chunks
+// roughly line up with the workers' ranges of disks.
 inline constexpr std::size_t kChunksPerThread = 4;
 
 // The chunks a loop over [0, n) is cut into: about kChunksPerThread per worker, none smaller

@@ -68,7 +68,9 @@ Contacts list_contacts(cpu::PairList& list, const ListCase& c) {
     return found;
 }
 
-// The same through search_unless_stale(): the contacts, or nothing when it says stale.
+// The same through search_unless_stale(): the contacts, or nothing when it says stale. (600
+// disks run inline whatever the thread count; the one-region path itself is tested in
+// test_parallel_for.cpp.)
 template <bool Periodic>
 std::optional<Contacts> contacts_unless_stale(cpu::PairList& list, const ListCase& c) {
     std::size_t chunks_seen = 0;
