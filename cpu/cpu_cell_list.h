@@ -156,7 +156,7 @@ void CellList::build(const float* x, const float* y, std::size_t n, int threads,
         std::uint32_t* next = mine.count.data() - mine.lo;  // next[c] for c in [lo, hi]
         for (std::size_t i = mine.begin; i < mine.end; ++i) place(std::uint32_t(i), next[cell_of_[i]]++);
     };
-    if (threads > 1 && n >= kInlineBelow) {
+    if (!runs_inline(threads, n)) {
 #pragma omp parallel num_threads(threads)
         build_steps();
     } else {
