@@ -223,6 +223,24 @@ void expect_bitwise_equal(const ParticleState<double>& state, const ParticleStat
     }
 }
 
+// A dilute gas (area fraction 0.08: cells of 2 r_max would hold 0.1 disk on average) in the
+// cells `event` chooses for it: edge 0.45 (a^2 / d)^(1/3), a the area per disk and d the mean
+// diameter (EventSolver::load), here 2.1 diameters, where one disk per cell would be 3.1. The
+// grid expected is computed from that formula, and the run must find the plain solver's
+// collisions.
+TEST(EventBruteForce, DiluteGasInItsOwnCellsMatchesPlainSolver) {
+    const std::vector<Species> equal = {{0.5, 1.0}};
+    const double spacing = spacing_for(0.08, equal);
+    const Gas gas = lattice_gas(Boundary::periodic, 20, 20, spacing, equal, 31);
+    const double area_per_disk = spacing * spacing, diameter = 1.0;
+    const double edge = 0.45 * std::cbrt(area_per_disk * area_per_disk / diameter);
+    const std::string cells = std::to_string(std::int64_t(std::floor(20 * spacing / edge)));
+    EventSolver solver;
+    solver.load(gas.scene, gas.initial);
+    EXPECT_EQ(solver.provenance().at("event.cells"), cells + "x" + cells);
+    expect_same_run(gas, 10.0, "periodic, dilute, the solver's own cells");
+}
+
 // Renumbering the disks in cell order (for memory locality) must not change the run at all:
 // it moves records without touching a number, each cell keeps its order of visits, and the
 // calendar breaks ties by the scene's index. So a long run gives the same state to the last
@@ -260,12 +278,16 @@ TEST(EventBruteForce, PrefetchingChangesNoBit) {
         {lattice_gas(Boundary::periodic, 15, 14, spacing_for(0.55, two), two, 5), 40.0,
          {{"prefetch", "on"}, {"renumber_interval", "7"}}},
         {lattice_gas(Boundary::reflect, 20, 15, spacing_for(0.5, two), two, 5), 20.0, {{"prefetch", "on"}}},
-        // (dilute cells of one disk on average: the pipeline's stage 3 runs)
-        {lattice_gas(Boundary::periodic, 40, 40, spacing_for(0.1, two), two, 5), 60.0, {{"prefetch", "on"}}},
+        // (a dilute gas in cells of one disk on average, the lattice spacing: the pipeline's
+        // stage 3 runs)
+        {lattice_gas(Boundary::periodic, 40, 40, spacing_for(0.1, two), two, 5), 60.0,
+         {{"prefetch", "on"}, {"cell_size", std::to_string(spacing_for(0.1, two))}}},
         {lattice_gas(Boundary::periodic, 260, 260, spacing_for(0.5, two), two, 5), 0.5, {{"prefetch", "auto"}}},
     };
     for (const Case& c : cases) {
-        const auto [reference, collisions] = final_state(c.gas, c.t, {{"prefetch", "off"}});
+        Options off = c.options;
+        off["prefetch"] = "off";
+        const auto [reference, collisions] = final_state(c.gas, c.t, off);
         ASSERT_GT(collisions, 10000);
         const auto [state, count] = final_state(c.gas, c.t, c.options);
         EXPECT_EQ(count, collisions) << c.gas.initial.size() << " disks";
@@ -276,6 +298,7 @@ TEST(EventBruteForce, PrefetchingChangesNoBit) {
     // pipeline (the second records), the denser ones do not.
     const auto prefetching = [&](const Case& c, const std::string& choice) {
         Scene scene = c.gas.scene;
+        for (const auto& [key, value] : c.options) scene.backend_options["event"][key] = value;
         scene.backend_options["event"]["prefetch"] = choice;
         EventSolver solver;
         solver.load(scene, c.gas.initial);
