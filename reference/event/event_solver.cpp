@@ -92,22 +92,28 @@ void EventSolver::load(const Scene& scene, const ParticleState<double>& initial)
     // disk hold every disk it can touch. In a dilute gas such cells are nearly empty and a disk
     // crosses several of them between two collisions; larger cells mean fewer crossings but
     // more neighbours per prediction. Per collision a disk flies a free path l ~ a / d (a = A / N,
-    // the area per disk; d the mean diameter) and crosses ~ l / c cells of edge c, and a
-    // prediction tests ~ 9 c^2 / a disks: a cost of the form F l / c + G c^2 / a, least at
-    // c ~ (a^2 / d)^(1/3). The constant 0.45 (dilute_cell_factor) is measured: at area fraction
-    // 0.1 (N = 1e5) it makes cells of 1.97 d and costs 12 to 15 % less per collision than cells
-    // of one disk on average (sqrt(a) = 2.8 d, the earlier choice), at 0.03 it ties with them
-    // (4.1 d against 5.1 d). Used only where cells of 2 r_max would hold fewer than 1/4 disk on
+    // the area per disk; d the mean diameter) and crosses ~ l / c cells of edge c, and its
+    // predictions test ~ 9 c^2 / a disks: the sum F l / c + G c^2 / a is least at
+    // c ~ (a^2 / d)^(1/3). (A crossing also tests the disks of the three cells it enters, a term
+    // ~ l c / a that the rule leaves out; the constant absorbs it where it was fitted.) The
+    // constant 0.45 (dilute_cell_factor) was fitted at area fractions 0.03 and 0.1: at 0.1 it
+    // makes cells of 1.78 d against 2.8 d for one disk per cell (sqrt(a), the earlier choice),
+    // 12 % less per collision at N = 1e3 and 4 to 5 % at 1e5 and 1e6; at 0.03 (4.0 d against
+    // 5.1 d) the two tie. Used only where cells of 2 r_max would hold fewer than 1/4 disk on
     // average (area fraction below ~0.2 for equal disks); in denser gases larger cells only add
-    // neighbours (+18 % instructions at 0.5). docs/event-driven.md, "Performance", has the
+    // neighbours (+18 % instructions at 0.5). bench/journal.md (2026-11-29) has the
     // measurements. The option cell_size overrides the choice, to measure it
     // (docs/course/5-making-it-fast.md, ex. 5.3).
     double cell_size = n > 0 ? 2 * r_max : 1.0;
     const double area_per_disk = n > 0 ? w.width() * w.height() / double(n) : 0.0;
-    const double dilute_size = std::max(cell_size, dilute_cell_factor * std::cbrt(area_per_disk * area_per_disk / diameter));
-    // (Only in a box at least 4 such cells wide: a periodic box needs 3 cells per axis.)
-    if (n > 0 && cell_size < 0.5 * std::sqrt(area_per_disk) && 4 * dilute_size < std::min(w.width(), w.height()))
-        cell_size = dilute_size;
+    const double narrowest = std::min(w.width(), w.height());
+    // (Only in a box at least 4 such cells wide: a periodic box needs 3 cells per axis. Where
+    // the balance asks for wider cells than that, as in a small box of very few disks, cells of
+    // one disk on average, if they fit.)
+    double dilute_size = dilute_cell_factor * std::cbrt(area_per_disk * area_per_disk / diameter);
+    if (!(4 * dilute_size < narrowest)) dilute_size = std::sqrt(area_per_disk);
+    if (n > 0 && cell_size < 0.5 * std::sqrt(area_per_disk) && 4 * dilute_size < narrowest)
+        cell_size = std::max(cell_size, dilute_size);
     // In the neighbour-list design the cells hold the shell centres, and a disk's list is
     // gathered from the 3x3 cells around its centre: cells at least one list cutoff wide.
     if (shells_on()) cell_size = 2 * r_max + 2 * shell_ + shell_slack_;

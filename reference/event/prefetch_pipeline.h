@@ -12,7 +12,7 @@
 //            whose event counter the crossing reads);
 //   stage 2: the first record of each of those cells, and the list heads around the partner;
 //   stage 3: the second record of each of those cells, only where the cells hold a disk or
-//            more on average (second_records: dilute gases, very dense or crowded cells);
+//            more on average (second_records: very dilute gases, very dense or crowded cells);
 //            where they hold fewer, few lists have a second record and the stage cost more
 //            than it saved.
 // The misses of three or four coming events then overlap with the work of the current one,

@@ -29,6 +29,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/numerics/number_text.h"
 #include "core/particle_state.h"
 #include "core/scene/scene.h"
 #include "reference/event/event_solver.h"
@@ -223,22 +224,34 @@ void expect_bitwise_equal(const ParticleState<double>& state, const ParticleStat
     }
 }
 
-// A dilute gas (area fraction 0.08: cells of 2 r_max would hold 0.1 disk on average) in the
-// cells `event` chooses for it: edge 0.45 (a^2 / d)^(1/3), a the area per disk and d the mean
-// diameter (EventSolver::load), here 2.1 diameters, where one disk per cell would be 3.1. The
-// grid expected is computed from that formula, and the run must find the plain solver's
-// collisions.
+// A dilute bidisperse gas (area fraction 0.08: cells of 2 r_max would hold 0.1 disk on average)
+// in the cells `event` chooses for it: edge 0.45 (a^2 / d)^(1/3), a the area per disk and d the
+// mean diameter (EventSolver::load), here about 1.8 of the larger diameters, where one disk per
+// cell would be 2.7 (30 x 30 cells against 20 x 20; with the largest diameter for d, 31 x 31:
+// the two radii tell the mean diameter from the largest one). The grid expected is computed
+// from that formula, and the run must find the plain solver's collisions.
 TEST(EventBruteForce, DiluteGasInItsOwnCellsMatchesPlainSolver) {
-    const std::vector<Species> equal = {{0.5, 1.0}};
-    const double spacing = spacing_for(0.08, equal);
-    const Gas gas = lattice_gas(Boundary::periodic, 20, 20, spacing, equal, 31);
-    const double area_per_disk = spacing * spacing, diameter = 1.0;
+    const std::vector<Species> two = {{0.35, 1.0}, {0.5, 1.0}};
+    const double spacing = spacing_for(0.08, two);
+    const Gas gas = lattice_gas(Boundary::periodic, 20, 20, spacing, two, 31);
+    double radius_sum = 0;
+    for (double r : gas.initial.radius) radius_sum += r;
+    const double area_per_disk = spacing * spacing, diameter = 2 * radius_sum / double(gas.initial.size());
     const double edge = 0.45 * std::cbrt(area_per_disk * area_per_disk / diameter);
     const std::string cells = std::to_string(std::int64_t(std::floor(20 * spacing / edge)));
     EventSolver solver;
     solver.load(gas.scene, gas.initial);
     EXPECT_EQ(solver.provenance().at("event.cells"), cells + "x" + cells);
-    expect_same_run(gas, 10.0, "periodic, dilute, the solver's own cells");
+    expect_same_run(gas, 7.0, "periodic, dilute, the solver's own cells");
+
+    // A small box of 25 disks at area fraction 0.001: the balance asks for cells of 1.37
+    // sqrt(a), too wide for four per axis, so the cells hold one disk's share each (5 x 5),
+    // not the 140 x 140 of 2 r_max.
+    const std::vector<Species> equal = {{0.5, 1.0}};
+    const Gas sparse = lattice_gas(Boundary::periodic, 5, 5, spacing_for(0.001, equal), equal, 31);
+    EventSolver sparse_solver;
+    sparse_solver.load(sparse.scene, sparse.initial);
+    EXPECT_EQ(sparse_solver.provenance().at("event.cells"), "5x5");
 }
 
 // Renumbering the disks in cell order (for memory locality) must not change the run at all:
@@ -265,8 +278,9 @@ TEST(EventBruteForce, RenumberingChangesNoBit) {
 
 // Prefetching the coming events (reference/event/prefetch_pipeline.h) only requests memory: forced
 // on in a small periodic gas (with renumbering every 7 events, which resets the look-ahead),
-// in a reflecting box (whose edge cells are not prefetched), and left to "auto" above its
-// threshold, the state is the same to the last bit as with prefetching off.
+// in a reflecting box (whose edge cells are not prefetched), in a dilute gas in cells of one
+// disk and in its own dilute cells, and left to "auto" above its threshold, the state is the
+// same to the last bit as with prefetching off.
 TEST(EventBruteForce, PrefetchingChangesNoBit) {
     const std::vector<Species> two = {{0.4, 1.0}, {0.5, 2.0}};
     struct Case {
@@ -281,7 +295,9 @@ TEST(EventBruteForce, PrefetchingChangesNoBit) {
         // (a dilute gas in cells of one disk on average, the lattice spacing: the pipeline's
         // stage 3 runs)
         {lattice_gas(Boundary::periodic, 40, 40, spacing_for(0.1, two), two, 5), 60.0,
-         {{"prefetch", "on"}, {"cell_size", std::to_string(spacing_for(0.1, two))}}},
+         {{"prefetch", "on"}, {"cell_size", round_trip_text(spacing_for(0.1, two))}}},
+        // (the same gas in the solver's own dilute cells, about 0.4 disk each: stage 3 off)
+        {lattice_gas(Boundary::periodic, 40, 40, spacing_for(0.1, two), two, 5), 60.0, {{"prefetch", "on"}}},
         {lattice_gas(Boundary::periodic, 260, 260, spacing_for(0.5, two), two, 5), 0.5, {{"prefetch", "auto"}}},
     };
     for (const Case& c : cases) {
@@ -294,8 +310,9 @@ TEST(EventBruteForce, PrefetchingChangesNoBit) {
         expect_bitwise_equal(state, reference, std::to_string(state.size()) + " disks");
     }
     // The automatic choice does prefetch at the last case's size (else it would compare
-    // "off" with "off"), and does not in the small gas; the dilute gas runs stage 3 of the
-    // pipeline (the second records), the denser ones do not.
+    // "off" with "off"), and does not in the small gas; the dilute gas in cells of one disk
+    // runs stage 3 of the pipeline (the second records), the same gas in its own cells and the
+    // denser ones do not.
     const auto prefetching = [&](const Case& c, const std::string& choice) {
         Scene scene = c.gas.scene;
         for (const auto& [key, value] : c.options) scene.backend_options["event"][key] = value;
@@ -304,9 +321,10 @@ TEST(EventBruteForce, PrefetchingChangesNoBit) {
         solver.load(scene, c.gas.initial);
         return solver.provenance().at("event.prefetch");
     };
-    EXPECT_EQ(prefetching(cases[3], "auto"), "on") << cases[3].gas.initial.size() << " disks";
+    EXPECT_EQ(prefetching(cases[4], "auto"), "on") << cases[4].gas.initial.size() << " disks";
     EXPECT_EQ(prefetching(cases[0], "auto"), "off") << cases[0].gas.initial.size() << " disks";
     EXPECT_EQ(prefetching(cases[2], "on"), "on, second records");
+    EXPECT_EQ(prefetching(cases[3], "on"), "on");
     EXPECT_EQ(prefetching(cases[0], "on"), "on");
 }
 
