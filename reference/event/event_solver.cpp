@@ -107,13 +107,13 @@ void EventSolver::load(const Scene& scene, const ParticleState<double>& initial)
     double cell_size = n > 0 ? 2 * r_max : 1.0;
     const double area_per_disk = n > 0 ? w.width() * w.height() / double(n) : 0.0;
     const double narrowest = std::min(w.width(), w.height());
+    const double one_disk_size = std::sqrt(area_per_disk);  // cells of one disk on average
     // (Only in a box at least 4 such cells wide: a periodic box needs 3 cells per axis. Where
     // the balance asks for wider cells than that, as in a small box of very few disks, cells of
-    // one disk on average, if they fit.)
+    // one disk on average, if they fit. Where the test below passes, both exceed 2 r_max.)
     double dilute_size = dilute_cell_factor * std::cbrt(area_per_disk * area_per_disk / diameter);
-    if (!(4 * dilute_size < narrowest)) dilute_size = std::sqrt(area_per_disk);
-    if (n > 0 && cell_size < 0.5 * std::sqrt(area_per_disk) && 4 * dilute_size < narrowest)
-        cell_size = std::max(cell_size, dilute_size);
+    if (!(4 * dilute_size < narrowest)) dilute_size = one_disk_size;
+    if (n > 0 && cell_size < 0.5 * one_disk_size && 4 * dilute_size < narrowest) cell_size = dilute_size;
     // In the neighbour-list design the cells hold the shell centres, and a disk's list is
     // gathered from the 3x3 cells around its centre: cells at least one list cutoff wide.
     if (shells_on()) cell_size = 2 * r_max + 2 * shell_ + shell_slack_;

@@ -212,6 +212,16 @@ std::pair<ParticleState<double>, std::int64_t> final_state(const Gas& gas, doubl
     return {state, solver.stats().contacts};
 }
 
+// One entry of the event solver's provenance (event.cells, event.prefetch, ...) for a scene
+// loaded with the given [backend.event] options.
+std::string provenance_entry(Scene scene, const ParticleState<double>& initial, const Options& options,
+                             const std::string& key) {
+    for (const auto& [option, value] : options) scene.backend_options["event"][option] = value;
+    EventSolver solver;
+    solver.load(scene, initial);
+    return solver.provenance().at(key);
+}
+
 // Positions and velocities equal to the last bit (no tolerance).
 void expect_bitwise_equal(const ParticleState<double>& state, const ParticleState<double>& reference,
                           const std::string& what) {
@@ -239,9 +249,7 @@ TEST(EventBruteForce, DiluteGasInItsOwnCellsMatchesPlainSolver) {
     const double area_per_disk = spacing * spacing, diameter = 2 * radius_sum / double(gas.initial.size());
     const double edge = 0.45 * std::cbrt(area_per_disk * area_per_disk / diameter);
     const std::string cells = std::to_string(std::int64_t(std::floor(20 * spacing / edge)));
-    EventSolver solver;
-    solver.load(gas.scene, gas.initial);
-    EXPECT_EQ(solver.provenance().at("event.cells"), cells + "x" + cells);
+    EXPECT_EQ(provenance_entry(gas.scene, gas.initial, {}, "event.cells"), cells + "x" + cells);
     expect_same_run(gas, 7.0, "periodic, dilute, the solver's own cells");
 
     // A small box of 25 disks at area fraction 0.001: the balance asks for cells of 1.37
@@ -249,9 +257,7 @@ TEST(EventBruteForce, DiluteGasInItsOwnCellsMatchesPlainSolver) {
     // not the 140 x 140 of 2 r_max.
     const std::vector<Species> equal = {{0.5, 1.0}};
     const Gas sparse = lattice_gas(Boundary::periodic, 5, 5, spacing_for(0.001, equal), equal, 31);
-    EventSolver sparse_solver;
-    sparse_solver.load(sparse.scene, sparse.initial);
-    EXPECT_EQ(sparse_solver.provenance().at("event.cells"), "5x5");
+    EXPECT_EQ(provenance_entry(sparse.scene, sparse.initial, {}, "event.cells"), "5x5");
 }
 
 // Renumbering the disks in cell order (for memory locality) must not change the run at all:
@@ -314,12 +320,9 @@ TEST(EventBruteForce, PrefetchingChangesNoBit) {
     // runs stage 3 of the pipeline (the second records), the same gas in its own cells and the
     // denser ones do not.
     const auto prefetching = [&](const Case& c, const std::string& choice) {
-        Scene scene = c.gas.scene;
-        for (const auto& [key, value] : c.options) scene.backend_options["event"][key] = value;
-        scene.backend_options["event"]["prefetch"] = choice;
-        EventSolver solver;
-        solver.load(scene, c.gas.initial);
-        return solver.provenance().at("event.prefetch");
+        Options options = c.options;
+        options["prefetch"] = choice;
+        return provenance_entry(c.gas.scene, c.gas.initial, options, "event.prefetch");
     };
     EXPECT_EQ(prefetching(cases[4], "auto"), "on") << cases[4].gas.initial.size() << " disks";
     EXPECT_EQ(prefetching(cases[0], "auto"), "off") << cases[0].gas.initial.size() << " disks";
@@ -445,11 +448,8 @@ TEST(EventBruteForce, ShellsRenumberedAndPrefetchedChangeNoBit) {
         EXPECT_EQ(count, collisions);
         expect_bitwise_equal(state, reference, "shells with options " + options.begin()->second);
     }
-    const auto neighbours = [](Scene scene, const ParticleState<double>& initial) {
-        scene.backend_options["event"]["shell"] = "0.3";
-        EventSolver solver;
-        solver.load(scene, initial);
-        return solver.provenance().at("event.neighbours");
+    const auto neighbours = [](const Scene& scene, const ParticleState<double>& initial) {
+        return provenance_entry(scene, initial, {{"shell", "0.3"}}, "event.neighbours");
     };
     EXPECT_EQ(neighbours(gas.scene, gas.initial), "shells of width 0.3");
     Scene falling = gas.scene;
