@@ -14,6 +14,7 @@
 #include "core/scene/option_reader.h"
 #include "core/numerics/representability.h"
 #include "core/numerics/target_time.h"
+#include "pair_batch.h"
 #include "physics/collision_rule.h"
 #include "physics/collision_time.h"
 #include "physics/stepping_laws.h"
@@ -389,12 +390,23 @@ void EventSolver::earliest_pair(std::uint32_t i, Prediction& p, VisitCells&& vis
 // The innermost loop of the solver stays in scalars (no Eigen::Vector2d): its minimum image
 // is per component and the collision time (physics/collision_time.h) takes the components, so
 // vectors here would read no closer to the equations, in the loop where every instruction
-// counts.
+// counts. The walk gathers the neighbours; their collision times are computed in batches
+// (pair_batch.h), which spares the processor the branches it cannot predict and gives the
+// same times, so the same events.
 template <bool MinimumImage, typename VisitCells>
 void EventSolver::earliest_pair_in(std::uint32_t i, Prediction& p, VisitCells& visit_cells) const {
     const double xi = disks_[i].x, yi = disks_[i].y, vxi = disks_[i].vx, vyi = disks_[i].vy, ri = disks_[i].radius;
     const double width = scene_.world.width(), height = scene_.world.height();
     double best_dt = p.pair_time - now_;
+    PairBatch batch;
+    auto take_earliest = [&](std::uint32_t j, double dt) {
+        if (dt < best_dt) {
+            best_dt = dt;
+            p.partner = j;
+            p.partner_count = disks_[j].count;
+            p.pair_time = now_ + dt;
+        }
+    };
     visit_cells([&](std::uint32_t j) {
         if (j == i) return;
         double xj, yj, vxj, vyj;
@@ -409,14 +421,10 @@ void EventSolver::earliest_pair_in(std::uint32_t i, Prediction& p, VisitCells& v
             else if (dy < -0.5 * height) dy += height;
         }
         // Both disks feel the same gravity, so their relative motion is a straight line.
-        const double dt = event_time::pair_collision_time(dx, dy, vxi - vxj, vyi - vyj, ri + disks_[j].radius);
-        if (dt < best_dt) {
-            best_dt = dt;
-            p.partner = j;
-            p.partner_count = disks_[j].count;
-            p.pair_time = now_ + dt;
-        }
+        batch.add(j, dx, dy, vxi - vxj, vyi - vyj, ri + disks_[j].radius);
+        if (batch.full()) batch.flush(take_earliest);
     });
+    batch.flush(take_earliest);
 }
 
 template <bool Shells>
