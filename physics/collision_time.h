@@ -24,15 +24,37 @@ inline constexpr double never = std::numeric_limits<double>::infinity();
 // non-negative numbers and has no cancellation (the first form loses all digits when the
 // pair is nearly touching, c -> 0). Only approaching pairs (b < 0) can collide.
 // Touching (c = 0) or slightly overlapping (c < 0, round-off) approaching pairs collide now.
-inline double pair_collision_time(double dx, double dy, double ux, double uy, double sigma) {
+//
+// The quadratic's coefficients and the tests are kept apart from the time, so that the tuned
+// solver can run the tests over many neighbours at once and take the square root and the
+// division only for the pairs that collide (reference/event/pair_batch.h); these functions are
+// the one source of the arithmetic for both.
+struct PairQuadratic {
+    double b;             // d.u
+    double c;             // d.d - sigma^2
+    double discriminant;  // b^2 - (u.u) c
+};
+inline PairQuadratic pair_quadratic(double dx, double dy, double ux, double uy, double sigma) {
     const double b = dx * ux + dy * uy;
-    if (!(b < 0)) return never;  // separating or sliding past: no collision (also NaN)
     const double c = dx * dx + dy * dy - sigma * sigma;
-    if (c <= 0) return 0;  // touching or overlapping by round-off and approaching: now
     const double uu = ux * ux + uy * uy;
-    const double discriminant = b * b - uu * c;
-    if (discriminant <= 0) return never;  // the paths miss (or graze: zero impulse)
-    return c / (-b + std::sqrt(discriminant));
+    return {b, c, b * b - uu * c};
+}
+// Whether the pair collides: approaching (b < 0, which a NaN is not), and either touching or
+// overlapping by round-off (c <= 0) or on paths that meet (D > 0; D = 0 is a graze, zero
+// impulse). Written with & and | instead of && and ||, so that it needs no branch; a NaN c or D
+// counts as colliding, so that it reaches pair_meeting_time and gives a NaN time, which no
+// comparison takes as the earliest.
+inline bool pair_collides(const PairQuadratic& q) {
+    return (q.b < 0) & ((q.c <= 0) | !(q.discriminant <= 0));
+}
+// The time of a pair that collides: now if it touches already, else the root above.
+inline double pair_meeting_time(const PairQuadratic& q) {
+    return q.c <= 0 ? 0.0 : q.c / (-q.b + std::sqrt(q.discriminant));
+}
+inline double pair_collision_time(double dx, double dy, double ux, double uy, double sigma) {
+    const PairQuadratic q = pair_quadratic(dx, dy, ux, uy, sigma);
+    return pair_collides(q) ? pair_meeting_time(q) : never;
 }
 
 // First time at which a coordinate q(t) = q0 + v t + a t^2 / 2 crosses the level q0 + d
