@@ -147,7 +147,7 @@ public:
             for (std::int64_t x = b.x0; x <= b.x1; ++x) {
                 std::uint32_t j = head_[std::size_t(y * cells_x_ + x)];
                 for (int d = 0; d < depth && j != none; ++d) j = disks[j].links.next;
-                if (j != none) prefetch_line(&disks[j]);
+                prefetch_line(&disks[record_or_first(j)]);
             }
     }
     // Requests the first record of each list around disk i's cell.
@@ -226,9 +226,15 @@ private:
             for (int c = 0; c < 3; ++c) {
                 const std::uint32_t j = corner[r * cells_x_ + c];
                 first[3 * r + c] = j;
-                if (j != none) prefetch_line(&disks[j]);
+                prefetch_line(&disks[record_or_first(j)]);
             }
     }
+    // The disk whose record a prefetch requests for list entry j: j itself, or disk 0 for an
+    // empty list. Requesting disk 0's record (in the cache after the first time) costs less
+    // than a test whether the list is empty, which the processor mispredicts about half the
+    // time at area fraction 0.5; a prefetch changes no result. (A mask, not
+    // `j != none ? j : 0`, which the compiler makes a branch again.)
+    static std::uint32_t record_or_first(std::uint32_t j) { return j & (0u - std::uint32_t(j != none)); }
     // The columns (or rows) `near` to `far` cells away from cell (cx, cy) on the side of
     // `border`, three cells wide (unwrapped: it may reach past the grid). With near = far = 1,
     // the far column of the 3x3 block around the cell; with 1 and 2, the cell beyond the border,

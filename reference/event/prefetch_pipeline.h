@@ -78,14 +78,15 @@ public:
             first.cells = cells_to_visit(disks, cells, queue, first.disk);  // (its record arrived: its cell is known)
             cells.prefetch_heads(first.cells);
             // A collision reads and writes its partner's record and slot; a crossing reads the
-            // event counter in its kept partner's record (predict_after_crossing).
+            // event counter in its kept partner's record (predict_after_crossing). Both are
+            // requested whatever the event: a test of its kind (a collision or a crossing, a
+            // coin toss in a dilute gas) costs more than a request that is not needed. (The
+            // partner is always a disk: predictions name disk 0 until they find one, and
+            // renumbering renames them.)
             const EventPrediction& p = queue.payload(first.disk).prediction;
-            if (p.kind == EventKind::pair || (p.kind == EventKind::cell && p.pair_time != event_time::never))
-                prefetch_line(&disks[p.partner]);
-            if (p.kind == EventKind::pair) {
-                prefetch_line(queue.slot_address(p.partner));
-                partners_.remember(p.partner);
-            }
+            prefetch_line(&disks[p.partner]);
+            prefetch_line(queue.slot_address(p.partner));
+            if (p.kind == EventKind::pair) partners_.remember(p.partner);
         }
         name_next(disks, queue, [](std::uint32_t) {});
     }
