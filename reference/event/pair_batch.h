@@ -41,13 +41,14 @@ public:
     void flush(Found&& found) {
         int hits = 0;
         for (int k = 0; k < size_; ++k) {
-            quadratic_[k] = event_time::pair_quadratic(dx_[k], dy_[k], ux_[k], uy_[k], sigma_[k]);
+            const event_time::PairQuadratic q = event_time::pair_quadratic(dx_[k], dy_[k], ux_[k], uy_[k], sigma_[k]);
+            b_[k] = q.b, c_[k] = q.c, discriminant_[k] = q.discriminant;
             hit_[hits] = std::uint8_t(k);
-            hits += event_time::pair_collides(quadratic_[k]);
+            hits += event_time::pair_collides(q);
         }
         for (int h = 0; h < hits; ++h) {
             const int k = hit_[h];
-            found(partner_[k], event_time::pair_meeting_time(quadratic_[k]));
+            found(partner_[k], event_time::pair_meeting_time({b_[k], c_[k], discriminant_[k]}));
         }
         size_ = 0;
     }
@@ -55,7 +56,7 @@ public:
 private:
     int size_ = 0;
     alignas(16) double dx_[capacity], dy_[capacity], ux_[capacity], uy_[capacity], sigma_[capacity];
-    event_time::PairQuadratic quadratic_[capacity];
+    alignas(16) double b_[capacity], c_[capacity], discriminant_[capacity];  // (the PairQuadratic of each)
     std::uint32_t partner_[capacity];
     std::uint8_t hit_[capacity];
 };
