@@ -38,8 +38,8 @@
 // What it buys, together with the compact records (event_records.h) and local clocks: 3.0x the
 // collisions per second of `event-plain`, whose queue is a std::priority_queue of every
 // prediction, with prefetching off (N = 1e5, area fraction 0.3, periodic, one core;
-// `python3 bench/event_optimisations.py 100000`, median of three runs;
-// docs/course/5-making-it-fast.md). Two details of the calendar's own code (the front's
+// `python3 bench/event_optimisations.py 100000`, median of three runs, before the batched pair
+// tests of pair_batch.h, with which it is 3.8x; docs/course/5-making-it-fast.md). Two details of the calendar's own code (the front's
 // emptiness tested inline, the short queue of link_soon kept as a ring) took 5 % of the
 // instructions per collision off the whole solver (bench/journal.md, "event: the calendar
 // without a call per look at the top").

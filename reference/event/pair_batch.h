@@ -12,9 +12,10 @@
 // the walk, so the earliest collision found, ties included, is the same one, bit for bit.
 //
 // What it buys: 15 to 25 % of the processor time per collision in the cache (N = 1e3) at
-// area fractions 0.5 and 0.7, 5 to 12 % at N = 1e5, little at 0.1, where most events are cell
-// crossings (docs/event-driven.md, "Performance"), although it runs about 17 % more
-// instructions: the branches it removes were mispredicted about half the time.
+// area fractions 0.5 and 0.7, 11 to 21 % at N = 1e5, 3 to 6 % at 0.1, where most events are
+// cell crossings (bench/journal.md, "event: branches the processor cannot predict"), although
+// it runs about a fifth more instructions: the branches it removes were mispredicted about
+// half the time.
 #pragma once
 
 #include <cmath>
