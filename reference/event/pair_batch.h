@@ -28,6 +28,7 @@ namespace collide {
 class PairBatch {
 public:
     static constexpr int capacity = 32;
+    static_assert(capacity <= 256, "the hits are numbered in 8 bits");
 
     bool full() const { return size_ == capacity; }
     void add(std::uint32_t j, double dx, double dy, double ux, double uy, double sigma) {

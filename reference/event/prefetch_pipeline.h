@@ -8,8 +8,9 @@
 // core/numerics/prefetch.h: a request the compiler cannot delete):
 //   stage 0: its calendar slot and record are requested;
 //   stage 1 (one event later): the list heads of its cells (cells_to_visit), and its
-//            predicted partner's record and slot (for a crossing, the kept partner's record,
-//            whose event counter the crossing reads);
+//            predicted partner's record and slot, whatever the event (a collision reads and
+//            writes both; a crossing reads the kept partner's record, whose event counter it
+//            checks; for a wall the requests are spare);
 //   stage 2: the first record of each of those cells, and the list heads around the partner;
 //   stage 3: the second record of each of those cells, only where the cells hold a disk or
 //            more on average (second_records: very dilute gases, very dense or crowded cells);
@@ -29,6 +30,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cassert>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -86,6 +88,8 @@ public:
             // partner is always a disk: predictions name disk 0 until they find one, and
             // renumbering renames them.)
             const EventPrediction& p = queue.payload(first.disk).prediction;
+            // (A prefetch of a wrong address would go unnoticed, even by AddressSanitizer.)
+            assert(p.partner < disks.size());
             prefetch_line(&disks[p.partner]);
             prefetch_line(queue.slot_address(p.partner));
             if (p.kind == EventKind::pair) partners_.remember(p.partner);

@@ -97,6 +97,30 @@ TEST(PairBatch, RandomPairsMatchThePairCollisionTimeBitForBit) {
     expect_same_hits(pairs);
 }
 
+// The edges of the tests: a graze (D = 0 exactly: b = -3, c = 9, u.u = 1), an overlapping
+// pair that separates, a NaN discriminant with c > 0 (an infinite velocity), a pair at rest
+// relative to each other with c < 0: each as the scalar function decides it.
+TEST(PairBatch, EdgesOfTheTestsTakeTheScalarFunctionsWay) {
+    const double inf = std::numeric_limits<double>::infinity();
+    const std::vector<Pair> pairs = {{-3, 1, 1, 0, 1}, {-0.5, 0, -1, 0, 1}, {4, 0, -inf, 0, 1}, {-0.5, 0, 0, 0, 1}};
+    EXPECT_EQ(event_time::pair_collision_time(-3, 1, 1, 0, 1), event_time::never);  // (the graze is a miss)
+    expect_same_hits(pairs);
+}
+
+// The same pair at the last place of one batch and the first of the next: both are reported,
+// in that order, with the same time (so a caller taking the first of equal times takes the
+// earlier one, as the solver's walk did before the batches).
+TEST(PairBatch, AHitOnEachSideOfAFlushKeepsItsOrder) {
+    std::vector<Pair> pairs(PairBatch::capacity + 1, Pair{4, 0, 2, 0, 1});  // separating: no hit
+    pairs[PairBatch::capacity - 1] = pairs[PairBatch::capacity] = Pair{-4, 0, 2, 0, 1};  // t = 1.5
+    const auto hits = batch_hits(pairs);
+    ASSERT_EQ(hits.size(), 2u);
+    EXPECT_EQ(hits[0].first, std::uint32_t(PairBatch::capacity - 1));
+    EXPECT_EQ(hits[1].first, std::uint32_t(PairBatch::capacity));
+    EXPECT_EQ(hits[0].second, 1.5);
+    EXPECT_EQ(hits[1].second, 1.5);
+}
+
 // A NaN takes the same way as in the scalar function: a miss where a test fails on it, a NaN
 // time where it reaches the quotient (which the solver's "earlier than" never takes).
 TEST(PairBatch, NotANumberTakesTheScalarFunctionsWay) {
