@@ -11,7 +11,7 @@
 // pair_quadratic, pair_collides, pair_meeting_time), and the hits are taken in the order of
 // the walk, so the earliest collision found, ties included, is the same one, bit for bit.
 //
-// What it buys: 15 to 25 % of the processor time per collision in the cache (N = 1e3) at
+// What it buys: 16 to 23 % of the processor time per collision in the cache (N = 1e3) at
 // area fractions 0.5 and 0.7, 11 to 21 % at N = 1e5, 3 to 6 % at 0.1, where most events are
 // cell crossings (bench/journal.md, "event: branches the processor cannot predict"), although
 // it runs about a fifth more instructions: the branches it removes were mispredicted about
