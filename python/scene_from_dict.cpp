@@ -203,6 +203,11 @@ toml::table Converter::table(PyObject* dict, const std::string& where, int depth
         if (!utf8) fail_from_python(parent, "encoding a key as UTF-8");
         const std::string name(utf8, std::size_t(size));
         const std::string path = where.empty() ? key_text(name) : where + "." + key_text(name);
+        // No scene key holds a control character, and toml++ 3.3's writer puts a tab or a line
+        // break into a table header unquoted, which its own reader then rejects (with an
+        // assertion in a debug build): such a key is refused here, by its path.
+        if (std::any_of(name.begin(), name.end(), [](unsigned char c) { return c < 0x20 || c == 0x7f; }))
+            fail(PyExc_ValueError, path, "a key must not hold control characters");
         if (value == Py_None) continue;
         auto node = this->node(value, path, depth + 1);
         std::move(*node).visit([&out, &name](auto&& v) { out.insert_or_assign(name, std::move(v)); });

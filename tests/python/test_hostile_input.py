@@ -94,6 +94,36 @@ def test_key_depth_bound_leaves_shallow_keys_to_the_loader(small_gas):
     assert "dotted parts" not in str(info.value)
 
 
+# ---- Control characters in keys: refused by path, never handed to the TOML reader --------------
+
+def test_keys_with_control_characters_are_refused_by_path():
+    # toml++ 3.3 writes a key holding a tab or a line break into a table header unquoted, and
+    # its reader then stopped a debug build with an assertion (the fuzz test's case 1920 of
+    # seed 31). Such keys are refused before any TOML is written, naming the key's path.
+    out = in_child("""
+        import json, sys, collide
+        sys.path.insert(0, %r)
+        from conftest import SMALL_GAS
+        scene = collide.Scene.from_toml(SMALL_GAS, "small_gas")
+        calls = [lambda: collide.Scene.from_dict({"\\n": {"a": 1}}),
+                 lambda: collide.Scene.from_dict({"world": {"a\\tb": 1}}),
+                 lambda: collide.Scene.from_dict({"run": {"\\x7f": {"b": 2}}}),
+                 lambda: scene.with_overrides({"physics": {"x\\ry": 1}})]
+        out = []
+        for call in calls:
+            try:
+                call()
+                out.append("accepted")
+            except Exception as e:
+                out.append([type(e).__name__, str(e)])
+        print(json.dumps(out))
+    """ % str(HERE))
+    assert out[0] == ["ValueError", '"\\u000a": a key must not hold control characters'], out
+    assert out[1] == ["ValueError", 'world."a\\u0009b": a key must not hold control characters'], out
+    assert out[2] == ["ValueError", 'run."\\u007f": a key must not hold control characters'], out
+    assert out[3][0] == "ValueError" and out[3][1].endswith('"x\\u000dy": a key must not hold control characters'), out
+
+
 # ---- Uninitialised objects: every method and property raises TypeError ----------------------
 
 def test_uninitialised_objects_raise():
