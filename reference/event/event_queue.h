@@ -16,7 +16,7 @@
 // min-heap (the "front"). A re-predicted particle nearly always lands in a later bucket, which
 // costs O(1) (unlink, link) instead of the O(log N) sift of one big heap. When the front runs
 // empty the next bucket is poured into it, and the bucket it leaves behind becomes the ring's
-// newest. Times beyond the ring wait in an overflow list, which is sorted into the ring every
+// newest. Times beyond the ring wait in an overflow array, which is sorted into the ring every
 // half turn; infinite times ("never") wait in an idle list that is never scanned. The width
 // is chosen so that a bucket holds a few entries and the ring spans about four median event
 // horizons, so only a few per cent of the predictions overflow. The calendar is rebuilt (new
@@ -75,6 +75,7 @@ public:
         waiting_first_ = waiting_count_ = 0;
         bucket_count_ = std::uint32_t(std::max<std::size_t>(16, n));
         head_.assign(std::size_t(bucket_count_) + 2, none);  // the ring, then overflow and idle
+        overflow_.clear();
         bucketed_ = overflowing_ = idle_ = 0;
         built_ = one_heap_ = false;  // the first top() builds the ring from the times set by then
         for (std::uint32_t p = 0; p < n; ++p) link(p, overflow());
@@ -159,6 +160,7 @@ public:
         }
         node_.swap(node_scratch_);
         for (std::uint32_t& h : head_) h = renamed(h);
+        for (std::uint32_t& p : overflow_) p = new_of[p];
         for (Entry& e : heap_) e.particle = new_of[e.particle];
         ahead_ = renamed(ahead_);
     }
@@ -173,7 +175,7 @@ private:
     struct alignas(std::is_empty_v<Payload> ? alignof(double) : 64) Node {
         double time = 0;
         std::uint32_t bucket = 0;      // front, waiting, a ring bucket, overflow() or idle()
-        std::uint32_t index = none;    // position in the front heap (front), or the list it waits for (waiting)
+        std::uint32_t index = none;    // position in the front heap (front) or in overflow_, or the list it waits for (waiting)
         std::uint32_t next = none, prev = none;  // neighbours in the bucket's list
         std::uint32_t key = 0;         // breaks ties between equal times
         [[no_unique_address]] Payload payload{};
@@ -275,9 +277,12 @@ private:
     void settle() {
         if (heap_.empty()) refill_front();
     }
+    // The entries still waiting (link_soon) stay waiting across a pour, except those bound for
+    // the bucket being poured, which go straight into the front: linking them all here would
+    // read list heads requested a moment ago, and the processor would wait for each.
     void refill_front() {
         while (heap_.empty()) {
-            link_all_waiting();
+            if (bucketed_ == 0) link_all_waiting();  // (the ring may hold nothing but waiting entries)
             if (!built_ || rebuild_wanted_ || bucketed_ == 0) {
                 if (!rebuild()) return;
                 continue;
@@ -285,10 +290,26 @@ private:
             ++current_;
             if (++current_slot_ == bucket_count_) current_slot_ = 0;
             if (current_ >= refill_at_) {
+                link_all_waiting();
                 refill();
                 link_all_waiting();
             }
+            pour_waiting(current_slot_);
             pour(current_slot_);
+        }
+    }
+
+    // Moves the waiting entries bound for a ring bucket into the front heap.
+    void pour_waiting(std::uint32_t bucket) {
+        for (std::uint32_t k = 0; k < waiting_count_;) {
+            const std::uint32_t p = waiting_[waiting_place(k)];
+            if (node_[p].index != bucket) {
+                ++k;
+                continue;
+            }
+            forget_waiting(p);
+            heap_push(p);
+            ++poured_;
         }
     }
 
@@ -308,14 +329,19 @@ private:
     // it. An entry that overflowed had a bucket index at least a whole turn ahead, so it is
     // still half a turn ahead at the next refill: no entry is ever passed by. Here the width
     // is also checked against what the last half turn saw.
+    // The overflow is an array, not a list, so that the slots it names can be requested ahead
+    // of the walk instead of each waiting for the one before it.
     void refill() {
         const std::uint64_t half_turn = bucket_count_ / 2;
         refill_at_ = current_ + half_turn;
-        std::uint32_t p = head_[overflow()];
-        head_[overflow()] = none;
+        overflow_scratch_.swap(overflow_);
+        overflow_.clear();
         overflowing_ = 0;
-        for (std::uint32_t next; p != none; p = next) {
-            next = node_[p].next;
+        constexpr std::size_t ahead = 8;
+        const std::size_t m = overflow_scratch_.size();
+        for (std::size_t k = 0; k < m; ++k) {
+            if (k + ahead < m) prefetch_line(&node_[overflow_scratch_[k + ahead]]);
+            const std::uint32_t p = overflow_scratch_[k];
             file(p, bucket_of(node_[p].time));
         }
         // Too narrow: over a quarter of the active entries lie beyond the ring. Too wide: more
@@ -342,7 +368,8 @@ private:
         };
         if (bucketed_ > 0)
             for (std::uint32_t b = 0; b < bucket_count_; ++b) take_list(b);
-        take_list(overflow());
+        scratch_particles_.insert(scratch_particles_.end(), overflow_.begin(), overflow_.end());
+        overflow_.clear();
         take_list(idle());
         bucketed_ = overflowing_ = idle_ = 0;
         if (scratch_particles_.empty()) return false;
@@ -377,6 +404,12 @@ private:
     void link(std::uint32_t p, std::uint32_t bucket) {
         Node& node = node_[p];
         node.bucket = bucket;
+        if (bucket == overflow()) {
+            node.index = std::uint32_t(overflow_.size());
+            overflow_.push_back(p);
+            ++overflowing_;
+            return;
+        }
         node.prev = none;
         node.next = head_[bucket];
         if (node.next != none) node_[node.next].prev = p;
@@ -385,6 +418,14 @@ private:
     }
     void unlink(std::uint32_t p) {
         const Node& node = node_[p];
+        if (node.bucket == overflow()) {  // the last entry takes its place
+            const std::uint32_t last = overflow_.back();
+            overflow_[node.index] = last;
+            node_[last].index = node.index;
+            overflow_.pop_back();
+            --overflowing_;
+            return;
+        }
         if (node.prev != none) node_[node.prev].next = node.next;
         else head_[node.bucket] = node.next;
         if (node.next != none) node_[node.next].prev = node.prev;
@@ -443,7 +484,8 @@ private:
     EventArray<Node> node_;         // per particle: time and place in the calendar
     EventArray<Node> node_scratch_;  // for renumber()
     std::vector<Entry> heap_;           // the front: (time, particle) in heap order
-    EventArray<std::uint32_t> head_;  // first particle of each ring bucket, the overflow and idle
+    EventArray<std::uint32_t> head_;  // first particle of each ring bucket, the overflow (unused) and idle
+    std::vector<std::uint32_t> overflow_, overflow_scratch_;  // the overflow's particles, in no order
     std::vector<std::uint32_t> scratch_particles_;  // for rebuild()
     std::vector<double> scratch_times_;
     std::uint32_t bucket_count_ = 16;   // buckets in the ring
