@@ -225,21 +225,25 @@ private:
         return ring_slot(std::uint64_t(q));
     }
 
-    // Puts a particle that is in no list into the front heap or (soon) the list `target`.
+    // Puts a particle that is in no list into the front heap, the overflow array, or (soon)
+    // the list `target`.
     void file(std::uint32_t p, std::uint32_t target) {
         if (target == front) heap_push(p);
+        else if (target == overflow()) link(p, target);  // (an append: no list head to wait for)
         else link_soon(p, target);
     }
 
     // Deferred linking. Linking an entry into a list reads the list's head, which for a ring
     // of N buckets is a cache miss at a random place once N is large, and the processor would
-    // wait for it. So an entry bound for a ring bucket, the overflow or the idle list is linked
-    // a few updates later: the head is requested from memory at once and read when the entry
-    // is linked. Meanwhile the entry waits in a short queue, which is emptied before anything
-    // walks the lists (pouring a bucket into the front, refilling, rebuilding, renumbering).
-    // A waiting entry's bucket lies beyond the one being served (the bucket index is taken
-    // when the update comes, and the index being served moves on only after the queue is
-    // emptied), so the front, and with it the order of events, is the same as without the wait.
+    // wait for it. So an entry bound for a ring bucket or the idle list is linked a few
+    // updates later: the head is requested from memory at once and read when the entry is
+    // linked. Meanwhile the entry waits in a short queue, which is emptied before a refill, a
+    // rebuild or a renumbering walks the lists; when the front runs empty, the waiting entries
+    // bound for the bucket poured into it go into the front with that bucket (pour_waiting),
+    // and the others keep waiting. A waiting entry's bucket lies beyond the one being served
+    // when the update comes (the bucket index is taken then), and it enters the front when its
+    // bucket does, so the front, and with it the order of events, is the same as without the
+    // wait.
     //
     // The short queue is a ring of max_waiting places (waiting_first_ is the oldest), so that
     // taking the oldest moves nothing: shifting the array down, as it first did, cost a call
@@ -248,7 +252,7 @@ private:
         if (waiting_count_ == max_waiting) link_oldest_waiting();
         prefetch_line(&head_[target]);
         node_[p].bucket = waiting;
-        node_[p].index = target;  // (index is free: it is used only in the front)
+        node_[p].index = target;  // (index is free: it is used only in the front and the overflow)
         waiting_[waiting_place(waiting_count_++)] = p;
     }
     void link_oldest_waiting() {
@@ -431,8 +435,9 @@ private:
         if (node.next != none) node_[node.next].prev = node.prev;
         count_of(node.bucket) -= 1;
     }
+    // (The overflow counts its entries itself, in link and unlink.)
     std::uint32_t& count_of(std::uint32_t bucket) {
-        return bucket < bucket_count_ ? bucketed_ : bucket == overflow() ? overflowing_ : idle_;
+        return bucket < bucket_count_ ? bucketed_ : idle_;
     }
 
     // The front: a binary min-heap ordered by (time, key).
@@ -484,7 +489,7 @@ private:
     EventArray<Node> node_;         // per particle: time and place in the calendar
     EventArray<Node> node_scratch_;  // for renumber()
     std::vector<Entry> heap_;           // the front: (time, particle) in heap order
-    EventArray<std::uint32_t> head_;  // first particle of each ring bucket, the overflow (unused) and idle
+    EventArray<std::uint32_t> head_;  // first particle of each ring bucket, the overflow (always none: overflow_) and idle
     std::vector<std::uint32_t> overflow_, overflow_scratch_;  // the overflow's particles, in no order
     std::vector<std::uint32_t> scratch_particles_;  // for rebuild()
     std::vector<double> scratch_times_;
