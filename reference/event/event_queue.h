@@ -237,8 +237,9 @@ private:
     // of N buckets is a cache miss at a random place once N is large, and the processor would
     // wait for it. So an entry bound for a ring bucket or the idle list is linked a few
     // updates later: the head is requested from memory at once and read when the entry is
-    // linked. Meanwhile the entry waits in a short queue, which is emptied before a refill, a
-    // rebuild or a renumbering walks the lists; when the front runs empty, the waiting entries
+    // linked. Meanwhile the entry waits in a short queue, which is emptied before a rebuild or
+    // a renumbering walks the lists (a refill walks only the overflow, for which no entry
+    // waits); when the front runs empty, the waiting entries
     // bound for the bucket poured into it go into the front with that bucket (pour_waiting),
     // and the others keep waiting. A waiting entry's bucket lies beyond the one being served
     // when the update comes (the bucket index is taken then), and it enters the front when its
@@ -293,11 +294,7 @@ private:
             }
             ++current_;
             if (++current_slot_ == bucket_count_) current_slot_ = 0;
-            if (current_ >= refill_at_) {
-                link_all_waiting();
-                refill();
-                link_all_waiting();
-            }
+            if (current_ >= refill_at_) refill();  // (no entry waits for the overflow: file() appends it)
             pour_waiting(current_slot_);
             pour(current_slot_);
         }
