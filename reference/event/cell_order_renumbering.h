@@ -12,9 +12,10 @@
 // The events are therefore the same, bit for bit, as without renumbering
 // (tests/reference/test_cell_order_renumbering.cpp, test_event_brute_force.cpp).
 //
-// What it buys: in runs of a few events per disk, nothing: -5 % (N = 1e5, area fraction 0.3,
-// periodic, one core; `python3 bench/event_optimisations.py 100000`, median of three runs;
-// docs/course/5-making-it-fast.md), the cost of the renumberings themselves. It is meant for
+// What it buys: in runs of a few events per disk, nothing: -6 % at N = 1e5 and -9 % at 1e6
+// (area fraction 0.3, periodic, one core; `python3 bench/event_optimisations.py 100000`, median
+// of three runs, and one run at 1000000; docs/course/5-making-it-fast.md), the cost of the
+// renumberings themselves. It is meant for
 // long runs, in which the disks drift far from the memory order they started in; that bench
 // does not measure that case.
 #pragma once

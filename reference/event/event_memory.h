@@ -4,9 +4,10 @@
 // no page-table walk on top of its cache miss once the state outgrows what the TLB reaches
 // with 4 KiB pages (about 8 MiB).
 //
-// What it buys: 15-20 % per collision at N = 1e6 (128 MB of records and slots), about 5 % in
-// interleaved runs of the whole solver, nothing below a few MiB (bench/journal.md, "Transparent
-// huge pages"). The plain solver (reference/plain_event_solver.cpp) uses ordinary vectors.
+// What it buys: 0 to 8 % per collision at N = 1e6 (128 MB of records and slots; two rounds of
+// `collide bench event --backend event --sizes 1000000` with the kernel's transparent huge
+// pages on and off, bench/journal.md, "2026-11-29, fourth entry"), nothing below a few MiB. The
+// plain solver (reference/plain_event_solver.cpp) uses ordinary vectors.
 // Where the kernel does not follow the advice the memory is ordinary memory: no result depends
 // on it.
 #pragma once
