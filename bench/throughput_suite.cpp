@@ -3,8 +3,10 @@
 // for 240 steps of dt (--steps; ParticleBox's 240 frames) at N = 10^3 ... 10^6; `cpu` at 1 and
 // 2 threads; `box2d` once per preset (tuned and shipped, docs/box2d-baseline.md) so the speed
 // cost of tuning shows. A backend stops at the first N where one step takes longer than
-// max_seconds / steps. The event solver has its own suite (its cost is per collision, not per
-// step).
+// max_seconds / steps. A backend with no time step is left out by what it claims, not by its
+// name: the exact solvers have their own suite (`event`: their cost is per collision, not per
+// step), and the samplers have no time at all (a "step" of theirs would measure nothing
+// comparable; suite `ecmc` times `ecmc` per lift).
 #include <algorithm>
 #include <cstdio>
 
@@ -28,6 +30,13 @@ struct Configuration {
 std::vector<Configuration> configurations(const std::string& backend) {
     if (backend == "box2d") return {{"box2d", {{"preset", "tuned"}}}, {"box2d[shipped]", {{"preset", "shipped"}}}};
     return {{backend, {}}};
+}
+
+// Why a backend has no place in a suite of time steps, or nullptr when it has one.
+const char* no_time_step(const BackendInfo& backend) {
+    if (backend.exact) return "exact (event-driven), it has no time step; `collide bench event` times it per collision";
+    if (backend.sampler) return "a sampler has no time and no time step; its cost is per trial move (`collide bench ecmc` times ecmc)";
+    return nullptr;
 }
 
 // One backend, configuration and thread count over the sizes, up to the first too-slow step.
@@ -111,7 +120,10 @@ void run_throughput_suite(const BenchArgs& args, BenchReport& report) {
     };
     std::vector<Planned> plan;
     for (const auto& backend : all_backends()) {
-        if (backend.name == "event" || backend.name == "event-plain") continue;  // (suite `event`)
+        if (const char* why = no_time_step(backend)) {
+            if (!args.backends.empty() && wanted(args, backend.name)) report.note(backend.name + " left out: " + why);
+            continue;
+        }
         for (const Configuration& config : configurations(backend.name)) {
             // --backend box2d runs both presets; --backend "box2d[shipped]" only that one.
             if (!wanted(args, backend.name) && !wanted(args, config.label)) continue;

@@ -158,6 +158,22 @@ TEST(BenchCommand, StepsSetsTheTimedStepsAndTheJsonHoldsTheRows) {
     EXPECT_EQ(json.at("rows")[0].at("n"), 500);
 }
 
+// The throughput suite times backends that step: an exact solver and a sampler, named with
+// --backend, are left out with a note saying why (by what they claim, not by their names),
+// and write no row; the stepped backend beside them does.
+TEST(BenchCommand, ThroughputLeavesOutBackendsWithoutATimeStepAndSaysWhy) {
+    ScratchDirectory dir;
+    const auto result = run_program(COLLIDE_EXECUTABLE, {"bench", "throughput", "--quick", "--sizes", "300", "--backend",
+                                                         "step", "event-plain", "metropolis", "--steps", "3", "-o",
+                                                         dir.file("b")}, dir);
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    const std::vector<CsvRow> rows = read_csv(dir.file("b-throughput.csv"));
+    ASSERT_EQ(rows.size(), 1u);
+    EXPECT_EQ(rows[0].at("backend"), "step");
+    EXPECT_TRUE(contains(result.out, "event-plain left out: exact (event-driven), it has no time step")) << result.out;
+    EXPECT_TRUE(contains(result.out, "metropolis left out: a sampler has no time and no time step")) << result.out;
+}
+
 // The bandwidth suite: the triad rows, the in-cache compute ceiling (one thread, times the
 // threads) and the large run, whose fractions are consistent with its own columns, and the
 // target's verdict line (here not the target's configuration: N = 2000).
