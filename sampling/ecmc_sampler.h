@@ -46,7 +46,7 @@
 
 namespace collide {
 
-// The default chain length l, in disk diameters (docs/monte-carlo.md, "Chain length").
+// The default chain length l, in disk diameters (docs/monte-carlo.md, "Event-chain Monte Carlo").
 inline constexpr double default_chain_length_diameters = 20;
 
 class EcmcSampler : public Solver {

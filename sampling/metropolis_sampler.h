@@ -5,11 +5,12 @@
 // [-delta, delta]; the move is rejected if the disk would overlap another one or cross a wall,
 // and accepted otherwise (the uniform measure: every legal configuration equally likely, so the
 // Metropolis ratio is 1 or 0). A sweep is N trial moves. During the first tenth of the run
-// (the tuning sweeps) delta is adjusted every 400 trials towards the target acceptance
-// (default 0.5); then it is fixed, so the sampled part obeys detailed balance.
+// (the tuning sweeps) delta is scaled towards the target acceptance (default 0.5) once per block
+// of at least tuning_block_trials = 400 trials, by a factor clamped to [0.5, 2]; then it is
+// fixed, so the sampled part obeys detailed balance.
 //
 // Pressure, after each sampled sweep, from the density of separations at contact, extrapolated
-// by a straight line over a window of 5 % of the diameter (contact_histogram.h):
+// by a least-squares parabola over a window of 5 % of the diameter (contact_histogram.h):
 //  - periodic box: the pair virial, beta P A / N = 1 + sigma h(sigma) / (2 N), h(r) the number
 //    of pairs per unit separation at r (Allen & Tildesley §2.4 and §2.6 for hard disks; the same
 //    as 1 + (pi/2) rho sigma^2 g(sigma) for large N);
