@@ -26,6 +26,15 @@ using test::ScratchDirectory;
 
 using CsvRow = std::map<std::string, std::string>;
 
+// `collide bench ARGS... -o DIR/b`, run in the scratch directory DIR: its tables are
+// DIR/b-SUITE.csv and .json.
+test::ProgramResult run_bench(const ScratchDirectory& dir, std::vector<std::string> args) {
+    args.insert(args.begin(), "bench");
+    args.push_back("-o");
+    args.push_back(dir.file("b"));
+    return run_program(COLLIDE_EXECUTABLE, args, dir);
+}
+
 std::vector<std::string> split(const std::string& line) {
     std::vector<std::string> fields;
     std::stringstream s(line);
@@ -59,7 +68,7 @@ double number(const CsvRow& row, const std::string& column) {
 
 TEST(BenchCommand, EventSuiteWritesAConsistentTablePerAreaFractionAndSize) {
     ScratchDirectory dir;
-    const auto result = run_program(COLLIDE_EXECUTABLE, {"bench", "event", "--quick", "--sizes", "600", "300", "-o", dir.file("b")}, dir);
+    const auto result = run_bench(dir, {"event", "--quick", "--sizes", "600", "300"});
     ASSERT_EQ(result.exit_code, 0) << result.err;
     EXPECT_TRUE(contains(result.err, "melting")) << "progress is reported: " << result.err;
     const std::vector<CsvRow> rows = read_csv(dir.file("b-event.csv"));
@@ -120,7 +129,7 @@ TEST(BenchCommand, EventSuiteWritesAConsistentTablePerAreaFractionAndSize) {
 // its target; --quick runs a two-scene suite and says its times are not judged.
 TEST(BenchCommand, WorkflowTimesValidateAndReportAndPrintsEachTarget) {
     ScratchDirectory dir;
-    const auto result = run_program(COLLIDE_EXECUTABLE, {"bench", "workflow", "--quick", "--runs", "2", "-o", dir.file("b")}, dir);
+    const auto result = run_bench(dir, {"workflow", "--quick", "--runs", "2"});
     ASSERT_EQ(result.exit_code, 0) << result.err;
     const std::vector<CsvRow> rows = read_csv(dir.file("b-workflow.csv"));
     ASSERT_EQ(rows.size(), 4u);  // two runs, then the validate and report medians
@@ -142,8 +151,8 @@ TEST(BenchCommand, WorkflowTimesValidateAndReportAndPrintsEachTarget) {
 // stores states); the JSON beside the CSV is valid JSON with the same rows and the provenance.
 TEST(BenchCommand, StepsSetsTheTimedStepsAndTheJsonHoldsTheRows) {
     ScratchDirectory dir;
-    const auto result = run_program(COLLIDE_EXECUTABLE, {"bench", "throughput", "--quick", "--sizes", "500", "--backend",
-                                                         "step", "--steps", "3", "-o", dir.file("b")}, dir);
+    const auto result = run_bench(dir, {"throughput", "--quick", "--sizes", "500", "--backend", "step", "--steps",
+                                         "3"});
     ASSERT_EQ(result.exit_code, 0) << result.err;
     const std::vector<CsvRow> rows = read_csv(dir.file("b-throughput.csv"));
     ASSERT_EQ(rows.size(), 1u);
@@ -163,9 +172,8 @@ TEST(BenchCommand, StepsSetsTheTimedStepsAndTheJsonHoldsTheRows) {
 // and write no row; the stepped backend beside them does.
 TEST(BenchCommand, ThroughputLeavesOutBackendsWithoutATimeStepAndSaysWhy) {
     ScratchDirectory dir;
-    const auto result = run_program(COLLIDE_EXECUTABLE, {"bench", "throughput", "--quick", "--sizes", "300", "--backend",
-                                                         "step", "event-plain", "metropolis", "--steps", "3", "-o",
-                                                         dir.file("b")}, dir);
+    const auto result = run_bench(dir, {"throughput", "--quick", "--sizes", "300", "--backend", "step", "event-plain",
+                                         "metropolis", "--steps", "3"});
     ASSERT_EQ(result.exit_code, 0) << result.err;
     const std::vector<CsvRow> rows = read_csv(dir.file("b-throughput.csv"));
     ASSERT_EQ(rows.size(), 1u);
@@ -179,8 +187,7 @@ TEST(BenchCommand, ThroughputLeavesOutBackendsWithoutATimeStepAndSaysWhy) {
 // target's verdict line (here not the target's configuration: N = 2000).
 TEST(BenchCommand, BandwidthSuitePrintsTheBoundTheComputeCeilingAndTheTargetsVerdict) {
     ScratchDirectory dir;
-    const auto result = run_program(COLLIDE_EXECUTABLE, {"bench", "bandwidth", "--quick", "--sizes", "2000", "--threads",
-                                                         "2", "-o", dir.file("b")}, dir);
+    const auto result = run_bench(dir, {"bandwidth", "--quick", "--sizes", "2000", "--threads", "2"});
     ASSERT_EQ(result.exit_code, 0) << result.err;
     const std::vector<CsvRow> rows = read_csv(dir.file("b-bandwidth.csv"));
     ASSERT_EQ(rows.size(), 4u);
@@ -211,9 +218,8 @@ TEST(BenchCommand, BandwidthSuitePrintsTheBoundTheComputeCeilingAndTheTargetsVer
 // figures and a verdict that follows them.
 TEST(BenchCommand, ThroughputSuitePrintsCpusTargetsWithTheirFigures) {
     ScratchDirectory dir;
-    const auto result = run_program(COLLIDE_EXECUTABLE, {"bench", "throughput", "--sizes", "10000", "--backend", "cpu",
-                                                         "--backend", "box2d", "--threads", "1", "--steps", "5", "-o",
-                                                         dir.file("b")}, dir);
+    const auto result = run_bench(dir, {"throughput", "--sizes", "10000", "--backend", "cpu", "--backend", "box2d",
+                                         "--threads", "1", "--steps", "5"});
     ASSERT_EQ(result.exit_code, 0) << result.err;
     const std::vector<CsvRow> rows = read_csv(dir.file("b-throughput.csv"));
     double cpu_ns = 0, cpu_rate = 0, box2d_rate = 0;
@@ -238,9 +244,8 @@ TEST(BenchCommand, ThroughputSuitePrintsCpusTargetsWithTheirFigures) {
 // of the two costs and the targets (3 for two disks, 1.5 for periodic_gas).
 TEST(BenchCommand, OpenclSuitePrintsTheCostPerStepAgainstCpuWithItsTarget) {
     ScratchDirectory dir;
-    const auto result = run_program(COLLIDE_EXECUTABLE, {"bench", "opencl", "--quick", "--sizes", "500", "--backend",
-                                                         "opencl", "--backend", "cpu", "--steps", "3", "-o",
-                                                         dir.file("b")}, dir);
+    const auto result = run_bench(dir, {"opencl", "--quick", "--sizes", "500", "--backend", "opencl", "--backend", "cpu",
+                                         "--steps", "3"});
     ASSERT_EQ(result.exit_code, 0) << result.err;
     std::map<std::string, CsvRow> launch_cost;
     for (const CsvRow& row : read_csv(dir.file("b-opencl.csv")))
@@ -263,7 +268,7 @@ TEST(BenchCommand, OpenclSuitePrintsTheCostPerStepAgainstCpuWithItsTarget) {
 
 TEST(BenchCommand, UnknownSuiteFailsNamingItAndTheKnownOnesBeforeRunningAny) {
     ScratchDirectory dir;
-    const auto result = run_program(COLLIDE_EXECUTABLE, {"bench", "event", "no_such_suite", "--quick", "-o", dir.file("b")}, dir);
+    const auto result = run_bench(dir, {"event", "no_such_suite", "--quick"});
     EXPECT_NE(result.exit_code, 0);
     EXPECT_TRUE(contains(result.err, "no_such_suite")) << result.err;
     EXPECT_TRUE(contains(result.err, "event")) << "the message lists the suites: " << result.err;
@@ -272,7 +277,7 @@ TEST(BenchCommand, UnknownSuiteFailsNamingItAndTheKnownOnesBeforeRunningAny) {
 
 TEST(BenchCommand, NonPositiveSizeIsRejected) {
     ScratchDirectory dir;
-    const auto result = run_program(COLLIDE_EXECUTABLE, {"bench", "event", "--sizes", "0", "-o", dir.file("b")}, dir);
+    const auto result = run_bench(dir, {"event", "--sizes", "0"});
     EXPECT_NE(result.exit_code, 0);
     EXPECT_TRUE(contains(result.err, "--sizes 0")) << result.err;
     EXPECT_EQ(dir.entry_count(), 0u);
