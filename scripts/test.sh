@@ -2,7 +2,7 @@
 # Installs dependencies, builds the release preset, fuzzes the scene parser for 60 seconds
 # (FUZZ_SECONDS to change), then runs every test: unit, conformance, validation and OpenCL on
 # the PoCL CPU device. The OpenCL tests fail, not skip, when no OpenCL device is found.
-# Then the full validation suite (about 2.5 minutes on 2 cores); it exits 1 on any failed check.
+# Then the full validation suite (442 cases, about a minute on 2 idle cores); it exits 1 on any failed check.
 # Last, the README's main job as its reader sees it: the default suite (about a minute on 2
 # cores), its report, and the report's first screen in headless Chromium
 # (tests/report/test_browser.py; ctest runs that test on the small report-test suite, whose
