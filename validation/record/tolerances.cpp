@@ -62,7 +62,8 @@ Tolerances default_tolerances(const BackendInfo& backend, const RoundingScale& s
     t.max_overlap = 0.2;
     t.mean_overlap = 0.05;
     // Pairs that met in the last step: nu h / 2 per disk on average (0.004 in periodic_gas at
-    // dt = 6e-3), 0.014 measured at most over the default suite. Missing every collision (free
+    // dt = 6e-3), 0.0146 measured at most over the default suite (stones_and_gas at dt = 4e-3,
+    // 2026-11-29). Missing every collision (free
     // flight, uniform positions) overlaps n pi sigma^2 / 2 = 2 phi pairs per disk: 0.44 in
     // periodic_gas, which the former 0.5 let pass (tests/validation/test_checks_can_fail.cpp).
     // A pile at rest under gravity keeps its contacts overlapped by design (particle_box: 1.8
