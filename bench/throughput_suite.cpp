@@ -35,7 +35,7 @@ std::vector<Configuration> configurations(const std::string& backend) {
 // Why a backend has no place in a suite of time steps, or nullptr when it has one.
 const char* no_time_step(const BackendInfo& backend) {
     if (backend.exact) return "exact (event-driven), it has no time step; `collide bench event` times it per collision";
-    if (backend.sampler) return "a sampler has no time and no time step; its cost is per trial move (`collide bench ecmc` times ecmc)";
+    if (backend.sampler) return "a sampler has no time and no time step; its cost is per lift or trial move, not per step (`collide bench ecmc` times ecmc)";
     return nullptr;
 }
 
