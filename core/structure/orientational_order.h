@@ -4,9 +4,10 @@
 //  - psi6 = (1/N) sum_j (1/n_j) sum_k exp(6 i theta_jk): theta_jk the angle of the bond from
 //    disk j to its neighbour k, n_j the number of j's neighbours (a disk without neighbours adds
 //    0). Neighbours are the disks whose centres lie within a cutoff of 1.4 diameters (minimum
-//    image in a periodic box): 1.4 d lies at the first minimum of g(r) in the dense fluid and
-//    the hexatic (eta 0.65 to 0.72: the nearest shell sits near 1.0 to 1.2 d, the second near
-//    1.9 to 2.0 d), so each disk counts its first shell and nothing of the second. (Bernard &
+//    image in a periodic box): in the dense fluid and the hexatic (eta 0.65 to 0.72) the nearest
+//    shell sits near 1.0 to 1.2 d, the first minimum of g(r) near 1.6 d at 0.65 (the course's
+//    figure, docs/course/2-many-disks-exactly.md) and the second shell near 1.9 to 2.1 d, so a
+//    cutoff of 1.4 d takes most of each disk's first shell and nothing of the second. (Bernard &
 //    Krauth, PRL 107, 155704 (2011) use Voronoi neighbours; the cutoff is simpler and gives the
 //    same phase where the phase matters.) A perfect hexagonal lattice has |psi6| = 1, and turning
 //    it by alpha turns psi6's phase by 6 alpha.
