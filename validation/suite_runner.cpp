@@ -82,6 +82,26 @@ void check_case_run_settings(const Suite& suite, const std::vector<Scene>& scene
     }
 }
 
+// Everything decided before a case runs: the backends, the scenes of every sweep point, the
+// cases. Bad input (a scene file, a sweep value, a dt that does not divide the output interval)
+// throws here, before anything is written.
+struct SuitePlan {
+    std::vector<BackendInfo> backends;
+    std::vector<Scene> scenes;
+    CaseScenes case_scenes;
+    std::vector<SceneFeatures> features;  // per scene, its first sweep point (the comparisons ask only the radii)
+    std::vector<CaseSpec> specs;
+
+    SuitePlan(const Suite& suite, const std::vector<BackendInfo>& available, std::FILE* progress)
+        : backends(select_backends(suite, available)), scenes(load_suite_scenes(suite)), case_scenes(suite, scenes) {
+        for (std::size_t s = 0; s < scenes.size(); ++s)
+            features.push_back(case_scenes.features.lower_bound({s, ""})->second);
+        specs = plan_cases(suite, scenes, backends);
+        check_case_run_settings(suite, scenes, specs);
+        for (CaseSpec& spec : specs) spec.definition = case_definition(suite, scenes[spec.scene_index], spec, progress);
+    }
+};
+
 // The reference run a case is classified against: same scene, parameters and seed, and the
 // same dt when the reference ran per dt (trajectory scenes).
 const CaseResult* reference_for(const CaseResult& r, const std::vector<CaseResult>& all) {
@@ -239,17 +259,17 @@ int default_jobs() { return std::max(1u, std::thread::hardware_concurrency()); }
 
 bool runs_in_worker(const CaseSpec&) { return true; }
 
+std::vector<CaseSpec> plan_suite(const Suite& suite, const std::vector<BackendInfo>& available) {
+    return SuitePlan(suite, available, nullptr).specs;
+}
+
 SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& available, const RunnerOptions& options) {
     const auto start = std::chrono::steady_clock::now();
-    const std::vector<BackendInfo> backends = select_backends(suite, available);
-    const std::vector<Scene> scenes = load_suite_scenes(suite);  // bad scene files fail here, before any case
-    const CaseScenes case_scenes(suite, scenes);
-    std::vector<SceneFeatures> features;
-    // Per scene for the comparisons (which only ask about the disks' radii): its first sweep point.
-    for (std::size_t s = 0; s < scenes.size(); ++s) features.push_back(case_scenes.features.lower_bound({s, ""})->second);
-    std::vector<CaseSpec> specs = plan_cases(suite, scenes, backends);
-    check_case_run_settings(suite, scenes, specs);
-    for (CaseSpec& spec : specs) spec.definition = case_definition(suite, scenes[spec.scene_index], spec, options.progress);
+    const SuitePlan plan(suite, available, options.progress);
+    const std::vector<BackendInfo>& backends = plan.backends;
+    const CaseScenes& case_scenes = plan.case_scenes;
+    const std::vector<SceneFeatures>& features = plan.features;
+    const std::vector<CaseSpec>& specs = plan.specs;
 
     check_output_places(options.output_dir, specs, suite.output.hdf5);
     std::filesystem::create_directories(options.output_dir);

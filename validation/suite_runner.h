@@ -44,6 +44,11 @@ int default_jobs();
 // (copy-on-write), about 5 % of the default suite's processor time (bench/journal.md).
 bool runs_in_worker(const CaseSpec& spec);
 
+// The cases run_suite would run, after every check that needs no run (`collide validate
+// --plan`): the scene files load, each sweep point builds, each case's dt divides its duration
+// and output interval. Throws SuiteError / SceneError naming the file and line otherwise.
+std::vector<CaseSpec> plan_suite(const Suite& suite, const std::vector<BackendInfo>& backends);
+
 // `backends` are the backends the suite may use (all_backends() in the program, test doubles
 // in tests). Throws SuiteError / SceneError for bad input before any case runs.
 SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& backends, const RunnerOptions& options);

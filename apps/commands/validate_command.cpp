@@ -1,4 +1,4 @@
-// `collide validate SUITE [--out DIR] [--jobs N] [--resume] [--gather-hdf5] [--solver NAME=COMMAND]`: runs a validation
+// `collide validate SUITE [--out DIR] [--jobs N] [--resume] [--gather-hdf5] [--plan] [--solver NAME=COMMAND]`: runs a validation
 // suite (validation/suites/*.toml), one case per core unless --jobs says otherwise, on every
 // backend it names and writes DIR/summary.json,
 // DIR/junit.xml and one HDF5 file per case. Exit status 1 when any check fails. Under mpirun
@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <map>
 #include <memory>
 
 #include "apps/input_paths.h"
@@ -23,6 +24,7 @@ struct ValidateArgs {
     int jobs = 0;  // 0: not given; one case per core (MPI: one per rank)
     bool resume = false;
     bool gather_hdf5 = false;
+    bool plan = false;
     SolverArgs solvers;
 };
 
@@ -36,7 +38,24 @@ const CLI::Validator at_least_one_job(
     },
     "N >= 1");
 
+// --plan: the cases the suite would run, per backend, after every check that needs no run;
+// nothing runs and nothing is written. A suite file that cannot run fails here in a second.
+void print_plan(const validation::Suite& suite, const std::vector<BackendInfo>& backends) {
+    const auto specs = validation::plan_suite(suite, backends);
+    std::map<std::string, std::size_t> per_backend;
+    for (const auto& spec : specs) ++per_backend[spec.backend];
+    std::printf("suite     %s: %zu cases planned on %zu scenes; nothing run\n", printable(suite.name).c_str(),
+                specs.size(), suite.scenes.size());
+    for (const auto& [backend, count] : per_backend) std::printf("backend   %-16s %zu cases\n", backend.c_str(), count);
+}
+
 void execute(const ValidateArgs& args) {
+    if (args.plan) {
+        validation::Suite suite = validation::load_suite(args.suite_path);
+        validation::add_solvers(suite, solver_specs(args.solvers));
+        print_plan(suite, validation::backends_with_solvers(suite, all_backends(), python_runner()));
+        return;
+    }
     // --- MPI hook (docs/scaling.md): under mpirun or srun the ranks share the cases out and
     // rank 0 alone reports; a plain run gets no dispatch and never initialises MPI.
     // Under MPI the ranks are the parallelism, so a rank runs one case at a time unless told.
@@ -93,6 +112,8 @@ void add_validate_command(CLI::App& app) {
     cmd->add_flag("--resume", args->resume, "Keep the cases that already have a result in the output directory");
     cmd->add_flag("--gather-hdf5", args->gather_hdf5,
                   "Under MPI: copy every rank's per-case HDF5 files into rank 0's output directory");
+    cmd->add_flag("--plan", args->plan,
+                  "Check the suite, its scenes and every case's settings, and print the cases per backend; run and write nothing");
     add_solver_options(*cmd, args->solvers);
     cmd->callback([args] { execute(*args); });
 }

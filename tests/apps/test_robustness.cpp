@@ -171,6 +171,23 @@ TEST(Robustness, ValidateRefusesASuiteDtThatDoesNotDivideTheRun) {
     EXPECT_FALSE(fs::exists(dir.file("out/cases"))) << "no case ran";
 }
 
+// `validate --plan` says what a suite would run, and refuses what the run would refuse, without
+// running or writing anything.
+TEST(Robustness, ValidatePlanCountsTheCasesAndRefusesWhatTheRunWould) {
+    ScratchDirectory dir;
+    const std::string scene = "name = \"head_on_equal\"\npath = \"" + test::scene_file("head_on_equal.toml") + "\"\n";
+    const auto good = run_collide({"validate", suite_file(dir, scene + "dt = [1e-3, 5e-4]\n", 120, "event"), "--plan",
+                                   "--out", dir.file("good")}, dir);
+    EXPECT_EQ(good.exit_code, 0) << good.err;
+    EXPECT_TRUE(contains(good.out, "2 cases planned on 1 scenes; nothing run")) << good.out;  // two dt, one backend
+    EXPECT_TRUE(contains(good.out, "step             2 cases")) << good.out;
+    const auto bad = run_collide({"validate", suite_file(dir, scene + "dt = [3e-4]\n", 120, "event"), "--plan",
+                                  "--out", dir.file("bad")}, dir);
+    EXPECT_EQ(bad.exit_code, 1);
+    EXPECT_TRUE(contains(bad.err, "output_interval: expected a whole multiple of dt = 0.0003")) << bad.err;
+    EXPECT_FALSE(fs::exists(dir.file("good")) || fs::exists(dir.file("bad"))) << "--plan wrote an output directory";
+}
+
 // ---- 4. a second validate into the same directory refuses at once ------------------------
 
 TEST(Robustness, SecondValidateIntoOneDirectoryRefusesNamingTheFirst) {
