@@ -21,6 +21,7 @@ import math
 import os
 import subprocess
 import sys
+import time
 import tomllib
 from collections import defaultdict
 
@@ -65,6 +66,23 @@ def fit_through_origin(xs, ys, ses):
     return c, math.sqrt(1 / sw), chi2 / dof
 
 
+def run_suite(a):
+    """Runs the suite into a.out. Its exit status cannot tell a refused suite from failed checks
+    (1 for both), so the suite is planned first (`--plan`, which exits 1 only on a refusal), and
+    the run must leave a summary.json newer than its start: a refused or crashed run must not
+    leave an older run in a.out to be fitted as if it were this one."""
+    planned = subprocess.run([a.collide, "validate", a.suite, "--plan"], capture_output=True, text=True)
+    if planned.returncode != 0:
+        sys.exit(f"{a.suite} cannot run: {planned.stderr.strip()}")
+    started = time.time()
+    # The pressure checks of this run are the plain or model checks of the build; their
+    # verdicts do not matter here, only the case files.
+    subprocess.run([a.collide, "validate", a.suite, "--out", a.out, "--jobs", a.jobs], stdout=subprocess.DEVNULL)
+    summary = os.path.join(a.out, "summary.json")
+    if not os.path.exists(summary) or os.path.getmtime(summary) < started:
+        sys.exit(f"collide validate {a.suite} ended without writing {summary}: nothing to fit")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--collide", default="build/release/collide")
@@ -76,10 +94,7 @@ def main():
     ap.add_argument("--markdown", action="store_true", help="also print the residuals of the pooled backends as a Markdown table")
     a = ap.parse_args()
     if not a.no_run:
-        # The pressure checks of this run are the plain or model checks of the build; their
-        # verdicts do not matter here, only the case files.
-        subprocess.run([a.collide, "validate", a.suite, "--out", a.out, "--jobs", a.jobs],
-                       stdout=subprocess.DEVNULL)
+        run_suite(a)
     groups = load(a.out)
     pooled = set(a.backends.split(","))
     rows = []
