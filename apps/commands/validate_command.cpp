@@ -50,12 +50,6 @@ void print_plan(const validation::Suite& suite, const std::vector<BackendInfo>& 
 }
 
 void execute(const ValidateArgs& args) {
-    if (args.plan) {
-        validation::Suite suite = validation::load_suite(args.suite_path);
-        validation::add_solvers(suite, solver_specs(args.solvers));
-        print_plan(suite, validation::backends_with_solvers(suite, all_backends(), python_runner()));
-        return;
-    }
     // --- MPI hook (docs/scaling.md): under mpirun or srun the ranks share the cases out and
     // rank 0 alone reports; a plain run gets no dispatch and never initialises MPI.
     // Under MPI the ranks are the parallelism, so a rank runs one case at a time unless told.
@@ -65,6 +59,10 @@ void execute(const ValidateArgs& args) {
     validation::Suite suite = validation::load_suite(args.suite_path);
     validation::add_solvers(suite, solver_specs(args.solvers));
     const auto backends = validation::backends_with_solvers(suite, all_backends(), python_runner());
+    if (args.plan) {  // under MPI, once (rank 0)
+        if (reports) print_plan(suite, backends);
+        return;
+    }
     validation::RunnerOptions options;
     options.output_dir = args.out;
     options.jobs = args.jobs > 0 ? args.jobs : dispatch ? 1 : validation::default_jobs();
