@@ -80,6 +80,13 @@ def two_ranks_equal_serial(args, tmp):
         fail(f"cases per rank {per_rank}: both ranks should have run cases, {len(b['cases'])} in all")
     if any("rank" not in c["provenance"] or "host" not in c["provenance"] for c in b["cases"]):
         fail("a case of the 2-rank run does not say on which rank and host it ran")
+    # --plan under the launcher: rank 0 alone prints the plan, and nothing is written.
+    planned = run(mpirun(args, 2, [args.collide, "validate", args.suite, "--plan", "--out",
+                                   os.path.join(tmp, "plan")]), 0)
+    if planned.stdout.count("cases planned") != 1 or f"{len(a['cases'])} cases planned" not in planned.stdout:
+        fail(f"--plan on 2 ranks: expected one plan of {len(a['cases'])} cases, got:\n{planned.stdout}")
+    if os.path.exists(os.path.join(tmp, "plan")):
+        fail("--plan on 2 ranks wrote its output directory")
 
 
 def finished_files(out):
