@@ -35,7 +35,8 @@
                                         wall pressures, chapter 2's fixed cuts against the cut
                                         from the data, and wording found false; with NAMEs,
                                         only those statements
-    check_course.py fact-names          the statements' names, for CTest (a test for each)
+    check_course.py fact-names          the statements' names (CTest reads them from the FACTS
+                                        table itself and makes a test of each)
 
 An exercise is a "### Exercise" section of a chapter (docs/course/[1-9]-*.md): its first ```sh
 block is the command a student runs, with `collide` meaning the built program, in a scratch
@@ -43,6 +44,7 @@ folder that sees the repository's data/ and docs/. A coding exercise also holds 
 solution as `<!-- solution: FILE -->` and a ```python block, written to FILE in the scratch folder
 before the commands run (its commands call `python3 docs/course/lab.py check NAME FILE`).
 """
+import functools
 import json
 import os
 import pathlib
@@ -163,16 +165,17 @@ def check_scripts_run():
     on two pages, had lost it: 'Permission denied')."""
     skip = {"build", ".git", "node_modules"}
     failures, scripts = [], 0
-    for path in sorted(ROOT.rglob("*")):
-        if not path.is_file() or skip.intersection(path.relative_to(ROOT).parts):
-            continue
-        with open(path, "rb") as f:
-            if f.read(2) != b"#!":
-                continue
-        scripts += 1
-        if not os.access(path, os.X_OK):
-            failures.append(f"{path.relative_to(ROOT)} starts with #! but is not executable (chmod +x, "
-                            f"git update-index --chmod=+x)")
+    for folder, subfolders, files in os.walk(ROOT):
+        subfolders[:] = sorted(d for d in subfolders if d not in skip)  # not walked at all
+        for name in sorted(files):
+            path = pathlib.Path(folder) / name
+            with open(path, "rb") as f:
+                if f.read(2) != b"#!":
+                    continue
+            scripts += 1
+            if not os.access(path, os.X_OK):
+                failures.append(f"{path.relative_to(ROOT)} starts with #! but is not executable (chmod +x, "
+                                f"git update-index --chmod=+x)")
     print(f"{scripts} scripts checked for their execute bit")
     return failures
 
@@ -1145,9 +1148,9 @@ FACTS = {
     "replicates": fact_replicates, "enskog_walls": fact_enskog_walls, "fitted_grid": fact_fitted_grid,
     "sampling": fact_sampling, "declared_exact": fact_declared_exact, "pair_correlation": fact_pair_correlation,
     "hexatic": fact_hexatic,
-    "finite_size_72": lambda collide, scratch: fact_finite_size(collide, scratch, "72"),
-    "finite_size_224": lambda collide, scratch: fact_finite_size(collide, scratch, "224"),
-    "finite_size_870": lambda collide, scratch: fact_finite_size(collide, scratch, "870"),
+    "finite_size_72": functools.partial(fact_finite_size, disks_of_rows="72"),
+    "finite_size_224": functools.partial(fact_finite_size, disks_of_rows="224"),
+    "finite_size_870": functools.partial(fact_finite_size, disks_of_rows="870"),
     "engel_table": lambda collide, scratch: fact_engel_table(), "diffusion": fact_diffusion, "vacf": fact_vacf,
     "equilibration_cut": fact_equilibration_cut, "metropolis_slips": fact_metropolis_slips,
     "fixed_cuts": fact_fixed_cuts,
