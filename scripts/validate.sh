@@ -7,6 +7,9 @@ cd "$(dirname "$0")/.."
 suite="${1:-validation/suites/default.toml}"
 out="${2:-results/$(basename "$suite" .toml)}"
 bash scripts/build.sh release
+# A refused suite stops here (its exit status 1 is that of failed checks too), before the report
+# below could draw an earlier run's results left in $out as if they were this run's.
+build/release/collide validate "$suite" --plan > /dev/null
 status=0
 build/release/collide validate "$suite" --out "$out" --jobs "$(nproc)" || status=$?
 build/release/collide report "$out"

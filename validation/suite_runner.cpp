@@ -229,6 +229,18 @@ void check_output_places(const std::string& dir, const std::vector<CaseSpec>& sp
     }
 }
 
+// An earlier run's summary.json and junit.xml, removed once this run holds the directory: from
+// its first case on they would judge records that are no longer theirs, and a run cut short
+// (killed, a full disk) would leave them to be read as this run's verdicts by `collide report`,
+// `collide compare` or a script. Written again, atomically, when this run ends.
+void remove_earlier_verdicts(const std::string& dir) {
+    for (const char* file : {"/summary.json", "/junit.xml"}) {
+        std::error_code error;
+        std::filesystem::remove(dir + file, error);
+        if (error) throw std::runtime_error("cannot remove the earlier run's '" + dir + file + "': " + error.message());
+    }
+}
+
 // The energy jumps of the drawn cases, explained here, where the solvers run anyway
 // (report_jumps.h): each explanation reruns its case up to the jump. `collide report` only reads
 // them from summary.json; a report of results someone sent runs no program of theirs.
@@ -277,7 +289,10 @@ SuiteOutcome run_suite(const Suite& suite, const std::vector<BackendInfo>& avail
     // alone holds the directory's lock (other ranks may share the directory).
     const bool judges = !options.dispatch || options.dispatch->is_root();
     std::optional<OutputDirectoryLock> lock;
-    if (judges) lock.emplace(options.output_dir);
+    if (judges) {
+        lock.emplace(options.output_dir);
+        remove_earlier_verdicts(options.output_dir);
+    }
     const std::string result_dir = options.output_dir + "/cases", runs_dir = options.output_dir + "/runs";
     std::map<std::string, CaseResult> results;
     if (options.resume && judges) {

@@ -188,6 +188,26 @@ TEST(Robustness, ValidatePlanCountsTheCasesAndRefusesWhatTheRunWould) {
     EXPECT_FALSE(fs::exists(dir.file("good")) || fs::exists(dir.file("bad"))) << "--plan wrote an output directory";
 }
 
+// An earlier run's verdicts leave the directory when a new run takes it (they would judge records
+// that are no longer theirs, and a run cut short would leave them behind as if its own), and stay
+// when the new run is refused before it writes anything.
+TEST(Robustness, ValidateRemovesTheEarlierSummaryWhenItStartsAndKeepsItWhenRefused) {
+    ScratchDirectory dir;
+    const std::string out = dir.file("out");
+    fs::create_directories(out);
+    for (const char* file : {"/summary.json", "/junit.xml"}) test::write_text_file(out + file, "earlier run\n");
+    const std::string refused = suite_file(dir, "name = \"head_on_equal\"\npath = \"" + test::scene_file("head_on_equal.toml") +
+                                                    "\"\ndt = [3e-4]\n", 120, "event");  // 3e-4 does not divide 0.1
+    EXPECT_EQ(run_collide({"validate", refused, "--out", out}, dir).exit_code, 1);
+    EXPECT_TRUE(fs::exists(out + "/summary.json") && fs::exists(out + "/junit.xml")) << "a refused run removed them";
+    const pid_t run = start_collide({"validate", suite_file(dir, "path = \"" + long_scene(dir) + "\"\n"), "--out", out});
+    const bool removed = wait_for([&] { return !fs::exists(out + "/summary.json") && !fs::exists(out + "/junit.xml"); });
+    ::kill(-run, SIGKILL);  // cut short: nothing may stand in for its verdicts
+    ::waitpid(run, nullptr, 0);
+    EXPECT_TRUE(removed) << "the earlier summary.json and junit.xml were still there while the new run ran";
+    EXPECT_FALSE(fs::exists(out + "/summary.json") || fs::exists(out + "/junit.xml")) << "left behind by a killed run";
+}
+
 // ---- 4. a second validate into the same directory refuses at once ------------------------
 
 TEST(Robustness, SecondValidateIntoOneDirectoryRefusesNamingTheFirst) {
