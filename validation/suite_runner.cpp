@@ -232,10 +232,13 @@ void check_output_places(const std::string& dir, const std::vector<CaseSpec>& sp
 // An earlier run's summary.json and junit.xml, removed once this run holds the directory: from
 // its first case on they would judge records that are no longer theirs, and a run cut short
 // (killed, a full disk) would leave them to be read as this run's verdicts by `collide report`,
-// `collide compare` or a script. Written again, atomically, when this run ends.
+// `collide compare` or a script. Written again, atomically, when this run ends. A link named
+// so is the user's and stays (every writer keeps a link and replaces what it points to,
+// core/io/output_file.h): its target is rewritten at the end like the file.
 void remove_earlier_verdicts(const std::string& dir) {
     for (const char* file : {"/summary.json", "/junit.xml"}) {
         std::error_code error;
+        if (std::filesystem::is_symlink(dir + file, error)) continue;
         std::filesystem::remove(dir + file, error);
         if (error) throw std::runtime_error("cannot remove the earlier run's '" + dir + file + "': " + error.message());
     }
